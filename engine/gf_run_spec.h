@@ -1,0 +1,92 @@
+/*
+ * gf_run_spec: one fully resolved run. The contract between the pipeline
+ * (which parses YAML, expands a campaign grid and maps the dimensionless
+ * groups to physical values) and the engine (which builds a scene from it).
+ *
+ * Plain data, SI units, no pointers: printable (`grainflow check`),
+ * copyable, hashable (the run id is a hash of its canonical text form).
+ * Every field's default lives in gf_run_spec_defaults(); scene-specific
+ * parameters (column aspect ratio, incline angle, impact speed, ...) are a
+ * key/value list validated against the scene's own parameter table
+ * (engine/scenes/gf_scene.h), so a new scene adds no field here.
+ */
+#ifndef GF_RUN_SPEC_H
+#define GF_RUN_SPEC_H
+
+#include <stdint.h>
+
+#include "core/gf_status.h"
+
+#define GF_NAME_LEN 48
+#define GF_MAX_SCENE_PARAMS 48
+
+typedef struct gf_param {
+    char key[GF_NAME_LEN];
+    double value;
+} gf_param;
+
+typedef struct gf_grains_spec {
+    double diameter_m;        /* mean grain diameter D */
+    double polydispersity;    /* radii uniform in [R(1-p), R(1+p)], seeds use 0.05 and 0.10 */
+    double density_kg_m3;     /* rho_p */
+} gf_grains_spec;
+
+typedef struct gf_contact_spec {
+    char law[GF_NAME_LEN];    /* row of the contact table: "linear" (the seeds' spring-dashpot), "hertz" */
+    double t_contact_nd;      /* t_c sqrt(g/D): contact duration in grain time units */
+    double restitution;       /* eps_max, dry normal restitution */
+    double friction;          /* mu_c grain-grain */
+    double wall_friction;     /* mu_c grain-wall */
+    double kt_over_kn;        /* tangential/normal stiffness, seed 0.2 */
+    int allow_attraction;     /* 0: normal force clipped at 0 (Izard §3.1.2.2) */
+    double dt_over_tc;        /* DEM step / t_c; 1/50 default (symplectic) */
+    double skin_over_D;       /* Verlet skin in units of D */
+} gf_contact_spec;
+
+typedef struct gf_fluid_spec {
+    char model[GF_NAME_LEN];  /* "none", "unresolved", "resolved", "auto" */
+    double density_kg_m3;     /* rho_f; 0 when dry */
+    double viscosity_Pa_s;    /* eta_f; 0 when dry */
+    char drag[GF_NAME_LEN];   /* "di_felice", "beetstra", "tenneti" */
+    double cell_over_D;       /* fluid cell size / D */
+    double cfl;               /* advective CFL bound */
+    int lubrication;          /* Brenner normal lubrication on/off */
+    double roughness_over_R;  /* eta_e / R, seed 1e-4 .. 4e-4 */
+    double lub_cutoff_over_R; /* lubrication active for 0 <= gap <= cutoff R, seed 1/2 */
+} gf_fluid_spec;
+
+typedef struct gf_output_spec {
+    double interval_nd;       /* output interval in sqrt(D/g) */
+    int particles, fields, probes, diagnostics;  /* which files to write */
+    double checkpoint_interval_nd;               /* 0: no periodic checkpoint */
+} gf_output_spec;
+
+typedef struct gf_run_spec {
+    char scene[GF_NAME_LEN];
+    char run_id[24];          /* set by the pipeline: short hash of the canonical spec */
+    uint64_t seed;            /* RNG seed (positions, radii) */
+    double gravity_m_s2;
+    double end_time_nd;       /* in sqrt(D/g); 0: the scene's default / end condition */
+    gf_grains_spec grains;
+    gf_contact_spec contact;
+    gf_fluid_spec fluid;
+    gf_output_spec output;
+    /* the groups a campaign asked for (NaN when not on the grid); recorded as attributes */
+    double stokes_St, density_ratio_r, aspect_ratio_a, phi_initial;
+    int n_scene_params;
+    gf_param scene_params[GF_MAX_SCENE_PARAMS];
+} gf_run_spec;
+
+/* The one place defaults live (printed by `grainflow check`). */
+void gf_run_spec_defaults(gf_run_spec *spec);
+
+/* Value of scene parameter key, or fallback when absent. */
+double gf_run_spec_param(const gf_run_spec *spec, const char *key, double fallback);
+/* Sets (adds or replaces) a scene parameter. GF_ERR_CAPACITY when full. */
+gf_status gf_run_spec_set_param(gf_ctx *ctx, gf_run_spec *spec, const char *key, double value);
+
+/* DEM time step t_c * dt_over_tc, and t_c itself, in seconds. */
+double gf_run_spec_t_contact_s(const gf_run_spec *spec);
+double gf_run_spec_dt_s(const gf_run_spec *spec);
+
+#endif

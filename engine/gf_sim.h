@@ -1,0 +1,88 @@
+/*
+ * gf_sim: one simulation — a scene built from a gf_run_spec, advanced by a
+ * step loop made only of the stages the scene needs (ARCHITECTURE.md):
+ *
+ *   dry:      contacts -> integrate -> (diagnostics, output)
+ *   immersed: fluid step -> (contacts + lubrication + fluid forces) x substeps -> ...
+ *
+ * Opaque handle. The builder calls (gf_sim_set_box, gf_sim_add_wall, ...) are
+ * for scenes, inside their build() callback; everything else is for drivers
+ * (the pipeline, tests, benchmarks).
+ */
+#ifndef GF_SIM_H
+#define GF_SIM_H
+
+#include <stddef.h>
+
+#include "core/gf_groups.h"
+#include "core/gf_rng.h"
+#include "core/gf_status.h"
+#include "core/gf_timer.h"
+#include "gf_run_spec.h"
+#include "particles/gf_particles.h"
+
+typedef struct gf_sim gf_sim;
+
+typedef struct gf_sim_options {
+    const char *output_dir;     /* NULL: write no files (tests, benchmarks) */
+    const char *resolved_yaml;  /* embedded in every netCDF file; may be NULL */
+    const char *restart_path;   /* continue from this HDF5 checkpoint; NULL: fresh start */
+    int n_threads;              /* OpenMP threads; 0: library default */
+    /* Called about once per wall second while running; may be NULL. */
+    void (*progress)(void *user, double t_s, double t_end_s, double steps_per_s);
+    void *progress_user;
+    volatile int *interrupt;    /* non-zero: stop at the next step, checkpoint, return GF_ERR_INTERRUPTED */
+} gf_sim_options;
+
+/* Builds the scene of spec (packing preparation included). Returns owned sim.
+ * Errors: unknown scene, invalid/impossible parameters (GF_ERR_CONFIG,
+ * GF_ERR_PHYSICS), dt above the contact stability limit (GF_ERR_NUMERIC). */
+gf_status gf_sim_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_sim_options *opt, gf_sim **out);
+void gf_sim_destroy(gf_sim **sim);
+
+/* Runs to the end time or the scene's end condition, writing the requested
+ * outputs (temporary names, renamed when complete). */
+gf_status gf_sim_run(gf_sim *sim);
+/* Advances n DEM steps (fluid steps interleaved as the scene needs), no output. */
+gf_status gf_sim_advance(gf_sim *sim, long n_steps);
+/* Writes a checkpoint (HDF5) that gf_sim_options.restart_path can resume. */
+gf_status gf_sim_checkpoint(gf_sim *sim, const char *path);
+
+/* Accessors (borrowed pointers, valid until destroy). */
+gf_particles *gf_sim_particles(gf_sim *sim);
+const gf_run_spec *gf_sim_spec(const gf_sim *sim);
+const gf_scales *gf_sim_scales(const gf_sim *sim);
+gf_ctx *gf_sim_ctx(gf_sim *sim);
+gf_rng *gf_sim_rng(gf_sim *sim);
+const gf_timers *gf_sim_timers(const gf_sim *sim);
+double gf_sim_time_s(const gf_sim *sim);
+double gf_sim_dt_s(const gf_sim *sim);
+double gf_sim_end_time_s(const gf_sim *sim);
+long gf_sim_step_count(const gf_sim *sim);
+void gf_sim_box(const gf_sim *sim, double lo[3], double hi[3], int periodic[3]);
+/* Number of grain-grain and grain-wall contacts, and the largest overlap / D. */
+void gf_sim_contact_stats(const gf_sim *sim, size_t *n_contacts, double *max_overlap_over_D);
+/* Total force the grains exert on wall w (N), accumulated at the last force evaluation. */
+void gf_sim_wall_force(const gf_sim *sim, int wall_id, double f_N[3]);
+
+/* --- builder calls, for scenes --- */
+/* Domain box; periodic axes wrap, others must be closed by walls. */
+gf_status gf_sim_set_box(gf_sim *sim, const double lo_m[3], const double hi_m[3], const int periodic[3]);
+gf_status gf_sim_set_gravity(gf_sim *sim, const double g_m_s2[3]);
+/* Plane wall through point with unit normal pointing into the grains
+ * (an infinite-radius, infinite-mass particle: Izard 2014 §2.1.2.1).
+ * Returns its id in *wall_id (may be NULL). */
+gf_status gf_sim_add_wall(gf_sim *sim, const double point_m[3], const double normal[3], double friction,
+                          int *wall_id);
+/* Activates/deactivates a wall: a gate is a wall a scene removes at t = 0. */
+gf_status gf_sim_set_wall_active(gf_sim *sim, int wall_id, int active);
+gf_status gf_sim_set_end_time(gf_sim *sim, double t_end_s);
+/* Basal pore-pressure gauge (probes.nc station). */
+gf_status gf_sim_add_gauge(gf_sim *sim, const char *name, const double x_m[3]);
+/* Resets the clock to 0 (after a preparation phase run inside build). */
+void gf_sim_reset_clock(gf_sim *sim);
+/* Particle and fluid state consistency check: positions inside the box,
+ * overlaps below 5 % of D, finite values. */
+gf_status gf_sim_check_state(gf_sim *sim);
+
+#endif

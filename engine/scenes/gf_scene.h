@@ -1,0 +1,55 @@
+/*
+ * A scene reads like a figure caption: a name, the stages it needs, a table
+ * of parameters (key, unit, default, range) and a few short callbacks.
+ * Scenes never read YAML; they receive a resolved gf_run_spec. A new scene is
+ * one file gf_scene_<name>.c and one row in gf_scene_table.c.
+ */
+#ifndef GF_SCENE_H
+#define GF_SCENE_H
+
+#include "gf_run_spec.h"
+#include "gf_sim.h"
+#include "io/gf_nc.h"
+
+enum {
+    GF_NEED_CONTACTS = 1u << 0,
+    GF_NEED_FLUID = 1u << 1,     /* honours spec.fluid.model; without it the scene is always dry */
+    GF_NEED_PROBES = 1u << 2,
+    GF_NEED_PACKING = 1u << 3,   /* builds a packing at phi_initial */
+};
+
+typedef struct gf_param_info {
+    const char *key;
+    const char *unit;            /* udunits string, "1" for dimensionless */
+    double def, min, max;        /* default and inclusive range */
+    const char *doc;
+} gf_param_info;
+
+typedef struct gf_scene_desc {
+    const char *name;
+    const char *caption;         /* one line: what and after whom */
+    unsigned needs;
+    const gf_param_info *params;
+    int n_params;
+    double default_end_time_nd;  /* sqrt(D/g) units, used when spec.end_time_nd == 0 */
+    /* Box, walls, grains (packing included), gauges. Required. */
+    gf_status (*build)(gf_sim *sim, const gf_run_spec *spec);
+    /* At t = 0 after build: open the gate, tilt gravity. May be NULL. */
+    gf_status (*start)(gf_sim *sim);
+    /* Scene-specific scalar diagnostics (diagnostics.nc), n_diag values. */
+    int n_diag;
+    const gf_var_info *diag;
+    gf_status (*diagnose)(gf_sim *sim, double *values);
+    /* Non-zero when the scene's end condition holds (e.g. at rest). May be NULL. */
+    int (*done)(gf_sim *sim);
+} gf_scene_desc;
+
+/* NULL when unknown. */
+const gf_scene_desc *gf_scene_find(const char *name);
+/* All scenes, *n set to their count. */
+const gf_scene_desc *const *gf_scene_all(int *n);
+/* Fills absent scene parameters with defaults and checks every value is in
+ * range and every key is known. Errors name the key and the range. */
+gf_status gf_scene_resolve_params(gf_ctx *ctx, gf_run_spec *spec);
+
+#endif
