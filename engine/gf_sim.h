@@ -79,6 +79,9 @@ gf_status gf_sim_set_wall_active(gf_sim *sim, int wall_id, int active);
 gf_status gf_sim_set_end_time(gf_sim *sim, double t_end_s);
 /* Basal pore-pressure gauge (probes.nc station). */
 gf_status gf_sim_add_gauge(gf_sim *sim, const char *name, const double x_m[3]);
+/* Fluid boundary condition of a box face (axis 0..2, side 0 = low, 1 = high);
+ * the default is no-slip on non-periodic faces. Ignored by dry runs. */
+gf_status gf_sim_set_fluid_bc(gf_sim *sim, int axis, int side, int bc /* gf_fluid_bc */);
 /* Resets the clock to 0 (after a preparation phase run inside build). */
 void gf_sim_reset_clock(gf_sim *sim);
 /* Particle and fluid state consistency check: positions inside the box,
