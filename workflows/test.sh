@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# Second command of the README: dependencies, build, and the default test suite
+# (every ctest test not labelled `slow`). Long validations: workflows/validate.sh.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash workflows/deps.sh
+bash workflows/build.sh
+cd build
+ctest --output-on-failure -LE slow -j2 "$@"
