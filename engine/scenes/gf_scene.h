@@ -42,6 +42,15 @@ typedef struct gf_scene_desc {
     gf_status (*diagnose)(gf_sim *sim, double *values);
     /* Non-zero when the scene's end condition holds (e.g. at rest). May be NULL. */
     int (*done)(gf_sim *sim);
+    /* Achieved initial packing, for the phi_initial_measured / phi_initial_local
+     * attributes (gf_nc_meta): call once right after gf_sim_create, before any
+     * step (it measures the current state). NaN when not applicable. May be NULL. */
+    gf_status (*initial_packing)(gf_sim *sim, double *phi_measured, double *phi_local);
+    /* Column geometry R0 (length) and H0 (height) in m from the resolved spec,
+     * for the collapse scales (T_visq, T0, t0) and the column_length_m /
+     * column_height_m attributes; scenes derive them from their own
+     * parameters. May be NULL (not a column). */
+    void (*column_geometry)(const gf_run_spec *spec, double *length_m, double *height_m);
 } gf_scene_desc;
 
 /* NULL when unknown. */

@@ -1,0 +1,86 @@
+/*
+ * The contact-law registry (STYLE.md §8): one row per law, selected by
+ * spec.contact.law. A new law is one kernel file and one row here.
+ * Also: derivation of the law parameters from the run spec, and the closed
+ * form of the clipped linear law used by the tests (digest §1.2 [D]).
+ */
+#include "contact/gf_contact.h"
+
+#include <math.h>
+#include <string.h>
+
+static const gf_contact_info gf_contact_table[] = {
+    /* name      kernel              history               what */
+    {"linear", gf_contact_linear, GF_CONTACT_HISTORY, "spring-dashpot, clipped, vector tangential spring (Izard 2014)"},
+    {"hertz", gf_contact_hertz, GF_CONTACT_HISTORY, "Hertz-Mindlin, delta^1/4 damping (Tsuji 1992)"},
+};
+
+const gf_contact_info *gf_contact_find(const char *law)
+{
+    for (size_t i = 0; i < sizeof gf_contact_table / sizeof gf_contact_table[0]; ++i)
+        if (strcmp(gf_contact_table[i].name, law) == 0)
+            return &gf_contact_table[i];
+    return NULL;
+}
+
+const gf_contact_info *gf_contact_all(int *n)
+{
+    *n = (int)(sizeof gf_contact_table / sizeof gf_contact_table[0]);
+    return gf_contact_table;
+}
+
+double gf_contact_damping_ratio(double eps)
+{
+    double l = log(eps);
+    return -l / sqrt(M_PI * M_PI + l * l);
+}
+
+gf_status gf_contact_params_from_spec(gf_ctx *ctx, const gf_run_spec *spec, gf_contact_params *out)
+{
+    const gf_contact_spec *c = &spec->contact;
+    double eps = c->restitution;
+    if (!gf_contact_find(c->law))
+        return GF_FAIL(ctx, GF_ERR_CONFIG, "contact.law: unknown law '%s' (known: linear, hertz)", c->law);
+    if (!(eps > 0.0 && eps <= 1.0))
+        return GF_FAIL(ctx, GF_ERR_CONFIG, "contact.restitution: must be in (0, 1] (got %g)", eps);
+    if (!(c->t_contact_nd > 0.0))
+        return GF_FAIL(ctx, GF_ERR_CONFIG, "contact.t_contact_nd: must be > 0 (got %g)", c->t_contact_nd);
+    if (!(c->friction >= 0.0) || !(c->wall_friction >= 0.0))
+        return GF_FAIL(ctx, GF_ERR_CONFIG, "contact.friction/wall_friction: must be >= 0 (got %g, %g)",
+                       c->friction, c->wall_friction);
+    if (!(c->kt_over_kn > 0.0))
+        return GF_FAIL(ctx, GF_ERR_CONFIG, "contact.kt_over_kn: must be > 0 (got %g)", c->kt_over_kn);
+    double D = spec->grains.diameter_m, rho = spec->grains.density_kg_m3;
+    if (!(D > 0.0) || !(rho > 0.0) || !(spec->gravity_m_s2 > 0.0))
+        return GF_FAIL(ctx, GF_ERR_PHYSICS, "grains: diameter, density and gravity must be > 0 (got %g m, %g kg/m3, %g m/s2)",
+                       D, rho, spec->gravity_m_s2);
+    double t_c = gf_run_spec_t_contact_s(spec);
+    double m = rho * M_PI * D * D * D / 6.0;
+    double m_eff = 0.5 * m; /* mean pair: two grains of diameter D */
+    double gamma_n = -(2.0 * m_eff / t_c) * log(eps);                               /* (3.16) */
+    double k_n = m_eff * M_PI * M_PI / (t_c * t_c) + gamma_n * gamma_n / (4.0 * m_eff); /* (3.17) */
+    *out = (gf_contact_params){.k_n_N_m = k_n,
+                               .zeta = gf_contact_damping_ratio(eps),
+                               .kt_over_kn = c->kt_over_kn,
+                               .mu_grain = c->friction,
+                               .mu_wall = c->wall_friction,
+                               .allow_attraction = c->allow_attraction,
+                               .t_contact_s = t_c,
+                               .m_eff_mean_kg = m_eff};
+    /* Hertz reference overlap: peak overlap of the mean pair hit at sqrt(gD)
+     * under the undamped linear law, V sqrt(m* / k_n). */
+    out->delta_ref_m = sqrt(spec->gravity_m_s2 * D) * sqrt(m_eff / k_n);
+    return GF_OK;
+}
+
+void gf_contact_clipped_restitution(double eps_max, double *eps_eff, double *duration_over_tc)
+{
+    /* Unit mass, damped frequency w = pi (t_c = 1), decay b = -ln(eps):
+     * delta = e^{-bt} sin(wt)/w; the clipped force k delta + gamma delta'
+     * first vanishes where tan(wt) = -2 b w / (w^2 - b^2), in (t_c/2, t_c]. */
+    double w = M_PI, b = -log(eps_max);
+    double ts = atan2(2.0 * b * w, b * b - w * w) / w; /* sin > 0, cos < 0 branch */
+    double ddot = exp(-b * ts) * (cos(w * ts) - b / w * sin(w * ts));
+    *eps_eff = -ddot;
+    *duration_over_tc = ts;
+}

@@ -1,0 +1,348 @@
+/* Cell grid + Verlet half list with id-keyed tangential history; see gf_nlist.h. */
+#include "contact/gf_nlist.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "contact/gf_contact.h"
+
+gf_status gf_nlist_create(gf_ctx *ctx, gf_nlist **out)
+{
+    *out = calloc(1, sizeof **out);
+    if (!*out)
+        return GF_FAIL(ctx, GF_ERR_NOMEM, "nlist: cannot allocate");
+    return GF_OK;
+}
+
+void gf_nlist_destroy(gf_nlist **pnl)
+{
+    if (!pnl || !*pnl)
+        return;
+    gf_nlist *nl = *pnl;
+    free(nl->row_start), free(nl->j), free(nl->image), free(nl->hist), free(nl->touching);
+    free(nl->cell_start), free(nl->cell_grains), free(nl->grain_cell);
+    free(nl->old_row_start), free(nl->old_j), free(nl->old_hist), free(nl->old_row_id), free(nl->row_id);
+    free(nl->id_to_index);
+    free(nl);
+    *pnl = NULL;
+}
+
+static int grow(void **p, size_t elem, size_t n)
+{
+    void *q = realloc(*p, elem * (n ? n : 1));
+    if (!q)
+        return 0;
+    *p = q;
+    return 1;
+}
+
+void gf_nlist_wrap(const gf_nlist_geom *g, size_t n, double *x, double *y, double *z)
+{
+    double *c[3] = {x, y, z};
+    for (int a = 0; a < 3; ++a) {
+        if (!g->periodic[a])
+            continue;
+        double lo = g->lo_m[a], L = g->hi_m[a] - g->lo_m[a];
+        for (size_t i = 0; i < n; ++i) {
+            double v = c[a][i];
+            if (v < lo || v >= lo + L) {
+                v -= L * floor((v - lo) / L);
+                if (v >= lo + L) /* round-off at the upper face */
+                    v = lo;
+                c[a][i] = v;
+            }
+        }
+    }
+}
+
+/* Moves the current list into old_* (history source) and records row ids. */
+static gf_status keep_old(gf_ctx *ctx, gf_nlist *nl)
+{
+    size_t n = nl->n, np = nl->n_pairs;
+    if (!grow((void **)&nl->old_row_start, sizeof(size_t), n + 1) ||
+        !grow((void **)&nl->old_j, sizeof(int32_t), np) || !grow((void **)&nl->old_hist, 3 * sizeof(double), np))
+        return GF_FAIL(ctx, GF_ERR_NOMEM, "nlist: cannot keep the old list (%zu pairs)", np);
+    if (n)
+        memcpy(nl->old_row_start, nl->row_start, (n + 1) * sizeof(size_t));
+    memcpy(nl->old_j, nl->j, np * sizeof(int32_t));
+    memcpy(nl->old_hist, nl->hist, 3 * np * sizeof(double));
+    nl->old_n = n;
+    /* the row ids of the list being replaced become the old ones */
+    int64_t *t = nl->old_row_id;
+    nl->old_row_id = nl->row_id;
+    nl->row_id = t;
+    return GF_OK;
+}
+
+static gf_status setup_cells(gf_ctx *ctx, gf_nlist *nl, const gf_nlist_geom *g, double cell_min)
+{
+    nl->n_cells = 1;
+    for (int a = 0; a < 3; ++a) {
+        double L = g->hi_m[a] - g->lo_m[a];
+        if (!(L > 0.0))
+            return GF_FAIL(ctx, GF_ERR_CONFIG, "nlist: box extent along axis %d must be > 0 (got %g m)", a, L);
+        if (g->periodic[a] && !(L > 2.0 * cell_min))
+            return GF_FAIL(ctx, GF_ERR_CONFIG,
+                           "nlist: periodic axis %d is %g m long; minimum image needs more than 2 x %g m "
+                           "(2 R_max + lubrication range + skin)",
+                           a, L, cell_min);
+        long nc = (long)floor(L / cell_min);
+        if (nc < 1)
+            nc = 1;
+        if (nc > 1024)
+            nc = 1024; /* enough resolution; bounds the cell count of huge boxes */
+        nl->nc[a] = (int)nc;
+        nl->n_cells *= (size_t)nc;
+        nl->lo_m[a] = g->lo_m[a];
+        nl->hi_m[a] = g->hi_m[a];
+        nl->periodic[a] = g->periodic[a];
+    }
+    if (nl->n_cells > nl->cap_cells) {
+        if (!grow((void **)&nl->cell_start, sizeof(size_t), nl->n_cells + 1))
+            return GF_FAIL(ctx, GF_ERR_NOMEM, "nlist: cannot allocate %zu cells", nl->n_cells);
+        nl->cap_cells = nl->n_cells;
+    }
+    for (int sx = -1; sx <= 1; ++sx)
+        for (int sy = -1; sy <= 1; ++sy)
+            for (int sz = -1; sz <= 1; ++sz) {
+                int code = (sx + 1) * 9 + (sy + 1) * 3 + (sz + 1);
+                nl->shift_m[code][0] = sx * (g->hi_m[0] - g->lo_m[0]);
+                nl->shift_m[code][1] = sy * (g->hi_m[1] - g->lo_m[1]);
+                nl->shift_m[code][2] = sz * (g->hi_m[2] - g->lo_m[2]);
+            }
+    return GF_OK;
+}
+
+static int cell_coord(const gf_nlist *nl, int a, double v)
+{
+    double L = nl->hi_m[a] - nl->lo_m[a];
+    long c = (long)floor((v - nl->lo_m[a]) / L * nl->nc[a]);
+    if (c < 0)
+        c = 0; /* grains outside a closed box share the edge cells */
+    if (c >= nl->nc[a])
+        c = nl->nc[a] - 1;
+    return (int)c;
+}
+
+static gf_status sort_into_cells(gf_ctx *ctx, gf_nlist *nl, size_t n, const double *x, const double *y,
+                                 const double *z)
+{
+    if (n > nl->cap_grains) {
+        if (!grow((void **)&nl->cell_grains, sizeof(int32_t), n) ||
+            !grow((void **)&nl->grain_cell, sizeof(int32_t), n))
+            return GF_FAIL(ctx, GF_ERR_NOMEM, "nlist: cannot allocate cell arrays for %zu grains", n);
+        nl->cap_grains = n;
+    }
+    memset(nl->cell_start, 0, (nl->n_cells + 1) * sizeof(size_t));
+    for (size_t i = 0; i < n; ++i) {
+        int c = (cell_coord(nl, 0, x[i]) * nl->nc[1] + cell_coord(nl, 1, y[i])) * nl->nc[2] +
+                cell_coord(nl, 2, z[i]);
+        nl->grain_cell[i] = c;
+        nl->cell_start[c + 1]++;
+    }
+    for (size_t c = 0; c < nl->n_cells; ++c)
+        nl->cell_start[c + 1] += nl->cell_start[c];
+    /* stable fill in index order: deterministic list, rows sorted by j */
+    size_t *fill = malloc(nl->n_cells * sizeof(size_t));
+    if (!fill)
+        return GF_FAIL(ctx, GF_ERR_NOMEM, "nlist: cannot allocate cell fill");
+    memcpy(fill, nl->cell_start, nl->n_cells * sizeof(size_t));
+    for (size_t i = 0; i < n; ++i)
+        nl->cell_grains[fill[nl->grain_cell[i]]++] = (int32_t)i;
+    free(fill);
+    return GF_OK;
+}
+
+/* Distinct neighbour cells of cell (cx,cy,cz), wrapping periodic axes. */
+static int neighbour_cells(const gf_nlist *nl, int cx, int cy, int cz, int out[27])
+{
+    int m = 0;
+    for (int dx = -1; dx <= 1; ++dx)
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dz = -1; dz <= 1; ++dz) {
+                int c[3] = {cx + dx, cy + dy, cz + dz}, ok = 1;
+                for (int a = 0; a < 3; ++a) {
+                    if (c[a] < 0 || c[a] >= nl->nc[a]) {
+                        if (!nl->periodic[a]) {
+                            ok = 0;
+                            break;
+                        }
+                        c[a] = (c[a] + nl->nc[a]) % nl->nc[a];
+                    }
+                }
+                if (!ok)
+                    continue;
+                int idx = (c[0] * nl->nc[1] + c[1]) * nl->nc[2] + c[2], dup = 0;
+                for (int k = 0; k < m; ++k)
+                    dup |= out[k] == idx;
+                if (!dup)
+                    out[m++] = idx;
+            }
+    return m;
+}
+
+static gf_status push_pair(gf_ctx *ctx, gf_nlist *nl, int32_t j, uint8_t image)
+{
+    if (nl->n_pairs == nl->cap_pairs) {
+        size_t cap = nl->cap_pairs ? 2 * nl->cap_pairs : 1024;
+        if (!grow((void **)&nl->j, sizeof(int32_t), cap) || !grow((void **)&nl->image, 1, cap) ||
+            !grow((void **)&nl->hist, 3 * sizeof(double), cap) || !grow((void **)&nl->touching, 1, cap))
+            return GF_FAIL(ctx, GF_ERR_NOMEM, "nlist: cannot grow to %zu pairs", cap);
+        nl->cap_pairs = cap;
+    }
+    nl->j[nl->n_pairs] = j;
+    nl->image[nl->n_pairs] = image;
+    memset(&nl->hist[3 * nl->n_pairs], 0, 3 * sizeof(double));
+    nl->touching[nl->n_pairs] = 0;
+    nl->n_pairs++;
+    return GF_OK;
+}
+
+static void min_image(const gf_nlist *nl, double d[3], int s[3])
+{
+    for (int a = 0; a < 3; ++a) {
+        s[a] = 0;
+        if (!nl->periodic[a])
+            continue;
+        double L = nl->hi_m[a] - nl->lo_m[a];
+        if (d[a] > 0.5 * L)
+            s[a] = -1;
+        else if (d[a] < -0.5 * L)
+            s[a] = 1;
+        d[a] += s[a] * L;
+    }
+}
+
+static gf_status fill_rows(gf_ctx *ctx, gf_nlist *nl, const gf_nlist_geom *g, size_t n, const double *x,
+                           const double *y, const double *z, const double *r)
+{
+    nl->n_pairs = 0;
+    int nb[27];
+    for (size_t i = 0; i < n; ++i) {
+        nl->row_start[i] = nl->n_pairs;
+        int c = nl->grain_cell[i];
+        int cz = c % nl->nc[2], cy = (c / nl->nc[2]) % nl->nc[1], cx = c / (nl->nc[2] * nl->nc[1]);
+        int m = neighbour_cells(nl, cx, cy, cz, nb);
+        for (int k = 0; k < m; ++k)
+            for (size_t q = nl->cell_start[nb[k]]; q < nl->cell_start[nb[k] + 1]; ++q) {
+                int32_t j = nl->cell_grains[q];
+                if ((size_t)j <= i)
+                    continue;
+                double d[3] = {x[i] - x[j], y[i] - y[j], z[i] - z[j]};
+                int s[3];
+                min_image(nl, d, s);
+                double reach = r[i] + r[j] + g->extra_m + g->skin_m;
+                if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < reach * reach)
+                    GF_TRY(push_pair(ctx, nl, j, (uint8_t)((s[0] + 1) * 9 + (s[1] + 1) * 3 + (s[2] + 1))));
+            }
+    }
+    nl->row_start[n] = nl->n_pairs;
+    return GF_OK;
+}
+
+static int find_in_row(const gf_nlist *nl, size_t row, int32_t j)
+{
+    for (size_t k = nl->row_start[row]; k < nl->row_start[row + 1]; ++k)
+        if (nl->j[k] == j)
+            return (int)(k - nl->row_start[row]);
+    return -1;
+}
+
+static gf_status map_ids(gf_ctx *ctx, gf_nlist *nl, size_t n, const int64_t *id)
+{
+    int64_t max_id = -1;
+    for (size_t i = 0; i < n; ++i)
+        if (id[i] > max_id)
+            max_id = id[i];
+    size_t need = (size_t)(max_id + 1);
+    if (need > nl->id_cap) {
+        if (!grow((void **)&nl->id_to_index, sizeof(int64_t), need))
+            return GF_FAIL(ctx, GF_ERR_NOMEM, "nlist: cannot allocate id map (%zu)", need);
+        nl->id_cap = need;
+    }
+    for (size_t k = 0; k < nl->id_cap; ++k)
+        nl->id_to_index[k] = -1;
+    for (size_t i = 0; i < n; ++i)
+        nl->id_to_index[id[i]] = (int64_t)i;
+    return GF_OK;
+}
+
+int gf_nlist_set_history(gf_nlist *nl, const int64_t *id, int64_t a, int64_t b, const double h[3])
+{
+    (void)id;
+    if (a < 0 || b < 0 || (size_t)a >= nl->id_cap || (size_t)b >= nl->id_cap)
+        return 0;
+    int64_t ia = nl->id_to_index[a], ib = nl->id_to_index[b];
+    if (ia < 0 || ib < 0)
+        return 0;
+    double sgn = 1.0;
+    if (ia > ib) { /* the pair lives in the row of the lower index, seen from it */
+        int64_t t = ia;
+        ia = ib, ib = t, sgn = -1.0;
+    }
+    int k = find_in_row(nl, (size_t)ia, (int32_t)ib);
+    if (k < 0)
+        return 0;
+    size_t slot = nl->row_start[ia] + (size_t)k;
+    double *dst = &nl->hist[3 * slot];
+    dst[0] = sgn * h[0], dst[1] = sgn * h[1], dst[2] = sgn * h[2];
+    nl->touching[slot] = 1;
+    return 1;
+}
+
+static void carry_history(gf_nlist *nl, const int64_t *id)
+{
+    for (size_t r = 0; r < nl->old_n; ++r)
+        for (size_t k = nl->old_row_start[r]; k < nl->old_row_start[r + 1]; ++k) {
+            const double *h = &nl->old_hist[3 * k];
+            if (h[0] == 0.0 && h[1] == 0.0 && h[2] == 0.0)
+                continue;
+            gf_nlist_set_history(nl, id, nl->old_row_id[r], nl->old_row_id[nl->old_j[k]], h);
+        }
+}
+
+static void split_rows(gf_nlist *nl, size_t n, int n_chunks)
+{
+    if (n_chunks < 1)
+        n_chunks = 1;
+    if (n_chunks > 64)
+        n_chunks = 64;
+    nl->n_chunks = n_chunks;
+    /* balance pairs + a per-row cost (walls, integration) */
+    double total = (double)nl->n_pairs + 2.0 * (double)n, per = total / n_chunks;
+    size_t i = 0;
+    nl->chunk_row[0] = 0;
+    for (int c = 1; c < n_chunks; ++c) {
+        while (i < n && (double)nl->row_start[i] + 2.0 * (double)i < c * per)
+            ++i;
+        nl->chunk_row[c] = i;
+    }
+    nl->chunk_row[n_chunks] = n;
+}
+
+gf_status gf_nlist_build(gf_ctx *ctx, gf_nlist *nl, const gf_nlist_geom *g, size_t n, const double *x,
+                         const double *y, const double *z, const double *radius_m, const int64_t *id,
+                         int n_chunks)
+{
+    double r_max = 0.0;
+    for (size_t i = 0; i < n; ++i)
+        if (radius_m[i] > r_max)
+            r_max = radius_m[i];
+    GF_TRY(keep_old(ctx, nl));
+    GF_TRY(setup_cells(ctx, nl, g, 2.0 * r_max + g->extra_m + g->skin_m));
+    GF_TRY(sort_into_cells(ctx, nl, n, x, y, z));
+    if (!grow((void **)&nl->row_start, sizeof(size_t), n + 1))
+        return GF_FAIL(ctx, GF_ERR_NOMEM, "nlist: cannot allocate rows");
+    GF_TRY(fill_rows(ctx, nl, g, n, x, y, z, radius_m));
+    nl->n = n;
+    GF_TRY(map_ids(ctx, nl, n, id));
+    carry_history(nl, id);
+    /* row ids of this build, for the next transfer */
+    if (!grow((void **)&nl->row_id, sizeof(int64_t), n))
+        return GF_FAIL(ctx, GF_ERR_NOMEM, "nlist: cannot allocate row ids");
+    memcpy(nl->row_id, id, n * sizeof(int64_t));
+    split_rows(nl, n, n_chunks);
+    nl->n_builds++;
+    return GF_OK;
+}

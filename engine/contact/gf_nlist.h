@@ -1,0 +1,89 @@
+/*
+ * Verlet neighbour list built from a cell grid (linked cells, Djouwe 2012
+ * Alg. 1; Izard 2014 §2.1.2.2 "Verlet tables on contact sub-domains").
+ *
+ * - Half list: each pair once, in the row of its lower index i (j > i), CSR.
+ * - A pair enters when |x_i - x_j| < R_i + R_j + extra + skin, with extra the
+ *   lubrication range (0 when dry). Rebuilt only when a grain has moved more
+ *   than skin/2 since the last build (the sim checks), so no contact is missed:
+ *   two grains close by at most skin between builds.
+ * - Periodic axes: minimum image. Each pair stores the image it was found in
+ *   (a code 0..26 into a table of box shifts), so the force loop adds a shift
+ *   instead of rounding; positions are wrapped into the box only at a build
+ *   (the shifts would be stale otherwise). Minimum image needs
+ *   L > 2 (2 R_max + extra + skin) along every periodic axis (checked).
+ * - Cells of edge >= 2 R_max + extra + skin; any count per axis (1 or 2 cells
+ *   along a periodic axis are handled by de-duplicating neighbour cells).
+ *   Building is O(N) (counting sort of grains by cell).
+ * - Tangential history: GF_CONTACT_HISTORY doubles per pair, keyed by the pair
+ *   of global ids: a build carries the history of every old pair that is
+ *   still a candidate over (swapping its sign if the pair changed rows);
+ *   pairs that left the list are forgotten (they were separated by > skin).
+ * Owner: gf_sim. Not thread-safe during build; the force loop reads rows in
+ * parallel and each pair's history is written by the thread owning its row.
+ */
+#ifndef GF_NLIST_H
+#define GF_NLIST_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "core/gf_status.h"
+
+typedef struct gf_nlist {
+    size_t n;                /* grains the list was built for */
+    size_t n_pairs, cap_pairs;
+    size_t *row_start;       /* n + 1 */
+    int32_t *j;              /* partner index */
+    uint8_t *image;          /* index into shift_m */
+    double *hist;            /* 3 per pair */
+    uint8_t *touching;       /* 1 while the pair is in contact (its history may be non-zero) */
+    double shift_m[27][3];   /* x_i - x_j + shift_m[image] is the pair vector */
+    int periodic[3];
+    double lo_m[3], hi_m[3];
+    /* cells */
+    int nc[3];
+    size_t n_cells, cap_cells, cap_grains;
+    size_t *cell_start;      /* n_cells + 1 */
+    int32_t *cell_grains;    /* grains sorted by cell */
+    int32_t *grain_cell;
+    /* scratch for the history transfer */
+    size_t old_n, old_cap_pairs;
+    size_t *old_row_start;
+    int32_t *old_j;
+    double *old_hist;
+    int64_t *old_row_id;     /* id of the grain of each old row */
+    int64_t *row_id;         /* ids of the rows of the current list */
+    int64_t *id_to_index;    /* inverse id map, size id_cap */
+    size_t id_cap;
+    /* split of rows into balanced chunks for threads */
+    int n_chunks;
+    size_t chunk_row[65];
+    size_t n_builds;
+} gf_nlist;
+
+typedef struct gf_nlist_geom {
+    double lo_m[3], hi_m[3];
+    int periodic[3];
+    double extra_m;          /* range beyond contact (lubrication) */
+    double skin_m;
+} gf_nlist_geom;
+
+gf_status gf_nlist_create(gf_ctx *ctx, gf_nlist **out);
+void gf_nlist_destroy(gf_nlist **nl);
+
+/* Builds the list for grains [0, n) at positions x,y,z (which the caller has
+ * wrapped into the periodic box), keeping the history of surviving pairs
+ * (ids: global ids). n_chunks: number of balanced row ranges wanted (threads). */
+gf_status gf_nlist_build(gf_ctx *ctx, gf_nlist *nl, const gf_nlist_geom *g, size_t n, const double *x,
+                         const double *y, const double *z, const double *radius_m, const int64_t *id,
+                         int n_chunks);
+
+/* Sets the history of pair (id_a, id_b) if it is in the list (restart).
+ * Returns 1 when found. Needs the ids passed to the last build. */
+int gf_nlist_set_history(gf_nlist *nl, const int64_t *id, int64_t id_a, int64_t id_b, const double h[3]);
+
+/* Wraps coordinate into [lo, hi) along periodic axes. */
+void gf_nlist_wrap(const gf_nlist_geom *g, size_t n, double *x, double *y, double *z);
+
+#endif

@@ -1,0 +1,365 @@
+/* FFT and FFT-preconditioned CG Poisson solvers; see gf_poisson.h for the method. */
+#include "fluid/gf_poisson.h"
+
+#include <fftw3.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/gf_timer.h"
+
+struct gf_poisson_plan {
+    const gf_grid *g;
+    fftw_plan fwd, bwd;
+    double *work;
+    double *eig[3];       /* eigenvalues of the 1-D second difference per mode */
+    double norm;          /* forward+backward scaling of FFTW's unnormalised transforms */
+    double *r, *z, *p, *q;  /* CG vectors */
+};
+
+gf_status gf_poisson_plan_create(gf_ctx *ctx, const gf_grid *g, gf_poisson_plan **out)
+{
+    *out = NULL;
+    gf_poisson_plan *pl = calloc(1, sizeof *pl);
+    if (!pl)
+        return GF_FAIL(ctx, GF_ERR_NOMEM, "poisson plan: out of memory");
+    pl->g = g;
+    size_t n = g->n_cells;
+    pl->work = fftw_malloc(n * sizeof(double));
+    pl->r = malloc(n * sizeof(double));
+    pl->z = malloc(n * sizeof(double));
+    pl->p = malloc(n * sizeof(double));
+    pl->q = malloc(n * sizeof(double));
+    pl->norm = 1.0;
+    fftw_r2r_kind kf[3], kb[3];
+    int ok = pl->work && pl->r && pl->z && pl->p && pl->q;
+    for (int d = 0; d < 3 && ok; ++d) {
+        int nd = g->n[d];
+        double h2 = g->h_m[d] * g->h_m[d];
+        pl->eig[d] = malloc((size_t)nd * sizeof(double));
+        if (!pl->eig[d]) {
+            ok = 0;
+            break;
+        }
+        for (int m = 0; m < nd; ++m) {
+            if (g->periodic[d]) {
+                int fr = m <= nd / 2 ? m : nd - m;  /* half-complex: index m holds frequency fr */
+                pl->eig[d][m] = (2.0 * cos(2.0 * M_PI * fr / nd) - 2.0) / h2;
+            } else {
+                pl->eig[d][m] = (2.0 * cos(M_PI * m / nd) - 2.0) / h2;
+            }
+        }
+        kf[d] = g->periodic[d] ? FFTW_R2HC : FFTW_REDFT10;
+        kb[d] = g->periodic[d] ? FFTW_HC2R : FFTW_REDFT01;
+        pl->norm *= g->periodic[d] ? nd : 2.0 * nd;
+    }
+    if (!ok) {
+        gf_poisson_plan_destroy(&pl);
+        return GF_FAIL(ctx, GF_ERR_NOMEM, "poisson plan: out of memory for %zu cells", n);
+    }
+    /* FFTW is row-major: the slowest index (z) first. */
+    fftw_r2r_kind kf3[3] = {kf[2], kf[1], kf[0]}, kb3[3] = {kb[2], kb[1], kb[0]};
+    int dims[3] = {g->n[2], g->n[1], g->n[0]};
+    pl->fwd = fftw_plan_r2r(3, dims, pl->work, pl->work, kf3, FFTW_ESTIMATE);
+    pl->bwd = fftw_plan_r2r(3, dims, pl->work, pl->work, kb3, FFTW_ESTIMATE);
+    if (!pl->fwd || !pl->bwd) {
+        gf_poisson_plan_destroy(&pl);
+        return GF_FAIL(ctx, GF_ERR_UNSUPPORTED, "poisson plan: FFTW could not plan a %dx%dx%d transform", g->n[0],
+                       g->n[1], g->n[2]);
+    }
+    *out = pl;
+    return GF_OK;
+}
+
+void gf_poisson_plan_destroy(gf_poisson_plan **plan)
+{
+    if (!plan || !*plan)
+        return;
+    gf_poisson_plan *pl = *plan;
+    if (pl->fwd)
+        fftw_destroy_plan(pl->fwd);
+    if (pl->bwd)
+        fftw_destroy_plan(pl->bwd);
+    fftw_free(pl->work);
+    for (int d = 0; d < 3; ++d)
+        free(pl->eig[d]);
+    free(pl->r);
+    free(pl->z);
+    free(pl->p);
+    free(pl->q);
+    free(pl);
+    *plan = NULL;
+}
+
+void gf_poisson_solve_const(gf_poisson_plan *pl, const double *rhs, double *phi)
+{
+    const gf_grid *g = pl->g;
+    memcpy(pl->work, rhs, g->n_cells * sizeof(double));
+    fftw_execute(pl->fwd);
+    for (int k = 0; k < g->n[2]; ++k)
+        for (int j = 0; j < g->n[1]; ++j)
+            for (int i = 0; i < g->n[0]; ++i) {
+                size_t c = gf_grid_cell(g, i, j, k);
+                double lam = pl->eig[0][i] + pl->eig[1][j] + pl->eig[2][k];
+                pl->work[c] = (i == 0 && j == 0 && k == 0) ? 0.0 : pl->work[c] / (lam * pl->norm);
+            }
+    fftw_execute(pl->bwd);
+    memcpy(phi, pl->work, g->n_cells * sizeof(double));
+}
+
+void gf_poisson_apply_var(const gf_grid *g, const double *const a[3], const double *x, double *y)
+{
+    for (int k = 0; k < g->n[2]; ++k)
+        for (int j = 0; j < g->n[1]; ++j)
+            for (int i = 0; i < g->n[0]; ++i) {
+                int idx[3] = {i, j, k};
+                size_t c = gf_grid_cell(g, i, j, k);
+                double s = 0.0;
+                for (int d = 0; d < 3; ++d) {
+                    double ih2 = 1.0 / (g->h_m[d] * g->h_m[d]);
+                    for (int dir = 0; dir < 2; ++dir) {
+                        int m = idx[d] + (dir ? 1 : -1);
+                        int face = idx[d] + dir;  /* face index along d */
+                        if (!g->periodic[d] && (face == 0 || face == g->n[d]))
+                            continue;  /* wall: zero flux */
+                        int nb[3] = {i, j, k}, fi[3] = {i, j, k};
+                        nb[d] = gf_grid_wrap(g, d, m);
+                        fi[d] = face;
+                        double af = a[d][gf_grid_face(g, d, fi[0], fi[1], fi[2])];
+                        s += af * (x[gf_grid_cell(g, nb[0], nb[1], nb[2])] - x[c]) * ih2;
+                    }
+                }
+                y[c] = s;
+            }
+}
+
+static double dot(const double *a, const double *b, size_t n)
+{
+    double s = 0.0;
+    for (size_t i = 0; i < n; ++i)
+        s += a[i] * b[i];
+    return s;
+}
+
+static void remove_mean(double *x, size_t n)
+{
+    double m = 0.0;
+    for (size_t i = 0; i < n; ++i)
+        m += x[i];
+    m /= (double)n;
+    for (size_t i = 0; i < n; ++i)
+        x[i] -= m;
+}
+
+/* Mean face coefficient over the free (non-wall) faces: the preconditioner's constant. */
+static double mean_coefficient(const gf_grid *g, const double *const a[3])
+{
+    double s = 0.0;
+    size_t cnt = 0;
+    for (int d = 0; d < 3; ++d)
+        for (int k = 0; k < g->nf[d][2]; ++k)
+            for (int j = 0; j < g->nf[d][1]; ++j)
+                for (int i = 0; i < g->nf[d][0]; ++i) {
+                    int idx[3] = {i, j, k};
+                    if (!gf_grid_face_free(g, d, idx[d]))
+                        continue;
+                    s += a[d][gf_grid_face(g, d, i, j, k)];
+                    ++cnt;
+                }
+    return cnt ? s / (double)cnt : 1.0;
+}
+
+gf_status gf_poisson_solve_var(gf_poisson_plan *pl, const double *const a[3], const double *rhs, double *phi,
+                               double rtol, int max_iter, gf_solve_stats *stats)
+{
+    const gf_grid *g = pl->g;
+    size_t n = g->n_cells;
+    double t0 = gf_wtime();
+    double abar = mean_coefficient(g, a);
+    double *r = pl->r, *z = pl->z, *p = pl->p, *q = pl->q;
+    /* Solve B x = b with B = -div(a grad .), b = -rhs (mean-free): SPD on the mean-free subspace. */
+    remove_mean(phi, n);
+    gf_poisson_apply_var(g, a, phi, q);
+    for (size_t c = 0; c < n; ++c)
+        r[c] = -rhs[c];
+    remove_mean(r, n);
+    double bnorm = sqrt(dot(r, r, n));
+    for (size_t c = 0; c < n; ++c)
+        r[c] += q[c];  /* r = b - B phi = b + A phi */
+    double rnorm = sqrt(dot(r, r, n));
+    gf_solve_stats st = {0, rnorm, rnorm, 0.0};
+    double tol = rtol * (bnorm > 0.0 ? bnorm : 1.0);
+    double rz_old = 0.0;
+    int it = 0;
+    while (rnorm > tol && it < max_iter) {
+        /* z = M^-1 r with M = -abar L */
+        for (size_t c = 0; c < n; ++c)
+            z[c] = -r[c] / abar;
+        gf_poisson_solve_const(pl, z, z);
+        double rz = dot(r, z, n);
+        if (it == 0) {
+            memcpy(p, z, n * sizeof(double));
+        } else {
+            double beta = rz / rz_old;
+            for (size_t c = 0; c < n; ++c)
+                p[c] = z[c] + beta * p[c];
+        }
+        rz_old = rz;
+        gf_poisson_apply_var(g, a, p, q);
+        double pq = -dot(p, q, n);  /* p.Bp */
+        if (!(pq > 0.0))
+            break;
+        double alpha = rz / pq;
+        for (size_t c = 0; c < n; ++c) {
+            phi[c] += alpha * p[c];
+            r[c] += alpha * q[c];  /* r -= alpha B p */
+        }
+        rnorm = sqrt(dot(r, r, n));
+        ++it;
+    }
+    st.iterations = it;
+    st.residual_final = rnorm;
+    st.seconds = gf_wtime() - t0;
+    if (stats)
+        *stats = st;
+    if (!isfinite(rnorm))
+        return GF_FAIL(NULL, GF_ERR_NUMERIC, "poisson: non-finite residual");
+    if (rnorm > tol)
+        return GF_ERR_NOT_CONVERGED;
+    return GF_OK;
+}
+
+/* --- Helmholtz (implicit viscosity) ------------------------------------------------------------ */
+
+struct gf_helmholtz_plan {
+    const gf_grid *g;
+    int a;
+    int len[3], off[3];   /* unknowns per axis and first face index */
+    size_t n;
+    fftw_plan fwd, bwd;
+    double *work, *eig[3], norm;
+};
+
+gf_status gf_helmholtz_plan_create(gf_ctx *ctx, const gf_grid *g, int a, gf_helmholtz_plan **out)
+{
+    *out = NULL;
+    gf_helmholtz_plan *pl = calloc(1, sizeof *pl);
+    if (!pl)
+        return GF_FAIL(ctx, GF_ERR_NOMEM, "helmholtz plan: out of memory");
+    pl->g = g;
+    pl->a = a;
+    pl->norm = 1.0;
+    pl->n = 1;
+    fftw_r2r_kind kf[3], kb[3];
+    for (int d = 0; d < 3; ++d) {
+        int n = g->n[d];
+        double h2 = g->h_m[d] * g->h_m[d];
+        int len = n, off = 0;
+        int walls = !g->periodic[d];
+        if (d == a && walls) {
+            len = n - 1;
+            off = 1;
+        }
+        pl->len[d] = len;
+        pl->off[d] = off;
+        pl->n *= (size_t)(len > 0 ? len : 0);
+        if (len <= 0)
+            break;
+        pl->eig[d] = malloc((size_t)len * sizeof(double));
+        if (!pl->eig[d]) {
+            gf_helmholtz_plan_destroy(&pl);
+            return GF_FAIL(ctx, GF_ERR_NOMEM, "helmholtz plan: out of memory");
+        }
+        double shift = 0.0;  /* eigenvalue (2 cos(pi (m + shift)/N) - 2)/h^2 */
+        int N = n;
+        if (!walls) {
+            kf[d] = FFTW_R2HC;
+            kb[d] = FFTW_HC2R;
+            pl->norm *= n;
+        } else if (d == a) {
+            kf[d] = kb[d] = FFTW_RODFT00;
+            shift = 1.0;
+            pl->norm *= 2.0 * n;
+        } else {
+            int ns_lo = g->bc[d][0] != GF_GRID_FREE_SLIP, ns_hi = g->bc[d][1] != GF_GRID_FREE_SLIP;
+            if (ns_lo && ns_hi) {
+                kf[d] = FFTW_RODFT10;
+                kb[d] = FFTW_RODFT01;
+                shift = 1.0;
+            } else if (!ns_lo && !ns_hi) {
+                kf[d] = FFTW_REDFT10;
+                kb[d] = FFTW_REDFT01;
+            } else {
+                kf[d] = kb[d] = ns_lo ? FFTW_RODFT11 : FFTW_REDFT11;
+                shift = 0.5;
+            }
+            pl->norm *= 2.0 * n;
+        }
+        for (int m = 0; m < len; ++m) {
+            double fr = m + shift;
+            if (!walls) {
+                fr = m <= n / 2 ? m : n - m;
+                pl->eig[d][m] = (2.0 * cos(2.0 * M_PI * fr / N) - 2.0) / h2;
+            } else {
+                pl->eig[d][m] = (2.0 * cos(M_PI * fr / N) - 2.0) / h2;
+            }
+        }
+    }
+    if (pl->n > 0) {
+        pl->work = fftw_malloc(pl->n * sizeof(double));
+        int dims[3] = {pl->len[2], pl->len[1], pl->len[0]};
+        fftw_r2r_kind kf3[3] = {kf[2], kf[1], kf[0]}, kb3[3] = {kb[2], kb[1], kb[0]};
+        if (pl->work) {
+            pl->fwd = fftw_plan_r2r(3, dims, pl->work, pl->work, kf3, FFTW_ESTIMATE);
+            pl->bwd = fftw_plan_r2r(3, dims, pl->work, pl->work, kb3, FFTW_ESTIMATE);
+        }
+        if (!pl->work || !pl->fwd || !pl->bwd) {
+            gf_helmholtz_plan_destroy(&pl);
+            return GF_FAIL(ctx, GF_ERR_UNSUPPORTED, "helmholtz plan: FFTW could not plan component %d", a);
+        }
+    }
+    *out = pl;
+    return GF_OK;
+}
+
+void gf_helmholtz_plan_destroy(gf_helmholtz_plan **plan)
+{
+    if (!plan || !*plan)
+        return;
+    gf_helmholtz_plan *pl = *plan;
+    if (pl->fwd)
+        fftw_destroy_plan(pl->fwd);
+    if (pl->bwd)
+        fftw_destroy_plan(pl->bwd);
+    fftw_free(pl->work);
+    for (int d = 0; d < 3; ++d)
+        free(pl->eig[d]);
+    free(pl);
+    *plan = NULL;
+}
+
+void gf_helmholtz_solve(gf_helmholtz_plan *pl, double c, double *u)
+{
+    if (pl->n == 0)
+        return;
+    const gf_grid *g = pl->g;
+    int a = pl->a;
+    size_t q = 0;
+    for (int k = 0; k < pl->len[2]; ++k)
+        for (int j = 0; j < pl->len[1]; ++j)
+            for (int i = 0; i < pl->len[0]; ++i)
+                pl->work[q++] = u[gf_grid_face(g, a, i + pl->off[0], j + pl->off[1], k + pl->off[2])];
+    fftw_execute(pl->fwd);
+    q = 0;
+    for (int k = 0; k < pl->len[2]; ++k)
+        for (int j = 0; j < pl->len[1]; ++j)
+            for (int i = 0; i < pl->len[0]; ++i, ++q)
+                pl->work[q] /= pl->norm * (1.0 - c * (pl->eig[0][i] + pl->eig[1][j] + pl->eig[2][k]));
+    fftw_execute(pl->bwd);
+    q = 0;
+    for (int k = 0; k < pl->len[2]; ++k)
+        for (int j = 0; j < pl->len[1]; ++j)
+            for (int i = 0; i < pl->len[0]; ++i)
+                u[gf_grid_face(g, a, i + pl->off[0], j + pl->off[1], k + pl->off[2])] = pl->work[q++];
+    gf_grid_sync_periodic(g, a, u);
+}

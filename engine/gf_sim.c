@@ -1,0 +1,531 @@
+/*
+ * gf_sim: set-up, validation and the step loop (ARCHITECTURE.md; STYLE.md §7).
+ *
+ * Time step. dt = t_c dt_over_tc, never a bare number (t_c = t_contact_nd
+ * sqrt(D/g)). Stability bound: velocity Verlet on one linear spring is stable
+ * for omega dt < 2, i.e. dt < (2/pi) t_c = 0.64 t_c for the mean pair. In a
+ * dense pack the stiffest mode of the contact network is faster: a grain held
+ * by z contacts of stiffness k_n vibrates at up to ~sqrt(z/2) times the pair
+ * frequency (z ~ 6-12 gives a factor 1.7-2.4), walls (m* = m_i) are slower
+ * and the smallest grains of a 10 % polydisperse set are 1.17x faster. We
+ * refuse dt > t_c/5 (GF_ERR_NUMERIC): a factor ~3 under the pair bound that
+ * covers those network and polydispersity factors; accuracy wants t_c/50
+ * (the default) anyway. Lubrication adds an explicit damping rate
+ * c / m* = 6 pi eta R_eff^2/(eta_e m*); c dt / m* must stay below 1 (digest §4.2).
+ *
+ * Step (dry):  kick(dt/2) -> drift(dt) -> [rebuild if a grain moved > skin/2]
+ *              -> contacts (+ lubrication when immersed) -> kick(dt/2)
+ * Immersed (scene needs GF_NEED_FLUID and spec.fluid.model = "unresolved"):
+ * every M = floor(dt_fluid_max/dt) DEM steps, one fluid step with the grains
+ * frozen (gf_coupling_fluid_step), and every DEM step adds the held fluid
+ * force after the contacts (Izard 2014 §2.3.1 sub-cycling). The preparation
+ * inside a scene's build() runs dry (the coupling is created after build).
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "gf_sim_internal.h"
+#include "integrate/gf_integrate.h"
+
+#define GF_DT_MAX_OVER_TC 0.2     /* see the opening comment */
+#define GF_OVERLAP_MAX_OVER_D 0.05
+#define GF_FINITE_CHECK_EVERY 1000 /* steps between finite-value guards */
+
+gf_status gf_sim_restore(gf_sim *s, const char *path); /* gf_sim_checkpoint.c */
+
+/* ---- accessors ---- */
+gf_particles *gf_sim_particles(gf_sim *s) { return s->p; }
+const gf_run_spec *gf_sim_spec(const gf_sim *s) { return &s->spec; }
+const gf_scales *gf_sim_scales(const gf_sim *s) { return &s->scales; }
+gf_ctx *gf_sim_ctx(gf_sim *s) { return s->ctx; }
+gf_rng *gf_sim_rng(gf_sim *s) { return &s->rng; }
+const gf_timers *gf_sim_timers(const gf_sim *s) { return &s->timers; }
+double gf_sim_time_s(const gf_sim *s) { return s->t_s; }
+double gf_sim_dt_s(const gf_sim *s) { return s->dt_s; }
+double gf_sim_end_time_s(const gf_sim *s) { return s->t_end_s; }
+long gf_sim_step_count(const gf_sim *s) { return s->step; }
+
+void gf_sim_box(const gf_sim *s, double lo[3], double hi[3], int periodic[3])
+{
+    for (int a = 0; a < 3; ++a) {
+        if (lo)
+            lo[a] = s->lo_m[a];
+        if (hi)
+            hi[a] = s->hi_m[a];
+        if (periodic)
+            periodic[a] = s->periodic[a];
+    }
+}
+
+void gf_sim_contact_stats(const gf_sim *s, size_t *n_contacts, double *max_overlap_over_D)
+{
+    if (n_contacts)
+        *n_contacts = s->n_contacts;
+    if (max_overlap_over_D)
+        *max_overlap_over_D = s->max_overlap_m / s->spec.grains.diameter_m;
+}
+
+void gf_sim_wall_force(const gf_sim *s, int w, double f[3])
+{
+    for (int c = 0; c < 3; ++c)
+        f[c] = (w >= 0 && w < s->n_walls) ? s->walls[w].force_N[c] : 0.0;
+}
+
+/* ---- builder calls ---- */
+gf_status gf_sim_set_box(gf_sim *s, const double lo[3], const double hi[3], const int periodic[3])
+{
+    for (int a = 0; a < 3; ++a) {
+        if (!(hi[a] > lo[a]) || !isfinite(lo[a]) || !isfinite(hi[a]))
+            return GF_FAIL(s->ctx, GF_ERR_CONFIG, "scene %s: box axis %d: need lo < hi (got %g, %g m)",
+                           s->spec.scene, a, lo[a], hi[a]);
+        s->lo_m[a] = lo[a], s->hi_m[a] = hi[a], s->periodic[a] = periodic ? periodic[a] != 0 : 0;
+    }
+    s->box_set = 1;
+    s->need_build = 1;
+    return GF_OK;
+}
+
+gf_status gf_sim_set_gravity(gf_sim *s, const double g[3])
+{
+    for (int a = 0; a < 3; ++a) {
+        if (!isfinite(g[a]))
+            return GF_FAIL(s->ctx, GF_ERR_CONFIG, "scene %s: gravity must be finite", s->spec.scene);
+        s->gravity_m_s2[a] = g[a];
+    }
+    return GF_OK;
+}
+
+gf_status gf_sim_add_wall(gf_sim *s, const double point[3], const double normal[3], double friction, int *wall_id)
+{
+    if (s->n_walls >= GF_SIM_MAX_WALLS)
+        return GF_FAIL(s->ctx, GF_ERR_CAPACITY, "scene %s: more than %d walls", s->spec.scene, GF_SIM_MAX_WALLS);
+    double len = sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+    if (!(len > 0.0) || !isfinite(len))
+        return GF_FAIL(s->ctx, GF_ERR_CONFIG, "scene %s: wall normal must be a non-zero vector", s->spec.scene);
+    if (!(friction >= 0.0))
+        return GF_FAIL(s->ctx, GF_ERR_CONFIG, "scene %s: wall friction must be >= 0 (got %g)", s->spec.scene,
+                       friction);
+    gf_wall *w = &s->walls[s->n_walls];
+    memset(w, 0, sizeof *w);
+    for (int a = 0; a < 3; ++a)
+        w->point_m[a] = point[a], w->normal[a] = normal[a] / len;
+    w->friction = friction;
+    w->active = 1;
+    if (wall_id)
+        *wall_id = s->n_walls;
+    s->n_walls++;
+    GF_TRY(gf_sim_relayout_walls(s, s->n_walls - 1));
+    s->forces_valid = 0;
+    return GF_OK;
+}
+
+gf_status gf_sim_set_wall_active(gf_sim *s, int w, int active)
+{
+    if (w < 0 || w >= s->n_walls)
+        return GF_FAIL(s->ctx, GF_ERR_ARG, "scene %s: no wall %d (have %d)", s->spec.scene, w, s->n_walls);
+    s->walls[w].active = active != 0;
+    s->forces_valid = 0;
+    return GF_OK;
+}
+
+gf_status gf_sim_set_end_time(gf_sim *s, double t_end_s)
+{
+    if (!(t_end_s > 0.0) || !isfinite(t_end_s))
+        return GF_FAIL(s->ctx, GF_ERR_CONFIG, "scene %s: end time must be > 0 (got %g s)", s->spec.scene, t_end_s);
+    s->t_end_s = t_end_s;
+    return GF_OK;
+}
+
+gf_status gf_sim_add_gauge(gf_sim *s, const char *name, const double x[3])
+{
+    if (s->n_gauges >= GF_SIM_MAX_GAUGES)
+        return GF_FAIL(s->ctx, GF_ERR_CAPACITY, "scene %s: more than %d gauges", s->spec.scene, GF_SIM_MAX_GAUGES);
+    if (!name || strlen(name) >= GF_NAME_LEN)
+        return GF_FAIL(s->ctx, GF_ERR_ARG, "scene %s: gauge name missing or too long", s->spec.scene);
+    gf_gauge *g = &s->gauges[s->n_gauges++];
+    snprintf(g->name, sizeof g->name, "%s", name);
+    memcpy(g->x_m, x, sizeof g->x_m);
+    return GF_OK;
+}
+
+gf_status gf_sim_set_fluid_bc(gf_sim *s, int axis, int side, int bc)
+{
+    if (axis < 0 || axis > 2 || side < 0 || side > 1 || bc < GF_BC_PERIODIC || bc > GF_BC_FREE_SLIP)
+        return GF_FAIL(s->ctx, GF_ERR_ARG, "scene %s: bad fluid boundary (axis %d, side %d, bc %d)", s->spec.scene,
+                       axis, side, bc);
+    s->fluid_bc[axis][side] = bc;
+    s->fluid_bc_set[axis][side] = 1;
+    return GF_OK;
+}
+
+void gf_sim_reset_clock(gf_sim *s)
+{
+    s->t_s = 0.0;
+    s->step = 0;
+}
+
+/* ---- validation ---- */
+gf_status gf_sim_check_state(gf_sim *s)
+{
+    gf_particles *p = s->p;
+    const double D = s->spec.grains.diameter_m;
+    for (size_t i = 0; i < p->n_local; ++i) {
+        if (!(p->radius_m[i] > 0.0) || !isfinite(p->radius_m[i]))
+            return GF_FAIL(s->ctx, GF_ERR_PHYSICS, "scene %s: grain %lld has radius %g m (must be > 0)",
+                           s->spec.scene, (long long)p->id[i], p->radius_m[i]);
+        double c[3] = {p->x_m[i], p->y_m[i], p->z_m[i]};
+        for (int a = 0; a < 3; ++a)
+            if (!s->periodic[a] && (c[a] < s->lo_m[a] - D || c[a] > s->hi_m[a] + D))
+                return GF_FAIL(s->ctx, GF_ERR_PHYSICS,
+                               "scene %s: grain %lld at (%g, %g, %g) m lies outside the box along axis %d", s->spec.scene,
+                               (long long)p->id[i], c[0], c[1], c[2], a);
+    }
+    GF_TRY(gf_particles_check_finite(s->ctx, p));
+    if (p->n_local == 0)
+        return GF_OK;
+    GF_TRY(gf_sim_rebuild(s));
+    const gf_nlist *nl = s->nl;
+    for (size_t i = 0; i < p->n_local; ++i)
+        for (size_t k = nl->row_start[i]; k < nl->row_start[i + 1]; ++k) {
+            size_t j = (size_t)nl->j[k];
+            const double *sh = nl->shift_m[nl->image[k]];
+            double d[3] = {p->x_m[i] - p->x_m[j] + sh[0], p->y_m[i] - p->y_m[j] + sh[1], p->z_m[i] - p->z_m[j] + sh[2]};
+            double ov = p->radius_m[i] + p->radius_m[j] - sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+            if (ov > GF_OVERLAP_MAX_OVER_D * D && !((p->flags[i] & GF_P_GLUED) && (p->flags[j] & GF_P_GLUED)))
+                return GF_FAIL(s->ctx, GF_ERR_PHYSICS,
+                               "scene %s: grains %lld and %lld overlap by %.3g D (limit %.2g D): impossible initial "
+                               "state",
+                               s->spec.scene, (long long)p->id[i], (long long)p->id[j], ov / D, GF_OVERLAP_MAX_OVER_D);
+        }
+    for (int w = 0; w < s->n_walls; ++w) {
+        if (!s->walls[w].active)
+            continue;
+        const double *n = s->walls[w].normal, *q = s->walls[w].point_m;
+        for (size_t i = 0; i < p->n_local; ++i) {
+            double ov = p->radius_m[i] - ((p->x_m[i] - q[0]) * n[0] + (p->y_m[i] - q[1]) * n[1] + (p->z_m[i] - q[2]) * n[2]);
+            if (ov > GF_OVERLAP_MAX_OVER_D * D && !(p->flags[i] & GF_P_GLUED))
+                return GF_FAIL(s->ctx, GF_ERR_PHYSICS,
+                               "scene %s: grain %lld overlaps wall %d by %.3g D (limit %.2g D): impossible initial state",
+                               s->spec.scene, (long long)p->id[i], w, ov / D, GF_OVERLAP_MAX_OVER_D);
+        }
+    }
+    return GF_OK;
+}
+
+static gf_status check_time_step(gf_sim *s)
+{
+    const gf_contact_spec *c = &s->spec.contact;
+    if (!(c->dt_over_tc > 0.0) || !isfinite(c->dt_over_tc))
+        return GF_FAIL(s->ctx, GF_ERR_CONFIG, "contact.dt_over_tc: must be > 0 (got %g)", c->dt_over_tc);
+    if (c->dt_over_tc > GF_DT_MAX_OVER_TC)
+        return GF_FAIL(s->ctx, GF_ERR_NUMERIC,
+                       "contact.dt_over_tc = %g: dt = %g s exceeds the stability limit t_c/5 = %g s "
+                       "(velocity Verlet on the contact network; use <= 0.2, 0.02 recommended)",
+                       c->dt_over_tc, s->dt_s, s->cp.t_contact_s * GF_DT_MAX_OVER_TC);
+    if (s->lubrication) {
+        double R = 0.5 * s->spec.grains.diameter_m;
+        double m_eff = s->cp.m_eff_mean_kg;
+        double rate = 6.0 * M_PI * s->lub_eta_Pa_s * (0.25 * R * R) / s->lub_roughness_m / m_eff;
+        if (rate * s->dt_s > 1.0)
+            return GF_FAIL(s->ctx, GF_ERR_NUMERIC,
+                           "lubrication damping c dt/m* = %g > 1 (eta_f %g Pa s, roughness %g m): explicit "
+                           "lubrication unstable; raise fluid.roughness_over_R or lower contact.dt_over_tc",
+                           rate * s->dt_s, s->lub_eta_Pa_s, s->lub_roughness_m);
+    }
+    return GF_OK;
+}
+
+static gf_status compute_scales(gf_sim *s)
+{
+    const gf_run_spec *sp = &s->spec;
+    double incline = gf_run_spec_param(sp, "incline_deg", 90.0);
+    gf_groups_input in = {.diameter_m = sp->grains.diameter_m,
+                          .grain_density_kg_m3 = sp->grains.density_kg_m3,
+                          .fluid_density_kg_m3 = s->immersed ? sp->fluid.density_kg_m3 : 0.0,
+                          .viscosity_Pa_s = s->immersed ? sp->fluid.viscosity_Pa_s : 0.0,
+                          .gravity_m_s2 = sp->gravity_m_s2,
+                          .slope_sin = sin(incline * M_PI / 180.0),
+                          .column_height_m = gf_run_spec_param(sp, "column_height_m", 0.0),
+                          .column_length_m = gf_run_spec_param(sp, "column_length_m", 0.0)};
+    return gf_groups_compute(s->ctx, &in, &s->scales);
+}
+
+static gf_status setup_fluid(gf_sim *s)
+{
+    const gf_fluid_spec *f = &s->spec.fluid;
+    s->immersed = 0;
+    if (!(s->scene->needs & GF_NEED_FLUID) || strcmp(f->model, "none") == 0)
+        return GF_OK;
+    if (strcmp(f->model, "unresolved") != 0)
+        return GF_FAIL(s->ctx, GF_ERR_UNSUPPORTED,
+                       "fluid.model '%s': the engine runs 'none' or 'unresolved' ('auto' is resolved by the pipeline)",
+                       f->model);
+    if (!(f->viscosity_Pa_s > 0.0) || !(f->density_kg_m3 > 0.0))
+        return GF_FAIL(s->ctx, GF_ERR_CONFIG, "fluid: density and viscosity must be > 0 when immersed (got %g, %g)",
+                       f->density_kg_m3, f->viscosity_Pa_s);
+    s->immersed = 1;
+    double R = 0.5 * s->spec.grains.diameter_m;
+    s->lubrication = f->lubrication != 0;
+    if (s->lubrication) {
+        if (!(f->roughness_over_R > 0.0) || !(f->lub_cutoff_over_R >= 0.0))
+            return GF_FAIL(s->ctx, GF_ERR_CONFIG,
+                           "fluid: roughness_over_R must be > 0 and lub_cutoff_over_R >= 0 (got %g, %g)",
+                           f->roughness_over_R, f->lub_cutoff_over_R);
+        s->lub_eta_Pa_s = f->viscosity_Pa_s;
+        s->lub_roughness_m = f->roughness_over_R * R;
+        s->lub_cutoff_m = f->lub_cutoff_over_R * R;
+        s->extra_m = s->lub_cutoff_m; /* the neighbour reach covers the lubrication range */
+    }
+    return GF_OK;
+}
+
+static gf_status create_coupling(gf_sim *s)
+{
+    gf_coupling_setup setup;
+    memset(&setup, 0, sizeof setup);
+    for (int a = 0; a < 3; ++a) {
+        setup.lo_m[a] = s->lo_m[a], setup.hi_m[a] = s->hi_m[a];
+        setup.gravity_m_s2[a] = s->gravity_m_s2[a];
+        for (int side = 0; side < 2; ++side)
+            setup.bc[a][side] = s->fluid_bc_set[a][side] ? (gf_fluid_bc)s->fluid_bc[a][side]
+                                : s->periodic[a]           ? GF_BC_PERIODIC
+                                                           : GF_BC_NO_SLIP;
+    }
+    GF_TRY(gf_coupling_create(s->ctx, &s->spec, &setup, &s->coupling));
+    double dt_f = gf_coupling_dt_max_s(s->coupling, s->p);
+    double m = floor(dt_f / s->dt_s);
+    s->n_substeps = m < 1.0 ? 1 : (m > 1e6 ? 1000000 : (int)m);
+    return GF_OK;
+}
+
+static int pick_threads(const gf_sim_options *opt)
+{
+    int n = opt && opt->n_threads > 0 ? opt->n_threads : 1;
+#ifdef _OPENMP
+    if (!(opt && opt->n_threads > 0))
+        n = omp_get_max_threads();
+#else
+    n = 1;
+#endif
+    return n > GF_SIM_MAX_THREADS ? GF_SIM_MAX_THREADS : n;
+}
+
+static gf_status create_inner(gf_sim *s, const gf_run_spec *spec, const gf_sim_options *opt)
+{
+    s->spec = *spec;
+    if (opt)
+        s->opt = *opt;
+    s->scene = gf_scene_find(spec->scene);
+    if (!s->scene)
+        return GF_FAIL(s->ctx, GF_ERR_CONFIG, "scene: unknown scene '%s'", spec->scene);
+    GF_TRY(gf_scene_resolve_params(s->ctx, &s->spec));
+    GF_TRY(gf_contact_params_from_spec(s->ctx, &s->spec, &s->cp));
+    s->law = gf_contact_find(s->spec.contact.law);
+    s->dt_s = gf_run_spec_dt_s(&s->spec);
+    GF_TRY(setup_fluid(s));
+    GF_TRY(check_time_step(s));
+    GF_TRY(compute_scales(s));
+    if (!(s->spec.contact.skin_over_D > 0.0))
+        return GF_FAIL(s->ctx, GF_ERR_CONFIG, "contact.skin_over_D: must be > 0 (got %g)", s->spec.contact.skin_over_D);
+    s->skin_m = s->spec.contact.skin_over_D * s->spec.grains.diameter_m;
+    s->n_threads = pick_threads(opt);
+    s->gravity_m_s2[1] = -s->spec.gravity_m_s2; /* y is vertical (docs/output.md) unless the scene says */
+    gf_rng_seed(&s->rng, s->spec.seed);
+    GF_TRY(gf_particles_create(s->ctx, 1024, &s->p));
+    GF_TRY(gf_nlist_create(s->ctx, &s->nl));
+    s->in_build = 1;
+    GF_TRY(s->scene->build(s, &s->spec));
+    s->in_build = 0;
+    if (!s->box_set)
+        return GF_FAIL(s->ctx, GF_ERR_CONFIG, "scene %s: build() set no box", s->spec.scene);
+    double t_grain = s->scales.t_grain_s;
+    if (s->spec.end_time_nd > 0.0)
+        s->t_end_s = s->spec.end_time_nd * t_grain;
+    else if (!(s->t_end_s > 0.0))
+        s->t_end_s = s->scene->default_end_time_nd * t_grain;
+    GF_TRY(gf_sim_check_state(s));
+    if (s->opt.restart_path) {
+        GF_TRY(gf_sim_restore(s, s->opt.restart_path));
+    } else {
+        if (s->scene->start)
+            GF_TRY(s->scene->start(s));
+        GF_TRY(gf_sim_rebuild(s));
+        GF_TRY(gf_sim_compute_forces(s));
+    }
+    if (s->immersed)
+        GF_TRY(create_coupling(s));
+    return GF_OK;
+}
+
+gf_status gf_sim_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_sim_options *opt, gf_sim **out)
+{
+    *out = NULL;
+    if (!spec)
+        return GF_FAIL(ctx, GF_ERR_ARG, "gf_sim_create: spec is NULL");
+    gf_sim *s = calloc(1, sizeof *s);
+    if (!s)
+        return GF_FAIL(ctx, GF_ERR_NOMEM, "gf_sim_create: cannot allocate");
+    s->ctx = ctx;
+    gf_status st = create_inner(s, spec, opt);
+    if (st != GF_OK) {
+        gf_sim_destroy(&s);
+        return st;
+    }
+    *out = s;
+    return GF_OK;
+}
+
+void gf_sim_destroy(gf_sim **ps)
+{
+    if (!ps || !*ps)
+        return;
+    gf_sim *s = *ps;
+    gf_coupling_destroy(&s->coupling);
+    gf_particles_destroy(&s->p);
+    gf_nlist_destroy(&s->nl);
+    free(s->x_ref), free(s->y_ref), free(s->z_ref), free(s->wall_hist);
+    free(s->vx_pred), free(s->vy_pred), free(s->vz_pred);
+    free(s->inv_mass), free(s->inv_inertia), free(s->mobile), free(s->contact_inv_mass);
+    free(s->pair_meff), free(s->pair_sqrt_mk);
+    for (int t = 0; t < GF_SIM_MAX_THREADS; ++t)
+        for (int c = 0; c < 6; ++c)
+            free(s->acc[t].f[c]);
+    free(s);
+    *ps = NULL;
+}
+
+/* ---- the step ---- */
+static void kick(gf_sim *s, double h)
+{
+    gf_particles *p = s->p;
+    long n = (long)p->n_local;
+    int nt = s->n_threads;
+#ifdef _OPENMP
+#pragma omp parallel num_threads(nt) if (nt > 1 && n >= GF_SIM_PARALLEL_MIN_GRAINS)
+#endif
+    {
+#ifdef _OPENMP
+        int t = omp_get_thread_num(), m = omp_get_num_threads();
+#else
+        int t = 0, m = 1;
+#endif
+        size_t i0 = (size_t)(n * (long)t / m), i1 = (size_t)(n * (long)(t + 1) / m);
+        gf_integrate_factors k = {s->inv_mass, s->inv_inertia, s->mobile};
+        gf_integrate_kick(p, i0, i1, h, s->gravity_m_s2, &k);
+    }
+}
+
+static double drift(gf_sim *s)
+{
+    gf_particles *p = s->p;
+    long n = (long)p->n_local;
+    int nt = s->n_threads;
+    double d2[GF_SIM_MAX_THREADS] = {0.0};
+    int used = 1;
+#ifdef _OPENMP
+#pragma omp parallel num_threads(nt) if (nt > 1 && n >= GF_SIM_PARALLEL_MIN_GRAINS)
+#endif
+    {
+#ifdef _OPENMP
+        int t = omp_get_thread_num(), m = omp_get_num_threads();
+#else
+        int t = 0, m = 1;
+#endif
+        if (t == 0)
+            used = m;
+        size_t i0 = (size_t)(n * (long)t / m), i1 = (size_t)(n * (long)(t + 1) / m);
+        double *ref[3] = {s->x_ref, s->y_ref, s->z_ref}, *vp[3] = {s->vx_pred, s->vy_pred, s->vz_pred};
+        gf_integrate_factors k = {s->inv_mass, s->inv_inertia, s->mobile};
+        d2[t] = gf_integrate_drift(p, i0, i1, s->dt_s, s->gravity_m_s2, ref, vp, &k);
+    }
+    double mx = 0.0;
+    for (int t = 0; t < used; ++t)
+        mx = d2[t] > mx ? d2[t] : mx;
+    return mx;
+}
+
+static gf_status dem_step(gf_sim *s)
+{
+    const double h = 0.5 * s->dt_s;
+    gf_timer_start(&s->timers, GF_T_INTEGRATE);
+    kick(s, h);
+    double d2 = drift(s);
+    s->vp_valid = 1;
+    gf_timer_stop(&s->timers, GF_T_INTEGRATE);
+    if (d2 > 0.25 * s->skin_m * s->skin_m || s->need_build) { /* a grain moved more than skin/2 */
+        gf_timer_start(&s->timers, GF_T_NEIGHBOUR);
+        gf_status st = gf_sim_rebuild(s);
+        gf_timer_stop(&s->timers, GF_T_NEIGHBOUR);
+        GF_TRY(st);
+    }
+    gf_timer_start(&s->timers, GF_T_FORCE);
+    gf_status st = gf_sim_compute_forces(s);
+    gf_timer_stop(&s->timers, GF_T_FORCE);
+    GF_TRY(st);
+    if (s->coupling) {
+        gf_timer_start(&s->timers, GF_T_COUPLING);
+        st = gf_coupling_add_forces(s->coupling, s->p);
+        gf_timer_stop(&s->timers, GF_T_COUPLING);
+        if (st != GF_OK) {
+            char what[sizeof s->ctx->last_msg];
+            snprintf(what, sizeof what, "%s", s->ctx->last_code == st ? s->ctx->last_msg : gf_status_str(st));
+            return GF_FAIL(s->ctx, st, "coupling: adding fluid forces failed at t = %g s: %s", s->t_s, what);
+        }
+    }
+    gf_timer_start(&s->timers, GF_T_INTEGRATE);
+    kick(s, h);
+    gf_timer_stop(&s->timers, GF_T_INTEGRATE);
+    s->step++;
+    s->t_s += s->dt_s;
+    return GF_OK;
+}
+
+static gf_status fluid_step(gf_sim *s)
+{
+    gf_timer_start(&s->timers, GF_T_FLUID);
+    gf_status st = gf_coupling_fluid_step(s->coupling, s->p, s->dt_s * s->n_substeps);
+    gf_timer_stop(&s->timers, GF_T_FLUID);
+    if (st != GF_OK) {
+        char what[sizeof s->ctx->last_msg];
+        snprintf(what, sizeof what, "%s", s->ctx->last_code == st ? s->ctx->last_msg : gf_status_str(st));
+        return GF_FAIL(s->ctx, st, "coupling: fluid step failed at t = %g s: %s", s->t_s, what);
+    }
+    return GF_OK;
+}
+
+gf_status gf_sim_advance(gf_sim *s, long n_steps)
+{
+    gf_particles *p = s->p;
+    if (s->in_build || !s->forces_valid || s->nl->n != p->n_local) {
+        /* grains were added or moved by a builder: fresh list and F(t) */
+        GF_TRY(gf_sim_rebuild(s));
+        GF_TRY(gf_sim_compute_forces(s));
+    }
+    gf_timer_start(&s->timers, GF_T_TOTAL);
+    gf_status st = GF_OK;
+    for (long k = 0; k < n_steps && st == GF_OK; ++k) {
+        if (s->opt.interrupt && *s->opt.interrupt) {
+            st = GF_FAIL(s->ctx, GF_ERR_INTERRUPTED, "run interrupted at t = %g s (step %ld)", s->t_s, s->step);
+            break;
+        }
+        if (s->coupling && s->step % s->n_substeps == 0)
+            st = fluid_step(s);
+        if (st == GF_OK)
+            st = dem_step(s);
+        if (st == GF_OK && s->step % GF_FINITE_CHECK_EVERY == 0 && gf_particles_check_finite(s->ctx, p) != GF_OK) {
+            char what[sizeof s->ctx->last_msg];
+            snprintf(what, sizeof what, "%s", s->ctx->last_msg);
+            st = GF_FAIL(s->ctx, GF_ERR_NUMERIC,
+                         "%s at t = %g s (step %ld): the run is unstable (dt too large for the contact stiffness or "
+                         "the fluid coupling?)",
+                         what, s->t_s, s->step);
+        }
+    }
+    gf_timer_stop(&s->timers, GF_T_TOTAL);
+    return st;
+}

@@ -1,0 +1,391 @@
+/*
+ * Force evaluation of the step loop: grain-grain contacts and Brenner
+ * lubrication over the Verlet half list, grain-wall contacts and lubrication,
+ * and the neighbour-list rebuild.
+ *
+ * Geometry (Izard 2014 §2.1.1; digest §1.2-1.5): n = (x_i - x_j)/|x_i - x_j|
+ * points from j to i, overlap delta = R_i + R_j - |x_i - x_j| > 0 in contact,
+ * relative surface velocity at the contact point
+ *     u_rel = u_i - u_j - (R_i w_i + R_j w_j) x n     (Djouwe 2012 §1.1),
+ * effective mass m* = 1/(1/m_i + 1/m_j) with 1/m = 0 for glued grains and
+ * walls (infinite mass; a wall is also an infinite radius: m* = m_i, torque
+ * arm R_i). Force on i: F_n n + F_t; on j its opposite. Torques
+ * r_c x F_t: -R_i n x F_t on i and -R_j n x F_t on j (both arms point to the
+ * contact point, the force on j is -F_t).
+ *
+ * Lubrication (Brenner 1961 with effective roughness eta_e; Izard 2014 (2.36),
+ * (3.18); digest §4.2), normal only, on i:
+ *     F = -6 pi eta_f ((u_i - u_j).n) / (gap + eta_e) (R_i R_j/(R_i+R_j))^2 n
+ * active for gap <= cutoff (lub_cutoff_over_R x mean R), gap clamped at 0
+ * during overlap (constant damping 6 pi eta R_eff^2/eta_e, the choice of the
+ * §3 rebound model, digest §4.2 [I]); wall: R_eff^2 -> R_i^2.
+ *
+ * OpenMP: a half list races on j, so the rows are cut into one pair-balanced
+ * chunk per configured thread and each chunk accumulates into its own
+ * force/torque arrays (chunk 0 directly into the particle store); the buffers
+ * are then summed in chunk order (per-thread accumulators, not a full list:
+ * a full list would compute every contact twice). Each pair's history belongs
+ * to its row's chunk. With a fixed thread count the result is bitwise
+ * reproducible (restart identity relies on it).
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "contact/gf_contact_kernels.h"
+#include "gf_sim_internal.h"
+#include "integrate/gf_integrate.h"
+
+gf_status gf_sim_reserve(gf_sim *s, size_t n)
+{
+    if (n <= s->ref_cap)
+        return GF_OK;
+    size_t cap = n + n / 4 + 16, stride = (size_t)s->n_walls + 1;
+    double **arr[10] = {&s->x_ref, &s->y_ref, &s->z_ref, &s->vx_pred, &s->vy_pred, &s->vz_pred,
+                        &s->inv_mass, &s->inv_inertia, &s->mobile, &s->contact_inv_mass};
+    for (int a = 0; a < 10; ++a) {
+        double *q = realloc(*arr[a], cap * sizeof(double));
+        if (!q)
+            return GF_FAIL(s->ctx, GF_ERR_NOMEM, "sim: cannot allocate per-grain arrays for %zu grains", n);
+        *arr[a] = q;
+    }
+    double *h = realloc(s->wall_hist, cap * stride * 3 * sizeof(double));
+    if (!h)
+        return GF_FAIL(s->ctx, GF_ERR_NOMEM, "sim: cannot allocate wall history for %zu grains", n);
+    /* new grains start without wall history */
+    memset(h + s->ref_cap * stride * 3, 0, (cap - s->ref_cap) * stride * 3 * sizeof(double));
+    s->wall_hist = h;
+    s->ref_cap = s->wall_hist_cap = cap;
+    return GF_OK;
+}
+
+gf_status gf_sim_relayout_walls(gf_sim *s, int n_walls_old)
+{
+    size_t cap = s->ref_cap, so = (size_t)n_walls_old + 1, sn = (size_t)s->n_walls + 1;
+    if (cap == 0)
+        return GF_OK;
+    double *h = calloc(cap * sn * 3, sizeof(double));
+    if (!h)
+        return GF_FAIL(s->ctx, GF_ERR_NOMEM, "sim: cannot allocate wall history");
+    for (size_t i = 0; i < cap; ++i)
+        memcpy(&h[3 * i * sn], &s->wall_hist[3 * i * so], 3 * (size_t)n_walls_old * sizeof(double));
+    free(s->wall_hist);
+    s->wall_hist = h;
+    return GF_OK;
+}
+
+static gf_nlist_geom list_geom(const gf_sim *s)
+{
+    gf_nlist_geom g;
+    for (int a = 0; a < 3; ++a) {
+        g.lo_m[a] = s->lo_m[a];
+        g.hi_m[a] = s->hi_m[a];
+        g.periodic[a] = s->periodic[a];
+    }
+    g.extra_m = s->extra_m;
+    g.skin_m = s->skin_m;
+    return g;
+}
+
+gf_status gf_sim_rebuild_from_ref(gf_sim *s)
+{
+    gf_particles *p = s->p;
+    gf_nlist_geom g = list_geom(s);
+    GF_TRY(gf_sim_reserve(s, p->n_local));
+    GF_TRY(gf_nlist_build(s->ctx, s->nl, &g, p->n_local, s->x_ref, s->y_ref, s->z_ref, p->radius_m, p->id,
+                          s->n_threads));
+    /* flags (glued, sleeping) and masses are read here, at every build */
+    gf_integrate_factors_fill(p, p->n_local, s->inv_mass, s->inv_inertia, s->mobile);
+    for (size_t i = 0; i < p->n_local; ++i)
+        s->contact_inv_mass[i] = (p->flags[i] & GF_P_GLUED) ? 0.0 : 1.0 / p->mass_kg[i];
+    /* per-pair effective mass and damping scale sqrt(m* k_n): constant between
+     * builds, so the contact loop does no division or root for them */
+    const gf_nlist *nl = s->nl;
+    if (nl->n_pairs > s->pair_cap) {
+        size_t cap = nl->n_pairs + nl->n_pairs / 4 + 64;
+        double *a = realloc(s->pair_meff, cap * sizeof(double));
+        if (a)
+            s->pair_meff = a;
+        double *b = a ? realloc(s->pair_sqrt_mk, cap * sizeof(double)) : NULL;
+        if (!b)
+            return GF_FAIL(s->ctx, GF_ERR_NOMEM, "sim: cannot allocate pair arrays (%zu pairs)", cap);
+        s->pair_sqrt_mk = b;
+        s->pair_cap = cap;
+    }
+    for (size_t i = 0; i < nl->n; ++i)
+        for (size_t k = nl->row_start[i]; k < nl->row_start[i + 1]; ++k) {
+            double inv = s->contact_inv_mass[i] + s->contact_inv_mass[nl->j[k]];
+            double m = inv > 0.0 ? 1.0 / inv : 0.0; /* two glued grains never interact */
+            s->pair_meff[k] = m;
+            s->pair_sqrt_mk[k] = sqrt(m * s->cp.k_n_N_m);
+        }
+    s->need_build = 0;
+    return GF_OK;
+}
+
+gf_status gf_sim_rebuild(gf_sim *s)
+{
+    gf_particles *p = s->p;
+    GF_TRY(gf_sim_reserve(s, p->n_local));
+    gf_nlist_geom g = list_geom(s);
+    gf_nlist_wrap(&g, p->n_local, p->x_m, p->y_m, p->z_m);
+    memcpy(s->x_ref, p->x_m, p->n_local * sizeof(double));
+    memcpy(s->y_ref, p->y_m, p->n_local * sizeof(double));
+    memcpy(s->z_ref, p->z_m, p->n_local * sizeof(double));
+    return gf_sim_rebuild_from_ref(s);
+}
+
+static inline void cross(const double a[3], const double b[3], double c[3])
+{
+    c[0] = a[1] * b[2] - a[2] * b[1];
+    c[1] = a[2] * b[0] - a[0] * b[2];
+    c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* Grain-grain pairs of rows [i0, i1) into the accumulators f[0..5] (fx..tz).
+ * Specialised on the law: linear (the seeds' law, inlined) or any table row. */
+static inline __attribute__((always_inline)) void pair_rows_impl(gf_sim *s, size_t i0, size_t i1,
+                                                                 double *const f[6], gf_sim_accum *acc,
+                                                                 const int linear)
+{
+    const gf_particles *p = s->p;
+    const gf_nlist *nl = s->nl;
+    const double *x = p->x_m, *y = p->y_m, *z = p->z_m, *R = p->radius_m;
+    double *restrict fx = f[0], *restrict fy = f[1], *restrict fz = f[2];
+    double *restrict tx = f[3], *restrict ty = f[4], *restrict tz = f[5];
+    const double *restrict pair_meff = s->pair_meff, *restrict pair_sqrt_mk = s->pair_sqrt_mk;
+    uint8_t *restrict touching = nl->touching;
+    double *restrict hist = nl->hist;
+    const double lub_cut = s->lubrication ? s->lub_cutoff_m : 0.0;
+    const double dt = s->dt_s, mu = s->cp.mu_grain;
+    const double *vpx = s->vx_pred, *vpy = s->vy_pred, *vpz = s->vz_pred;
+    gf_contact_kernel *kernel = s->law->kernel;
+    for (size_t i = i0; i < i1; ++i) {
+        const double xi = x[i], yi = y[i], zi = z[i], ri = R[i];
+        const int glued_i = p->flags[i] & GF_P_GLUED;
+        double fxi = 0.0, fyi = 0.0, fzi = 0.0, txi = 0.0, tyi = 0.0, tzi = 0.0; /* row sums, stored once */
+        for (size_t k = nl->row_start[i]; k < nl->row_start[i + 1]; ++k) {
+            const size_t j = (size_t)nl->j[k];
+            const double *sh = nl->shift_m[nl->image[k]];
+            double d[3] = {xi - x[j] + sh[0], yi - y[j] + sh[1], zi - z[j] + sh[2]};
+            double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            double rsum = ri + R[j], reach = rsum + lub_cut;
+            double *h = &hist[3 * k];
+            if (r2 >= reach * reach || (glued_i && (p->flags[j] & GF_P_GLUED))) {
+                if (touching[k]) { /* the pair separated: forget its history */
+                    h[0] = h[1] = h[2] = 0.0;
+                    touching[k] = 0;
+                }
+                continue;
+            }
+            double r = sqrt(r2), inv_r = 1.0 / r;
+            gf_contact_geom g;
+            g.n[0] = d[0] * inv_r, g.n[1] = d[1] * inv_r, g.n[2] = d[2] * inv_r;
+            g.overlap_m = rsum - r;
+            double F[3] = {0.0, 0.0, 0.0};
+            double vp[3] = {vpx[i] - vpx[j], vpy[i] - vpy[j], vpz[i] - vpz[j]};
+            g.v_n_m_s = vp[0] * g.n[0] + vp[1] * g.n[1] + vp[2] * g.n[2];
+            if (g.overlap_m > 0.0) {
+                double vt[3] = {p->vx_m_s[i] - p->vx_m_s[j], p->vy_m_s[i] - p->vy_m_s[j], p->vz_m_s[i] - p->vz_m_s[j]};
+                double rw[3] = {ri * p->wx_rad_s[i] + R[j] * p->wx_rad_s[j], ri * p->wy_rad_s[i] + R[j] * p->wy_rad_s[j],
+                                ri * p->wz_rad_s[i] + R[j] * p->wz_rad_s[j]};
+                double rwn[3];
+                cross(rw, g.n, rwn);
+                g.v_rel_m_s[0] = vt[0] - rwn[0], g.v_rel_m_s[1] = vt[1] - rwn[1], g.v_rel_m_s[2] = vt[2] - rwn[2];
+                /* glued grains: infinite mass, 1/m = 0 (contact_inv_mass) */
+                g.m_eff_kg = pair_meff[k];
+                g.sqrt_mk = pair_sqrt_mk[k];
+                touching[k] = 1;
+                g.mu = mu;
+                double f_n, f_t[3];
+                if (linear)
+                    gf_contact_linear_inline(&s->cp, &g, dt, h, &f_n, f_t);
+                else
+                    kernel(&s->cp, &g, dt, h, &f_n, f_t);
+                F[0] = f_n * g.n[0] + f_t[0], F[1] = f_n * g.n[1] + f_t[1], F[2] = f_n * g.n[2] + f_t[2];
+                double nxt[3];
+                cross(g.n, f_t, nxt);
+                txi -= ri * nxt[0], tyi -= ri * nxt[1], tzi -= ri * nxt[2];
+                tx[j] -= R[j] * nxt[0], ty[j] -= R[j] * nxt[1], tz[j] -= R[j] * nxt[2];
+                acc->n_contacts++;
+                if (g.overlap_m > acc->max_overlap_m)
+                    acc->max_overlap_m = g.overlap_m;
+            } else if (touching[k]) {
+                h[0] = h[1] = h[2] = 0.0;
+                touching[k] = 0;
+            }
+            if (lub_cut > 0.0) {
+                double gap = g.overlap_m > 0.0 ? 0.0 : -g.overlap_m;
+                if (gap <= lub_cut) {
+                    double reff = ri * R[j] / rsum;
+                    double c = -6.0 * M_PI * s->lub_eta_Pa_s * g.v_n_m_s / (gap + s->lub_roughness_m) * reff * reff;
+                    F[0] += c * g.n[0], F[1] += c * g.n[1], F[2] += c * g.n[2];
+                }
+            }
+            fxi += F[0], fyi += F[1], fzi += F[2];
+            fx[j] -= F[0], fy[j] -= F[1], fz[j] -= F[2];
+        }
+        fx[i] += fxi, fy[i] += fyi, fz[i] += fzi;
+        tx[i] += txi, ty[i] += tyi, tz[i] += tzi;
+    }
+}
+
+static void pair_rows_linear(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_sim_accum *acc)
+{
+    pair_rows_impl(s, i0, i1, f, acc, 1);
+}
+
+static void pair_rows_table(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_sim_accum *acc)
+{
+    pair_rows_impl(s, i0, i1, f, acc, 0);
+}
+
+/* Grain-wall contacts of grains [i0, i1). */
+static void wall_rows(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_sim_accum *acc)
+{
+    const gf_particles *p = s->p;
+    const double lub_cut = s->lubrication ? s->lub_cutoff_m : 0.0;
+    const size_t stride = (size_t)s->n_walls + 1;
+    for (int w = 0; w < s->n_walls; ++w) {
+        const gf_wall *wl = &s->walls[w];
+        const double *nw = wl->normal, *pw = wl->point_m;
+        for (size_t i = i0; i < i1; ++i) {
+            double *h = &s->wall_hist[3 * (i * stride + (size_t)w)];
+            double ri = p->radius_m[i];
+            double dist = (p->x_m[i] - pw[0]) * nw[0] + (p->y_m[i] - pw[1]) * nw[1] + (p->z_m[i] - pw[2]) * nw[2];
+            double overlap = ri - dist;
+            if (!wl->active || (p->flags[i] & GF_P_GLUED) || overlap <= -lub_cut) {
+                if (h[0] != 0.0 || h[1] != 0.0 || h[2] != 0.0)
+                    h[0] = h[1] = h[2] = 0.0;
+                continue;
+            }
+            double v[3] = {p->vx_m_s[i], p->vy_m_s[i], p->vz_m_s[i]};
+            double F[3] = {0.0, 0.0, 0.0};
+            double vn = s->vx_pred[i] * nw[0] + s->vy_pred[i] * nw[1] + s->vz_pred[i] * nw[2];
+            if (overlap > 0.0) {
+                gf_contact_geom g;
+                g.v_n_m_s = vn;
+                g.n[0] = nw[0], g.n[1] = nw[1], g.n[2] = nw[2];
+                g.overlap_m = overlap;
+                double rw[3] = {ri * p->wx_rad_s[i], ri * p->wy_rad_s[i], ri * p->wz_rad_s[i]}, rwn[3];
+                cross(rw, g.n, rwn);
+                g.v_rel_m_s[0] = v[0] - rwn[0], g.v_rel_m_s[1] = v[1] - rwn[1], g.v_rel_m_s[2] = v[2] - rwn[2];
+                g.m_eff_kg = p->mass_kg[i];
+                g.sqrt_mk = sqrt(p->mass_kg[i] * s->cp.k_n_N_m);
+                g.mu = wl->friction;
+                double f_n, f_t[3], nxt[3];
+                s->law->kernel(&s->cp, &g, s->dt_s, h, &f_n, f_t);
+                F[0] = f_n * nw[0] + f_t[0], F[1] = f_n * nw[1] + f_t[1], F[2] = f_n * nw[2] + f_t[2];
+                cross(g.n, f_t, nxt);
+                f[3][i] -= ri * nxt[0], f[4][i] -= ri * nxt[1], f[5][i] -= ri * nxt[2];
+                acc->n_contacts++;
+                if (overlap > acc->max_overlap_m)
+                    acc->max_overlap_m = overlap;
+            } else if (h[0] != 0.0 || h[1] != 0.0 || h[2] != 0.0) {
+                h[0] = h[1] = h[2] = 0.0;
+            }
+            if (lub_cut > 0.0) {
+                double gap = overlap > 0.0 ? 0.0 : -overlap;
+                double c = -6.0 * M_PI * s->lub_eta_Pa_s * vn / (gap + s->lub_roughness_m) * ri * ri;
+                F[0] += c * nw[0], F[1] += c * nw[1], F[2] += c * nw[2];
+            }
+            f[0][i] += F[0], f[1][i] += F[1], f[2][i] += F[2];
+            acc->wall_force_N[w][0] -= F[0], acc->wall_force_N[w][1] -= F[1], acc->wall_force_N[w][2] -= F[2];
+        }
+    }
+}
+
+static gf_status reserve_accumulators(gf_sim *s, size_t n)
+{
+    for (int t = 1; t < s->nl->n_chunks; ++t) {
+        gf_sim_accum *a = &s->acc[t];
+        if (a->cap >= n)
+            continue;
+        for (int c = 0; c < 6; ++c) {
+            double *q = realloc(a->f[c], (n + 1) * sizeof(double));
+            if (!q)
+                return GF_FAIL(s->ctx, GF_ERR_NOMEM, "sim: cannot allocate thread force buffers");
+            a->f[c] = q;
+        }
+        a->cap = n;
+    }
+    return GF_OK;
+}
+
+gf_status gf_sim_compute_forces(gf_sim *s)
+{
+    gf_particles *p = s->p;
+    size_t n = p->n_local;
+    if (s->nl->n != n)
+        GF_TRY(gf_sim_rebuild(s));
+    GF_TRY(reserve_accumulators(s, n));
+    GF_TRY(gf_sim_reserve(s, n));
+    if (!s->vp_valid) { /* not called from a step: the dashpot sees v(t) itself */
+        memcpy(s->vx_pred, p->vx_m_s, n * sizeof(double));
+        memcpy(s->vy_pred, p->vy_m_s, n * sizeof(double));
+        memcpy(s->vz_pred, p->vz_m_s, n * sizeof(double));
+    }
+    s->vp_valid = 0;
+    gf_particles_clear_forces(p);
+    /* chunk c of the list (pair-balanced rows) accumulates into buffer c
+     * (chunk 0 into the store); buffers are summed in chunk order. The result
+     * depends on the chunk count (the configured thread count) only, not on
+     * how many threads actually run: small systems run the chunks serially,
+     * which avoids fork/join costs that exceed the work below ~1000 grains. */
+    const int nc = s->nl->n_chunks;
+    double *store[6] = {p->fx_N, p->fy_N, p->fz_N, p->tx_N_m, p->ty_N_m, p->tz_N_m};
+#ifdef _OPENMP
+#pragma omp parallel num_threads(s->n_threads) if (s->n_threads > 1 && n >= GF_SIM_PARALLEL_MIN_GRAINS)
+#endif
+    {
+#ifdef _OPENMP
+        int t = omp_get_thread_num(), m = omp_get_num_threads();
+#else
+        int t = 0, m = 1;
+#endif
+        for (int c = t; c < nc; c += m) {
+            gf_sim_accum *a = &s->acc[c];
+            a->n_contacts = 0;
+            a->max_overlap_m = 0.0;
+            memset(a->wall_force_N, 0, sizeof a->wall_force_N);
+            double *const *f = c == 0 ? store : a->f;
+            if (c > 0)
+                for (int q = 0; q < 6; ++q)
+                    memset(a->f[q], 0, n * sizeof(double));
+            size_t i0 = s->nl->chunk_row[c], i1 = s->nl->chunk_row[c + 1];
+            if (s->law->kernel == gf_contact_linear)
+                pair_rows_linear(s, i0, i1, f, a);
+            else
+                pair_rows_table(s, i0, i1, f, a);
+            wall_rows(s, i0, i1, f, a);
+        }
+        if (nc > 1) {
+#ifdef _OPENMP
+#pragma omp barrier
+#pragma omp for schedule(static)
+#endif
+            for (size_t i = 0; i < n; ++i)
+                for (int u = 1; u < nc; ++u)
+                    for (int q = 0; q < 6; ++q)
+                        store[q][i] += s->acc[u].f[q][i];
+        }
+    }
+    const int nt = nc;
+    s->n_contacts = 0;
+    s->max_overlap_m = 0.0;
+    for (int w = 0; w < s->n_walls; ++w)
+        s->walls[w].force_N[0] = s->walls[w].force_N[1] = s->walls[w].force_N[2] = 0.0;
+    for (int t = 0; t < nt; ++t) {
+        s->n_contacts += s->acc[t].n_contacts;
+        if (s->acc[t].max_overlap_m > s->max_overlap_m)
+            s->max_overlap_m = s->acc[t].max_overlap_m;
+        for (int w = 0; w < s->n_walls; ++w)
+            for (int c = 0; c < 3; ++c)
+                s->walls[w].force_N[c] += s->acc[t].wall_force_N[w][c];
+    }
+    s->forces_valid = 1;
+    return GF_OK;
+}

@@ -1,0 +1,106 @@
+/*
+ * The gf_sim object, shared by the files of the sim module only
+ * (gf_sim.c: create/step loop/builders; gf_sim_forces.c: the pair and wall
+ * loops; gf_sim_run.c: outputs; gf_sim_checkpoint.c: restart). Not a public
+ * header: drivers and scenes use gf_sim.h.
+ */
+#ifndef GF_SIM_INTERNAL_H
+#define GF_SIM_INTERNAL_H
+
+#include "contact/gf_contact.h"
+#include "contact/gf_nlist.h"
+#include "coupling/gf_coupling.h"
+#include "gf_sim.h"
+#include "scenes/gf_scene.h"
+
+#define GF_SIM_MAX_WALLS 16
+#define GF_SIM_MAX_GAUGES 64
+#define GF_SIM_MAX_THREADS 64
+#define GF_SIM_PARALLEL_MIN_GRAINS 1000 /* below: chunks run serially (fork/join costs more) */
+
+typedef struct gf_wall {
+    double point_m[3], normal[3];
+    double friction;
+    int active;
+    double force_N[3];         /* on the wall, last force evaluation */
+} gf_wall;
+
+typedef struct gf_gauge {
+    char name[GF_NAME_LEN];
+    double x_m[3];
+} gf_gauge;
+
+/* Per-thread force accumulators (thread 0 writes the particle store). */
+typedef struct gf_sim_accum {
+    double *f[6];
+    size_t cap;
+    double wall_force_N[GF_SIM_MAX_WALLS][3];
+    size_t n_contacts;
+    double max_overlap_m;
+} gf_sim_accum;
+
+struct gf_sim {
+    gf_ctx *ctx;                /* borrowed from the creator */
+    gf_run_spec spec;
+    gf_sim_options opt;         /* strings borrowed */
+    const gf_scene_desc *scene;
+    gf_scales scales;
+    gf_particles *p;
+    gf_rng rng;
+    gf_timers timers;
+    /* geometry */
+    double lo_m[3], hi_m[3];
+    int periodic[3], box_set;
+    double gravity_m_s2[3];
+    gf_wall walls[GF_SIM_MAX_WALLS];
+    int n_walls;
+    double *wall_hist;          /* 3 doubles per (grain, wall): [3 (i (n_walls + 1) + w)] */
+    size_t wall_hist_cap;
+    gf_gauge gauges[GF_SIM_MAX_GAUGES];
+    int n_gauges;
+    int fluid_bc[3][2], fluid_bc_set[3][2];
+    /* clock */
+    double t_s, dt_s, t_end_s;
+    long step;
+    /* contacts */
+    const gf_contact_info *law;
+    gf_contact_params cp;
+    gf_nlist *nl;
+    double *x_ref, *y_ref, *z_ref;  /* positions at the last neighbour build */
+    double *vx_pred, *vy_pred, *vz_pred; /* predicted v(t+dt) for the dashpot (gf_integrate.h) */
+    double *inv_mass, *inv_inertia, *mobile; /* integrator factors, refreshed at every neighbour build */
+    double *contact_inv_mass;       /* 1/m in contacts, 0 for glued grains (infinite mass) */
+    double *pair_meff, *pair_sqrt_mk; /* per neighbour pair: m*, sqrt(m* k_n) */
+    size_t pair_cap;
+    int vp_valid;                   /* set by the drift, consumed by the next force evaluation */
+    size_t ref_cap;
+    double skin_m, extra_m;
+    int need_build;
+    int n_threads;
+    gf_sim_accum acc[GF_SIM_MAX_THREADS];
+    size_t n_contacts;
+    double max_overlap_m;
+    int forces_valid;           /* F(t) in the store matches x(t) */
+    /* fluid */
+    int immersed;
+    gf_coupling *coupling;
+    int n_substeps;             /* DEM steps per fluid step */
+    int lubrication;
+    double lub_eta_Pa_s, lub_roughness_m, lub_cutoff_m;
+    int in_build;
+};
+
+/* Evaluates contact (+ lubrication) forces and wall forces at the current
+ * state into the particle store (cleared first). gf_sim_forces.c. */
+gf_status gf_sim_compute_forces(gf_sim *s);
+/* Rebuilds the neighbour list from the current positions (wrapping periodic
+ * axes first). gf_sim_forces.c. */
+gf_status gf_sim_rebuild(gf_sim *s);
+/* Allocates per-grain sim arrays (wall history, reference positions) for n grains. */
+gf_status gf_sim_reserve(gf_sim *s, size_t n);
+/* Re-strides the wall history after a wall was added (history kept). */
+gf_status gf_sim_relayout_walls(gf_sim *s, int n_walls_old);
+/* Builds the list from the saved reference positions (restart). */
+gf_status gf_sim_rebuild_from_ref(gf_sim *s);
+
+#endif

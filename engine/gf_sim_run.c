@@ -1,0 +1,232 @@
+/*
+ * gf_sim_run: the driver loop with outputs. Advances in chunks that end on
+ * output instants (spec.output.interval_nd sqrt(D/g)), the end time, or
+ * about every 0.1 wall second (progress callback about once per second,
+ * interrupt and scene end-condition checks). Writes, only when
+ * opt.output_dir is set and only the files the spec asks for:
+ *   diagnostics.nc  kinetic_energy, ecx_per_grain, n_contacts,
+ *                   max_overlap_over_D + the scene's own variables
+ *   particles.nc    trajectories of every grain
+ *   probes.nc       excess pore pressure at the scene's gauges (immersed runs)
+ *   fields.nc       the coupling's gridded fields (immersed runs)
+ *   checkpoint.h5   every checkpoint_interval_nd, and on interrupt.
+ * Files are written under temporary names and renamed when complete
+ * (gf_nc writers); a failed run aborts them so no partial file looks complete.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "gf_sim_internal.h"
+
+#define GF_N_COMMON_DIAG 4
+#define GF_MAX_DIAG 64
+
+static const gf_var_info common_diag[GF_N_COMMON_DIAG] = {
+    {"kinetic_energy", "J", "total kinetic energy of mobile grains (translation + rotation)", NULL},
+    {"ecx_per_grain", "J", "horizontal (x) translational kinetic energy per mobile grain, E_cx (Izard 2014 §5.3)", NULL},
+    {"n_contacts", "1", "number of grain-grain and grain-wall contacts", NULL},
+    {"max_overlap_over_D", "1", "largest contact overlap / mean diameter", NULL},
+};
+
+typedef struct run_out {
+    gf_nc_writer *diag, *parts, *probes, *fields;
+    gf_var_info vars[GF_MAX_DIAG];
+    int n_vars;
+    double values[GF_MAX_DIAG];
+    double *probe_values;
+} run_out;
+
+static double ecx_per_grain(const gf_particles *p)
+{
+    double e = 0.0;
+    size_t n = 0;
+    for (size_t i = 0; i < p->n_local; ++i) {
+        if (p->flags[i] & GF_P_GLUED)
+            continue;
+        e += 0.5 * p->mass_kg[i] * p->vx_m_s[i] * p->vx_m_s[i];
+        ++n;
+    }
+    return n ? e / (double)n : 0.0;
+}
+
+static gf_status write_record(gf_sim *s, run_out *o)
+{
+    gf_timer_start(&s->timers, GF_T_OUTPUT);
+    gf_status st = GF_OK;
+    if (o->diag) {
+        o->values[0] = gf_particles_kinetic_energy(s->p);
+        o->values[1] = ecx_per_grain(s->p);
+        o->values[2] = (double)s->n_contacts;
+        o->values[3] = s->max_overlap_m / s->spec.grains.diameter_m;
+        if (s->scene->diagnose && s->scene->n_diag > 0)
+            st = s->scene->diagnose(s, o->values + GF_N_COMMON_DIAG);
+        if (st == GF_OK)
+            st = gf_nc_diagnostics_append(o->diag, s->t_s, o->values);
+    }
+    if (st == GF_OK && o->parts)
+        st = gf_nc_particles_append(o->parts, s->t_s, s->p);
+    if (st == GF_OK && o->probes) {
+        for (int k = 0; k < s->n_gauges; ++k)
+            o->probe_values[k] = gf_coupling_excess_pressure_Pa(s->coupling, s->gauges[k].x_m);
+        st = gf_nc_probes_append(o->probes, s->t_s, o->probe_values);
+    }
+    if (st == GF_OK && o->fields) {
+        int nc[3];
+        double lo[3], cell[3];
+        const gf_var_info *vars;
+        const double *const *f;
+        gf_coupling_fields(s->coupling, nc, lo, cell, &vars, &f);
+        st = gf_nc_fields_append(o->fields, s->t_s, f);
+    }
+    gf_timer_stop(&s->timers, GF_T_OUTPUT);
+    return st;
+}
+
+static gf_status open_outputs(gf_sim *s, run_out *o, gf_nc_meta *meta)
+{
+    const char *dir = s->opt.output_dir;
+    char path[1024];
+    const gf_output_spec *os = &s->spec.output;
+    if (os->diagnostics) {
+        o->n_vars = GF_N_COMMON_DIAG;
+        memcpy(o->vars, common_diag, sizeof common_diag);
+        if (s->scene->n_diag > GF_MAX_DIAG - GF_N_COMMON_DIAG)
+            return GF_FAIL(s->ctx, GF_ERR_CAPACITY, "scene %s: too many diagnostics (%d)", s->scene->name,
+                           s->scene->n_diag);
+        for (int k = 0; k < s->scene->n_diag; ++k)
+            o->vars[o->n_vars++] = s->scene->diag[k];
+        snprintf(path, sizeof path, "%s/diagnostics.nc", dir);
+        GF_TRY(gf_nc_diagnostics_open(s->ctx, path, meta, o->vars, o->n_vars, &o->diag));
+    }
+    if (os->particles) {
+        snprintf(path, sizeof path, "%s/particles.nc", dir);
+        GF_TRY(gf_nc_particles_open(s->ctx, path, meta, s->p, &o->parts));
+    }
+    if (os->probes && s->coupling && s->n_gauges > 0) {
+        static const gf_var_info pv = {"excess_pore_pressure", "Pa", "pore pressure minus hydrostatic", NULL};
+        const char *names[GF_SIM_MAX_GAUGES];
+        double xyz[3 * GF_SIM_MAX_GAUGES];
+        for (int k = 0; k < s->n_gauges; ++k) {
+            names[k] = s->gauges[k].name;
+            memcpy(&xyz[3 * k], s->gauges[k].x_m, sizeof s->gauges[k].x_m);
+        }
+        o->probe_values = calloc((size_t)s->n_gauges, sizeof(double));
+        if (!o->probe_values)
+            return GF_FAIL(s->ctx, GF_ERR_NOMEM, "run: cannot allocate probe values");
+        snprintf(path, sizeof path, "%s/probes.nc", dir);
+        GF_TRY(gf_nc_probes_open(s->ctx, path, meta, s->n_gauges, names, xyz, &pv, 1, &o->probes));
+    }
+    if (os->fields && s->coupling) {
+        int nc[3];
+        double lo[3], cell[3];
+        const gf_var_info *vars;
+        const double *const *f;
+        int nv = gf_coupling_fields(s->coupling, nc, lo, cell, &vars, &f);
+        if (nv > 0) {
+            snprintf(path, sizeof path, "%s/fields.nc", dir);
+            GF_TRY(gf_nc_fields_open(s->ctx, path, meta, nc, lo, cell, vars, nv, &o->fields));
+        }
+    }
+    return GF_OK;
+}
+
+static gf_status close_outputs(run_out *o, gf_status st)
+{
+    gf_nc_writer **w[4] = {&o->diag, &o->parts, &o->probes, &o->fields};
+    for (int k = 0; k < 4; ++k) {
+        if (st == GF_OK)
+            st = gf_nc_writer_close(w[k]);
+        else
+            gf_nc_writer_abort(w[k]);
+    }
+    free(o->probe_values);
+    o->probe_values = NULL;
+    return st;
+}
+
+static gf_status checkpoint_in_dir(gf_sim *s)
+{
+    if (!s->opt.output_dir)
+        return GF_OK;
+    char path[1024];
+    snprintf(path, sizeof path, "%s/checkpoint.h5", s->opt.output_dir);
+    return gf_sim_checkpoint(s, path);
+}
+
+static gf_status run_loop(gf_sim *s, run_out *o)
+{
+    const double t_grain = s->scales.t_grain_s;
+    double out_dt = s->spec.output.interval_nd * t_grain;
+    double ck_dt = s->spec.output.checkpoint_interval_nd * t_grain;
+    double next_out = out_dt > 0.0 ? s->t_s + out_dt : INFINITY, next_ck = ck_dt > 0.0 ? s->t_s + ck_dt : INFINITY;
+    double wall0 = gf_wtime(), last_progress = wall0;
+    long chunk = 16, steps_at_progress = s->step;
+    GF_TRY(write_record(s, o));
+    while (s->t_s < s->t_end_s - 0.5 * s->dt_s) {
+        double t_stop = fmin(fmin(next_out, next_ck), s->t_end_s);
+        long to_stop = (long)ceil((t_stop - s->t_s) / s->dt_s - 1e-9);
+        long n = to_stop < chunk ? (to_stop > 0 ? to_stop : 1) : chunk;
+        double w0 = gf_wtime();
+        gf_status st = gf_sim_advance(s, n);
+        if (st == GF_ERR_INTERRUPTED) {
+            char what[512];
+            snprintf(what, sizeof what, "%s", s->ctx->last_msg);
+            gf_status ck = checkpoint_in_dir(s);
+            if (ck != GF_OK)
+                return ck;
+            return GF_FAIL(s->ctx, GF_ERR_INTERRUPTED, "%s; checkpoint written", what);
+        }
+        GF_TRY(st);
+        double w1 = gf_wtime(), took = w1 - w0;
+        chunk = took < 0.05 ? chunk * 2 : (took > 0.2 && chunk > 1 ? chunk / 2 : chunk); /* ~0.1 s per chunk */
+        if (s->t_s >= next_out - 0.5 * s->dt_s) {
+            GF_TRY(write_record(s, o));
+            next_out += out_dt;
+        }
+        if (s->t_s >= next_ck - 0.5 * s->dt_s) {
+            GF_TRY(checkpoint_in_dir(s));
+            next_ck += ck_dt;
+        }
+        if (s->opt.progress && w1 - last_progress >= 1.0) {
+            s->opt.progress(s->opt.progress_user, s->t_s, s->t_end_s, (s->step - steps_at_progress) / (w1 - last_progress));
+            last_progress = w1;
+            steps_at_progress = s->step;
+        }
+        if (s->scene->done && s->scene->done(s))
+            break;
+    }
+    if (o->diag || o->parts) /* last state, unless it was just written */
+        if (out_dt <= 0.0 || fabs(s->t_s - (next_out - out_dt)) > 0.5 * s->dt_s)
+            GF_TRY(write_record(s, o));
+    return GF_OK;
+}
+
+gf_status gf_sim_run(gf_sim *s)
+{
+    run_out o;
+    memset(&o, 0, sizeof o);
+    gf_status st = GF_OK;
+    if (s->opt.output_dir) {
+        gf_nc_meta meta = {
+            .spec = &s->spec,
+            .scales = &s->scales,
+            .resolved_yaml = s->opt.resolved_yaml,
+            .fluid_model = s->immersed ? "unresolved" : "none",
+            .fluid_model_reason = s->immersed ? "spec.fluid.model" : "dry scene or fluid.model none",
+            .stages = s->immersed ? (s->lubrication ? "fluid,contacts,lubrication,coupling,integrate"
+                                                    : "fluid,contacts,coupling,integrate")
+                                  : "contacts,integrate",
+            .column_length_m = gf_run_spec_param(&s->spec, "column_length_m", 0.0),
+            .column_height_m = gf_run_spec_param(&s->spec, "column_height_m", 0.0),
+            .incline_deg = gf_run_spec_param(&s->spec, "incline_deg", 0.0),
+            .phi_initial_measured = gf_run_spec_param(&s->spec, "phi_initial_measured", NAN),
+            .phi_initial_local = gf_run_spec_param(&s->spec, "phi_initial_local", NAN),
+        };
+        st = open_outputs(s, &o, &meta);
+    }
+    if (st == GF_OK)
+        st = run_loop(s, &o);
+    return close_outputs(&o, st);
+}

@@ -1,0 +1,65 @@
+/*
+ * Shared state of the netCDF writers (private to engine/io/gf_nc_*.c).
+ *
+ * One writer = one netCDF-4 file being written under "<path>.tmp". The
+ * common part (gf_nc_common.c) creates the file, writes the global
+ * attributes of docs/output.md, defines the unlimited `time` coordinate,
+ * appends time values and closes/renames or aborts; each file kind adds
+ * its own dimensions and variables and keeps its ids in the union below.
+ */
+#ifndef GF_NC_INTERNAL_H
+#define GF_NC_INTERNAL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "io/gf_nc.h"
+
+typedef enum gf_nc_kind { GF_NC_DIAGNOSTICS, GF_NC_PARTICLES, GF_NC_PROBES, GF_NC_FIELDS } gf_nc_kind;
+
+struct gf_nc_writer {
+    gf_ctx *ctx;
+    gf_nc_kind kind;
+    int ncid;
+    char *path, *tmp;
+    int dim_time, var_time;
+    size_t n_records;        /* time records written */
+    double last_t_s;
+    int n_vars;              /* user variables (diagnostics, probes, fields) */
+    int *varids;             /* n_vars ids (owned) */
+    /* particles */
+    size_t n_traj;
+    int64_t *sorted_id;      /* ids present at open, ascending (owned) */
+    size_t *sorted_slot;     /* trajectory index of sorted_id[k] (owned) */
+    int var_pos[3], var_vel[3];
+    double *buf;             /* n_traj * 6 (owned) */
+    /* probes */
+    int n_stations;
+    /* fields */
+    size_t n_cells[3];       /* nx, ny, nz */
+};
+
+/* Creates "<path>.tmp" (netCDF-4, clobber), writes the global attributes
+ * (feature_type may be NULL) and defines time(time). Leaves the file in
+ * define mode. On error nothing is left on disk. */
+gf_status gf_nc_begin(gf_ctx *ctx, const char *path, const gf_nc_meta *meta, gf_nc_kind kind,
+                      const char *feature_type, gf_nc_writer **out);
+/* Leaves define mode. */
+gf_status gf_nc_end_def(gf_nc_writer *w);
+/* Checks t_s (finite, not decreasing) and writes time[n_records]. The caller
+ * increments n_records after its own variables of the record are written. */
+gf_status gf_nc_put_time(gf_nc_writer *w, double t_s);
+/* Defines a variable with units, long_name, standard_name (when given) and
+ * a fill value for doubles. */
+gf_status gf_nc_def_var(gf_nc_writer *w, const char *name, int xtype, int ndims, const int *dimids,
+                        const gf_var_info *info, int *varid);
+/* Chunking + shuffle + deflate (level 1: 2-4x on smooth data, fast). */
+gf_status gf_nc_compress(gf_nc_writer *w, int varid, const size_t *chunks);
+/* GF_FAIL with "netCDF <what> <tmp path>: <nc_strerror(rc)>" when rc != NC_NOERR. */
+gf_status gf_nc_check(gf_nc_writer *w, int rc, const char *what);
+/* Validates one gf_var_info (name and units present). */
+gf_status gf_nc_check_info(gf_ctx *ctx, const char *path, const gf_var_info *info, int index);
+/* Frees a writer after its file was closed or removed. */
+void gf_nc_free(gf_nc_writer *w);
+
+#endif

@@ -1,0 +1,117 @@
+/*
+ * gf_packing: preparation of a granular column or bed at a requested
+ * packing fraction Phi_i (Izard 2014 §5.2, §5.5; digest §7.3).
+ *
+ * Protocol (deposition with a tuned preparation friction):
+ *   1. Grains (radii from gf_psd) are placed on a jittered loose lattice
+ *      (solid fraction ~0.35) filling the container footprint, enough of them
+ *      for a deposit taller than the target height.
+ *   2. They settle under gravity through a linear drag F = -m u / tau_prep
+ *      (terminal speed g tau_prep = 2 sqrt(gD)), which plays the part of the
+ *      viscous fluid the loose columns of the thesis settle in (§7.3) and keeps
+ *      impacts gentle, with a preparation inter-grain friction mu_prep, a low
+ *      restitution 0.3 and rotations blocked (infinite rolling resistance).
+ *      Frictionless grains pour dense (Phi = 0.637, random close packing);
+ *      friction with free rolling only reaches ~0.59 at mu = 1 under gravity
+ *      (measured here; Silbert et al. PRE 65 031304, 2002), while non-rolling
+ *      frictional grains stop where they land and reach the random-loose
+ *      limit ~0.55 at mu ~ 0.25 (rolling resistance is the usual DEM route to
+ *      loose packings; Onoda & Liniger PRL 64 2727, 1990 for the RLP limit).
+ *      Grain-wall friction is zero during preparation, so walls hold no arches.
+ *   3. The interior packing fraction Phi(mu_prep) decreases monotonically
+ *      with mu_prep in [0, 0.4] (up to the sampling noise of a finite
+ *      deposit); mu_prep is found by safeguarded regula falsi until the
+ *      interior value is within the
+ *      tolerance of the target (or the iteration budget is spent; the best
+ *      deposit is kept and the residual is reported).
+ *   4. The deposit is trimmed: grains whose centre lies above the target
+ *      height H are removed, so the column top is at H within one radius.
+ *   Targets below what the most frictional deposit reaches are reported as
+ *   GF_ERR_PHYSICS (no silent clamp).
+ *
+ * Measures (both stored in the result, for phi_initial_measured and
+ * phi_initial_local of the run's metadata):
+ *   phi_global = sum_i V_i / (footprint x H)       (Rondon et al. 2011 estimate)
+ *   phi_local  = sampled solid fraction of an interior control box, at
+ *                margin m from the walls, the base and the top (§7.3: the
+ *                thesis averages alpha over such a volume).
+ *
+ * Accuracy and cost (tests/scenes/test_packing.c, 16D x 8D x 3D column,
+ * ~400 grains, one core): Phi_i = 0.55 -> 0.551, 0.58 -> 0.585, 0.60 ->
+ * 0.597 (interior), in 1-4 deposits of 2-4 s each; the global estimate is
+ * 0.02 below the interior one (walls and the trimmed top).
+ *
+ * The preparation DEM is a small self-contained soft-sphere integrator
+ * (linear spring-dashpot, tangential spring with a Coulomb cap, symplectic
+ * Euler, cell-list Verlet table with tangential history, plane walls, glued
+ * obstacles, periodic x and z): the preparation has its own friction,
+ * restitution and drag that the run must not see, and it does not depend on
+ * the run's stages. Its contacts are as stiff as t_c = 0.02 sqrt(D/g), so the
+ * scene re-equilibrates with the run's contacts before t = 0 and records the
+ * Phi it then measures.
+ */
+#ifndef GF_PACKING_H
+#define GF_PACKING_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "core/gf_status.h"
+#include "particles/gf_particles.h"
+#include "particles/gf_psd.h"
+
+typedef struct gf_packing_spec {
+    double lo_m[3], hi_m[3];      /* container; hi_m[1] is the target height H (top of the column) */
+    int periodic[3];              /* x and z may be periodic; y never */
+    int walls_x, walls_z;         /* plane walls at lo/hi on non-periodic x / z (1) or none (0: obstacles close it) */
+    double phi_target;            /* requested interior Phi; NaN: one deposit at mu_prep = mu_natural */
+    double mu_natural;            /* friction used when phi_target is NaN (the run's mu_c) */
+    double tolerance;             /* |phi_local - target| accepted; 0: 0.005 */
+    int max_iterations;           /* deposits in the bisection; 0: 8 */
+    double interior_margin_m;     /* margin of the control box; 0: 1.5 D */
+    gf_psd psd;
+    double density_kg_m3;
+    double gravity_m_s2;          /* |g|, along -y */
+    const gf_particles *obstacles;/* glued grains present during the deposition (rough base, walls); may be NULL */
+    double mu_obstacles;          /* grain-obstacle friction during the deposition; 0: mu_prep (rough walls
+                                     that must carry their load, as in a silo, use the run's mu_c) */
+    uint64_t seed;
+} gf_packing_spec;
+
+typedef struct gf_packing_result {
+    double phi_global;            /* solid volume / (footprint x H) */
+    double phi_local;             /* sampled interior control box */
+    double mu_prep;               /* preparation friction of the kept deposit */
+    int iterations;               /* deposits run */
+    size_t n_grains;              /* grains kept */
+    double top_m;                 /* highest grain top after trimming */
+    double cpu_s;                 /* wall time of the preparation */
+} gf_packing_result;
+
+/* Prepares the packing and appends its (mobile) grains at rest to out.
+ * Errors: bad container or psd (GF_ERR_CONFIG), unreachable target
+ * (GF_ERR_PHYSICS, naming the reachable range), GF_ERR_NOMEM. */
+gf_status gf_packing_build(gf_ctx *ctx, const gf_packing_spec *spec, gf_particles *out, gf_packing_result *res);
+
+/* One deposit at a given mu_prep (no trimming, no bisection): appends the
+ * settled grains to out and returns the interior Phi of [lo, hi] (margin as in
+ * spec) in *phi_local. For calibration tests. */
+gf_status gf_packing_deposit(gf_ctx *ctx, const gf_packing_spec *spec, double mu_prep, gf_particles *out,
+                             double *phi_local);
+
+/* Rough base (Izard 2014 §1.5, §4.1.2.2): glued grains of radii drawn from
+ * psd with their centres on the plane y = y_m ("half-grains"), on a square
+ * lattice of spacing D(1 + p) over x in [x0, x1), z in [z0, z1) with a
+ * random jitter of 0.1 D in x and z. Appends GF_P_GLUED grains to out. */
+gf_status gf_packing_rough_base(gf_ctx *ctx, gf_particles *out, const gf_psd *psd, double density_kg_m3, double y_m,
+                                double x0_m, double x1_m, double z0_m, double z1_m, uint64_t seed);
+
+/* Solid fraction of the box [lo, hi] by sampling the grain indicator on a
+ * cell-centred lattice of spacing h_m, periodic images of the domain
+ * [dom_lo, dom_hi] included on periodic axes; glued grains count when
+ * include_glued. NaN for a box thinner than h. */
+double gf_packing_solid_fraction_box(const gf_particles *p, const double dom_lo_m[3], const double dom_hi_m[3],
+                                     const int periodic[3], const double lo_m[3], const double hi_m[3], double h_m,
+                                     int include_glued);
+
+#endif

@@ -1,0 +1,157 @@
+/*
+ * Granular avalanche on a rough incline, periodic in x and z: the dry chute
+ * flow of Izard 2014 §2.1.3.3 (mu(I), Bagnold profile) and, immersed, the
+ * avalanches of chapter 4 (§4.1.2.2; Courrech du Pont et al. PRL 2003 for
+ * the regimes).
+ *
+ * Axes: x downslope, y normal to the bed, z spanwise. The domain is
+ * L x H x W (5D x 20D x 5D in the thesis, §6.3 of the digest), periodic in
+ * x and z, with glued grains centred on y = 0 ("half-grains", §1.5) over a
+ * plane floor, and a plane lid at y = H (the fluid's free-slip top). The bed
+ * (height h_bed, 7-8 D in the thesis) is prepared at theta = 0 by gf_packing
+ * at the requested packing fraction, re-equilibrated with the run's
+ * contacts, and at t = 0 start() tilts gravity to
+ *     g = |g| (sin theta, -cos theta, 0)                       (§4.1.2.2).
+ * The immersed variant of the gravity on the fluid ((4.5)-(4.6), digest §6.3
+ * caution) is the coupling's business, not the scene's.
+ *
+ * Diagnostics (docs/output.md, thesis (4.7)-(4.11)):
+ *   grain_flow_rate   Q_g = (1/L) sum_i V_i u_i (m3/s), the discrete form of
+ *                     (1/L) int alpha U dV;
+ *   bed_height        the height where the slab solid fraction (slabs of D/2)
+ *                     falls to half its plateau (gf_measure_bed_height_m);
+ *   bed_packing_fraction  phi of the mobile grains between y = D/2 and
+ *                     h_bed - D/2 (thesis (4.7): the glued layer and the free
+ *                     surface excluded);
+ *   fluid_flow_rate   0 in dry runs; NaN when immersed (the fluid flux is not
+ *                     exposed to scenes by gf_sim.h yet).
+ */
+#include <math.h>
+#include <string.h>
+
+#include "coupling/gf_coupling.h"
+#include "particles/gf_packing.h"
+#include "scenes/gf_measure.h"
+#include "scenes/gf_scene.h"
+
+static const gf_param_info avalanche_params[] = {
+    {"length_over_D", "1", 5.0, 2.0, 1000.0, "periodic length L / D"},
+    {"width_over_D", "1", 5.0, 2.0, 1000.0, "periodic width W / D"},
+    {"height_over_D", "1", 20.0, 4.0, 1000.0, "domain height H / D (lid)"},
+    {"bed_height_over_D", "1", 8.0, 2.0, 500.0, "initial bed height / D"},
+    {"incline_deg", "degree", 25.0, 0.0, 60.0, "incline angle theta, applied at t = 0"},
+    {"phi_target", "1", 0.60, 0.50, 0.645, "bed packing fraction requested (the campaign's phi_initial wins)"},
+    {"settle_time_nd", "1", 5.0, 0.0, 1e4, "re-equilibration at theta = 0 before t = 0, sqrt(D/g)"},
+};
+
+static const gf_var_info avalanche_diag[] = {
+    {"grain_flow_rate", "m3 s-1", "grain volume flow rate Q_g = (1/L) sum V_i u_i", NULL},
+    {"fluid_flow_rate", "m3 s-1", "fluid volume flow rate Q_f", NULL},
+    {"bed_packing_fraction", "1", "bed solid fraction between D/2 and h - D/2", NULL},
+    {"bed_height", "m", "bed height (half-plateau solid fraction)", NULL},
+};
+
+static int is_immersed(const gf_run_spec *s)
+{
+    return s->fluid.viscosity_Pa_s > 0.0 && strcmp(s->fluid.model, "none") != 0;
+}
+
+static gf_status avalanche_build(gf_sim *sim, const gf_run_spec *spec)
+{
+    gf_ctx *ctx = gf_sim_ctx(sim);
+    gf_particles *p = gf_sim_particles(sim);
+    double D = spec->grains.diameter_m, rho = spec->grains.density_kg_m3;
+    double L = gf_run_spec_param(spec, "length_over_D", 5.0) * D, W = gf_run_spec_param(spec, "width_over_D", 5.0) * D;
+    double H = gf_run_spec_param(spec, "height_over_D", 20.0) * D;
+    double h_bed = gf_run_spec_param(spec, "bed_height_over_D", 8.0) * D;
+    double phi = isnan(spec->phi_initial) ? gf_run_spec_param(spec, "phi_target", 0.6) : spec->phi_initial;
+    if (h_bed + 2.0 * D > H)
+        return GF_FAIL(ctx, GF_ERR_CONFIG, "avalanche: bed_height_over_D + 2 must not exceed height_over_D");
+    double lo[3] = {0, 0, 0}, hi[3] = {L, H, W}, grav[3] = {0, -spec->gravity_m_s2, 0};
+    int periodic[3] = {1, 0, 1};
+    GF_TRY(gf_sim_set_box(sim, lo, hi, periodic));
+    GF_TRY(gf_sim_set_gravity(sim, grav));
+    double floor_pt[3] = {0, 0, 0}, up[3] = {0, 1, 0}, lid_pt[3] = {0, H, 0}, down[3] = {0, -1, 0};
+    GF_TRY(gf_sim_add_wall(sim, floor_pt, up, spec->contact.wall_friction, NULL));
+    GF_TRY(gf_sim_add_wall(sim, lid_pt, down, spec->contact.wall_friction, NULL));
+    gf_psd psd = {0.5 * D, spec->grains.polydispersity};
+    gf_particles *base = NULL;
+    GF_TRY(gf_particles_create(ctx, 256, &base));
+    gf_status st = gf_packing_rough_base(ctx, base, &psd, rho, 0.0, 0.0, L, 0.0, W, spec->seed);
+    for (size_t i = 0; st == GF_OK && i < base->n_local; ++i)
+        st = gf_particles_add(ctx, p, base->x_m[i], base->y_m[i], base->z_m[i], base->radius_m[i], rho, GF_P_GLUED,
+                              NULL);
+    gf_packing_spec ps = {.lo_m = {0, 0, 0}, .hi_m = {L, h_bed, W}, .periodic = {1, 0, 1}, .phi_target = phi,
+                          .psd = psd, .density_kg_m3 = rho, .gravity_m_s2 = spec->gravity_m_s2, .obstacles = base,
+                          .seed = spec->seed};
+    gf_packing_result pr;
+    if (st == GF_OK)
+        st = gf_packing_build(ctx, &ps, p, &pr);
+    gf_particles_destroy(&base);
+    GF_TRY(st);
+    gf_log(ctx, GF_LOG_INFO, "avalanche: bed of %zu grains at Phi %.4f (preparation), %d deposits, %.1f s",
+           pr.n_grains, pr.phi_local, pr.iterations, pr.cpu_s);
+    double t_settle = gf_run_spec_param(spec, "settle_time_nd", 5.0) * sqrt(D / spec->gravity_m_s2);
+    long steps = (long)ceil(t_settle / gf_run_spec_dt_s(spec));
+    if (steps > 0)
+        GF_TRY(gf_sim_advance(sim, steps));
+    gf_sim_reset_clock(sim);
+    /* fluid: free-slip lid, no-slip floor (default), periodic x and z (Izard §4.1.2.2) */
+    return gf_sim_set_fluid_bc(sim, 1, 1, GF_BC_FREE_SLIP);
+}
+
+static gf_status avalanche_start(gf_sim *sim)
+{
+    const gf_run_spec *s = gf_sim_spec(sim);
+    double th = gf_run_spec_param(s, "incline_deg", 25.0) * M_PI / 180.0;
+    double g[3] = {s->gravity_m_s2 * sin(th), -s->gravity_m_s2 * cos(th), 0.0};
+    return gf_sim_set_gravity(sim, g);
+}
+
+static gf_status avalanche_diagnose(gf_sim *sim, double *v)
+{
+    const gf_run_spec *s = gf_sim_spec(sim);
+    const gf_particles *p = gf_sim_particles(sim);
+    gf_measure_domain d;
+    gf_sim_box(sim, d.lo_m, d.hi_m, d.periodic);
+    double D = s->grains.diameter_m;
+    enum { MAX_SLABS = 4096 };
+    double phi[MAX_SLABS];
+    int n = (int)ceil((d.hi_m[1] - d.lo_m[1]) / (0.5 * D));
+    if (n > MAX_SLABS)
+        n = MAX_SLABS;
+    GF_TRY(gf_measure_profile_y(gf_sim_ctx(sim), p, &d, 0.0, 0.5 * D, n, phi, NULL));
+    double h = gf_measure_bed_height_m(phi, n, 0.0, 0.5 * D, 0.5), phi_bed = NAN;
+    if (h > 1.5 * D)
+        GF_TRY(gf_measure_profile_y(gf_sim_ctx(sim), p, &d, 0.5 * D, h - D, 1, &phi_bed, NULL));
+    v[0] = gf_measure_grain_flow_rate(p, &d);
+    v[1] = is_immersed(s) ? NAN : 0.0;
+    v[2] = phi_bed;
+    v[3] = h;
+    return GF_OK;
+}
+
+static gf_status avalanche_initial_packing(gf_sim *sim, double *phi_measured, double *phi_local)
+{
+    double v[4];
+    GF_TRY(avalanche_diagnose(sim, v));
+    *phi_measured = v[2];
+    *phi_local = v[2];
+    return GF_OK;
+}
+
+const gf_scene_desc gf_scene_avalanche = {
+    .name = "avalanche",
+    .caption = "granular avalanche on a rough periodic incline (Izard 2014 §2.1.3.3, ch. 4)",
+    .needs = GF_NEED_CONTACTS | GF_NEED_FLUID | GF_NEED_PACKING,
+    .params = avalanche_params,
+    .n_params = (int)(sizeof avalanche_params / sizeof avalanche_params[0]),
+    .default_end_time_nd = 200.0,
+    .build = avalanche_build,
+    .start = avalanche_start,
+    .n_diag = (int)(sizeof avalanche_diag / sizeof avalanche_diag[0]),
+    .diag = avalanche_diag,
+    .diagnose = avalanche_diagnose,
+    .done = NULL,
+    .initial_packing = avalanche_initial_packing,
+};

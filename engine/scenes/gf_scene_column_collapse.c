@@ -1,0 +1,259 @@
+/*
+ * Granular column collapse in a quasi-2D periodic slab (dry: Lajeunesse,
+ * Monnier & Homsy PoF 2005, Lube et al. PRE 2005, Staron & Hinch JFM 2005;
+ * immersed: Rondon, Pouliquen & Aussillous PoF 2011, Izard 2014 ch. 5).
+ *
+ * Axes: x streamwise (the collapse runs towards +x), y vertical, z
+ * transverse and periodic with width W (2-5 D in the thesis, Table 5.1).
+ * A column of length R0 and height H0 = a R0 rests against the back wall
+ * x = 0 and is held by a gate wall at x = R0 that start() removes at t = 0
+ * (Izard §5.2: the column collapses towards +x only; digest §7.3 [D]).
+ * The floor is a plane at y = 0, made rough (default) by glued grains
+ * centred on it (Izard §5.2 "fixed grains on the floor for roughness"). The
+ * column is prepared at the requested Phi_i by gf_packing (deposition with a
+ * tuned preparation friction, trimmed to H0), then re-equilibrated with the
+ * run's own contacts and gravity for settle_time_nd, and the clock is reset.
+ *
+ * The domain length follows the published run-out laws with a 30 % margin:
+ *     (R_inf - R0)/R0 = lambda1 a (a small),  lambda2 a^(2/3) (a large),
+ * taking the larger of 1.8 a and 2.3 a^(2/3) (Lajeunesse et al. 2005, the
+ * longer of the published quasi-2D laws), plus 4 D.
+ *
+ * Diagnostics (docs/output.md): front_position, the farthest x of the
+ * contiguous deposit whose solid height sum V_i/(dx W) is at least D/4 in
+ * bins of dx = D (a single saltating grain in a bin carries 0.17 D at W = 3D
+ * and does not count; gaps of one bin are tolerated); deposit_height, the
+ * highest grain top among those bins; packing_fraction, the sampled solid
+ * fraction of the initial column box [1.5D, R0 - 1.5D] x [1.5D, H0 - 1.5D].
+ * done(): after t > 2 T0 (T0 = sqrt(2 H0/g), the free-fall time of §5.3),
+ * the mean kinetic energy per mobile grain is below rest_energy x m g D
+ * (1e-4 by default: a grain at rest energy moves at ~0.014 sqrt(gD)).
+ *
+ * Fluid (immersed runs): free-slip top, no-slip floor and walls, periodic z
+ * (Izard §5.2); basal gauges at x = 13/16 R0 (the thesis' x = 13 D for
+ * R0 = 16 D, §5.5) and at x = R0/4, R0/2 under the column, y = 0.
+ * The campaign's aspect_ratio_a and phi_initial groups, when set (not NaN),
+ * take precedence over the scene parameters aspect_ratio and phi_target.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "coupling/gf_coupling.h"
+#include "particles/gf_packing.h"
+#include "scenes/gf_measure.h"
+#include "scenes/gf_scene.h"
+
+/* Walls are added in this order, so their ids are these (checked in build). */
+enum { WALL_FLOOR = 0, WALL_BACK, WALL_GATE, WALL_END, WALL_TOP };
+
+static const gf_param_info column_params[] = {
+    {"column_length_over_D", "1", 16.0, 4.0, 400.0, "column length R0 / D"},
+    {"aspect_ratio", "1", 0.5, 0.1, 8.0, "a = H0 / R0 (the campaign's aspect_ratio_a wins when set)"},
+    {"width_over_D", "1", 3.0, 1.0, 100.0, "transverse periodic width W / D"},
+    {"rough_base", "1", 1.0, 0.0, 1.0, "1: glued grains centred on the floor; 0: plain frictional floor"},
+    {"phi_target", "1", 0.60, 0.50, 0.645, "requested interior Phi_i (the campaign's phi_initial wins when set)"},
+    {"domain_length_over_R0", "1", 0.0, 0.0, 100.0, "domain length / R0; 0: from the published run-out law"},
+    {"settle_time_nd", "1", 5.0, 0.0, 1e4, "re-equilibration with the run's contacts before t = 0, sqrt(D/g)"},
+    {"rest_energy", "1", 1e-4, 0.0, 1.0, "done() when kinetic energy per grain < rest_energy m g D"},
+};
+
+static const gf_var_info column_diag[] = {
+    {"front_position", "m", "front position from the back wall", NULL},
+    {"deposit_height", "m", "maximum height of the deposit", NULL},
+    {"packing_fraction", "1", "solid fraction of the initial column region", NULL},
+};
+
+typedef struct column_geom {
+    double D, R0, H0, W, L, top, a, phi;
+    int rough;
+} column_geom;
+
+static void column_geom_of(const gf_run_spec *s, column_geom *g)
+{
+    g->D = s->grains.diameter_m;
+    g->a = isnan(s->aspect_ratio_a) ? gf_run_spec_param(s, "aspect_ratio", 0.5) : s->aspect_ratio_a;
+    g->phi = isnan(s->phi_initial) ? gf_run_spec_param(s, "phi_target", 0.6) : s->phi_initial;
+    g->R0 = gf_run_spec_param(s, "column_length_over_D", 16.0) * g->D;
+    g->H0 = g->a * g->R0;
+    g->W = gf_run_spec_param(s, "width_over_D", 3.0) * g->D;
+    g->rough = gf_run_spec_param(s, "rough_base", 1.0) > 0.5;
+    double lr = gf_run_spec_param(s, "domain_length_over_R0", 0.0);
+    if (lr > 0.0) {
+        g->L = lr * g->R0;
+    } else {
+        double runout = fmax(1.8 * g->a, 2.3 * pow(g->a, 2.0 / 3.0));
+        g->L = g->R0 * (1.0 + 1.3 * runout) + 4.0 * g->D;
+    }
+    int immersed = s->fluid.viscosity_Pa_s > 0.0 && strcmp(s->fluid.model, "none") != 0;
+    /* dry: room above the column; immersed: Table 5.1's fluid heights (30, 46, 54 D for H0 = 8, 16, 24 D) */
+    g->top = immersed ? 2.0 * g->H0 + 14.0 * g->D : g->H0 + 4.0 * g->D;
+}
+
+static double sphere_volume(double r) { return 4.0 / 3.0 * M_PI * r * r * r; }
+
+static gf_status column_build(gf_sim *sim, const gf_run_spec *spec)
+{
+    gf_ctx *ctx = gf_sim_ctx(sim);
+    gf_particles *p = gf_sim_particles(sim);
+    column_geom g;
+    column_geom_of(spec, &g);
+    if (g.R0 >= g.L)
+        return GF_FAIL(ctx, GF_ERR_CONFIG, "column_collapse: domain_length_over_R0 must exceed 1");
+    double lo[3] = {0, 0, 0}, hi[3] = {g.L, g.top, g.W}, grav[3] = {0, -spec->gravity_m_s2, 0};
+    int periodic[3] = {0, 0, 1};
+    GF_TRY(gf_sim_set_box(sim, lo, hi, periodic));
+    GF_TRY(gf_sim_set_gravity(sim, grav));
+    const double walls[5][6] = {{0, 0, 0, 0, 1, 0},    {0, 0, 0, 1, 0, 0},        {g.R0, 0, 0, -1, 0, 0},
+                                {g.L, 0, 0, -1, 0, 0}, {0, g.top, 0, 0, -1, 0}};
+    for (int w = 0; w < 5; ++w) {
+        int id = -1;
+        GF_TRY(gf_sim_add_wall(sim, walls[w], walls[w] + 3, spec->contact.wall_friction, &id));
+        if (id != w)
+            return GF_FAIL(ctx, GF_ERR_ARG, "column_collapse: wall %d got id %d (walls must be added first)", w, id);
+    }
+    gf_psd psd = {0.5 * g.D, spec->grains.polydispersity};
+    gf_particles *base = NULL;
+    GF_TRY(gf_particles_create(ctx, 256, &base));
+    gf_status st = GF_OK;
+    if (g.rough)
+        st = gf_packing_rough_base(ctx, base, &psd, spec->grains.density_kg_m3, 0.0, 0.0, g.L, 0.0, g.W, spec->seed);
+    /* all base grains go to the run; those under the column are the preparation's obstacles */
+    gf_particles *under = NULL;
+    if (st == GF_OK)
+        st = gf_particles_create(ctx, 256, &under);
+    for (size_t i = 0; st == GF_OK && i < base->n_local; ++i) {
+        st = gf_particles_add(ctx, p, base->x_m[i], base->y_m[i], base->z_m[i], base->radius_m[i],
+                              spec->grains.density_kg_m3, GF_P_GLUED, NULL);
+        if (st == GF_OK && base->x_m[i] < g.R0 + g.D)
+            st = gf_particles_add(ctx, under, base->x_m[i], base->y_m[i], base->z_m[i], base->radius_m[i],
+                                  spec->grains.density_kg_m3, GF_P_GLUED, NULL);
+    }
+    gf_packing_spec ps = {.lo_m = {0, 0, 0}, .hi_m = {g.R0, g.H0, g.W}, .periodic = {0, 0, 1}, .walls_x = 1,
+                          .phi_target = g.phi, .psd = psd, .density_kg_m3 = spec->grains.density_kg_m3,
+                          .gravity_m_s2 = spec->gravity_m_s2, .obstacles = under, .seed = spec->seed};
+    gf_packing_result pr;
+    if (st == GF_OK)
+        st = gf_packing_build(ctx, &ps, p, &pr);
+    gf_particles_destroy(&base);
+    gf_particles_destroy(&under);
+    GF_TRY(st);
+    gf_log(ctx, GF_LOG_INFO, "column_collapse: %zu grains at Phi_i %.4f (interior, preparation; global %.4f), %d deposits, %.1f s",
+           pr.n_grains, pr.phi_local, pr.phi_global, pr.iterations, pr.cpu_s);
+    /* re-equilibrate with the run's contacts behind the closed gate */
+    double t_settle = gf_run_spec_param(spec, "settle_time_nd", 5.0) * sqrt(g.D / spec->gravity_m_s2);
+    long steps = (long)ceil(t_settle / gf_run_spec_dt_s(spec));
+    if (steps > 0)
+        GF_TRY(gf_sim_advance(sim, steps));
+    gf_sim_reset_clock(sim);
+    /* fluid: free-slip top, no-slip floor and walls (default), periodic z */
+    GF_TRY(gf_sim_set_fluid_bc(sim, 1, 1, GF_BC_FREE_SLIP));
+    const double gauge_x[3] = {13.0 / 16.0, 0.25, 0.5};
+    const char *gauge_name[3] = {"base_x13_16R0", "base_x4_16R0", "base_x8_16R0"};
+    for (int k = 0; k < 3; ++k) {
+        double xg[3] = {gauge_x[k] * g.R0, 0.0, 0.5 * g.W};
+        GF_TRY(gf_sim_add_gauge(sim, gauge_name[k], xg));
+    }
+    /* dry collapse lasts a few T0 = sqrt(2 H0/g) plus the spreading; the rest test stops it earlier */
+    double T0 = sqrt(2.0 * g.H0 / spec->gravity_m_s2), t_grain = sqrt(g.D / spec->gravity_m_s2);
+    double t_end = 10.0 * T0 + 40.0 * t_grain;
+    if (gf_sim_scales(sim)->t_visq_s > 0.0)
+        t_end = fmax(t_end, 2.0e4 * gf_sim_scales(sim)->t_visq_s); /* Izard §5.5: static by ~18 000 T_visq */
+    return gf_sim_set_end_time(sim, t_end);
+}
+
+static gf_status column_start(gf_sim *sim)
+{
+    return gf_sim_set_wall_active(sim, WALL_GATE, 0); /* the gate is removed at t = 0 */
+}
+
+static gf_measure_domain column_domain(gf_sim *sim)
+{
+    gf_measure_domain d;
+    gf_sim_box(sim, d.lo_m, d.hi_m, d.periodic);
+    return d;
+}
+
+static double column_region_phi(gf_sim *sim, const column_geom *g)
+{
+    gf_measure_domain d = column_domain(sim);
+    double m = 1.5 * g->D;
+    double lo[3] = {m, m, d.lo_m[2]}, hi[3] = {g->R0 - m, g->H0 - m, d.hi_m[2]};
+    if (hi[1] - lo[1] < g->D) /* short columns: keep at least one D of height */
+        lo[1] = 0.5 * g->D, hi[1] = fmax(g->H0 - 0.5 * g->D, 1.5 * g->D);
+    return gf_measure_solid_fraction_box(gf_sim_particles(sim), &d, lo, hi, g->D / 8.0, 0);
+}
+
+static gf_status column_diagnose(gf_sim *sim, double *v)
+{
+    column_geom g;
+    column_geom_of(gf_sim_spec(sim), &g);
+    gf_measure_domain d = column_domain(sim);
+    int n_bins = (int)ceil(g.L / g.D);
+    gf_measure_deposit dep;
+    GF_TRY(gf_measure_deposit_profile(gf_sim_ctx(sim), gf_sim_particles(sim), &d, 0.0, g.D, n_bins, 0.25 * g.D, 1,
+                                      NULL, NULL, &dep));
+    v[0] = dep.front_m;
+    v[1] = dep.height_m;
+    v[2] = column_region_phi(sim, &g);
+    return GF_OK;
+}
+
+static int column_done(gf_sim *sim)
+{
+    const gf_run_spec *s = gf_sim_spec(sim);
+    column_geom g;
+    column_geom_of(s, &g);
+    double T0 = sqrt(2.0 * g.H0 / s->gravity_m_s2);
+    if (gf_sim_time_s(sim) < 2.0 * T0)
+        return 0;
+    const gf_particles *p = gf_sim_particles(sim);
+    size_t n = 0;
+    double m = 0.0;
+    for (size_t i = 0; i < p->n_local; ++i)
+        if (!(p->flags[i] & GF_P_GLUED))
+            ++n, m += p->mass_kg[i];
+    if (n == 0)
+        return 1;
+    double ke = gf_particles_kinetic_energy(p) / (double)n, m_mean = m / (double)n;
+    return ke < gf_run_spec_param(s, "rest_energy", 1e-4) * m_mean * s->gravity_m_s2 * g.D;
+}
+
+static gf_status column_initial_packing(gf_sim *sim, double *phi_measured, double *phi_local)
+{
+    column_geom g;
+    column_geom_of(gf_sim_spec(sim), &g);
+    const gf_particles *p = gf_sim_particles(sim);
+    double vol = 0.0;
+    for (size_t i = 0; i < p->n_local; ++i)
+        if (!(p->flags[i] & GF_P_GLUED) && p->x_m[i] < g.R0)
+            vol += sphere_volume(p->radius_m[i]);
+    *phi_measured = vol / (g.R0 * g.H0 * g.W); /* Rondon et al. 2011 estimate: solid volume / R0 H0 W */
+    *phi_local = column_region_phi(sim, &g);
+    return GF_OK;
+}
+
+static void column_geometry(const gf_run_spec *spec, double *length_m, double *height_m)
+{
+    column_geom g;
+    column_geom_of(spec, &g);
+    *length_m = g.R0;
+    *height_m = g.H0;
+}
+
+const gf_scene_desc gf_scene_column_collapse = {
+    .name = "column_collapse",
+    .caption = "granular column released by a gate, quasi-2D slab (Lajeunesse 2005; Rondon 2011; Izard 2014 ch. 5)",
+    .needs = GF_NEED_CONTACTS | GF_NEED_FLUID | GF_NEED_PROBES | GF_NEED_PACKING,
+    .params = column_params,
+    .n_params = (int)(sizeof column_params / sizeof column_params[0]),
+    .default_end_time_nd = 0.0,
+    .build = column_build,
+    .start = column_start,
+    .n_diag = (int)(sizeof column_diag / sizeof column_diag[0]),
+    .diag = column_diag,
+    .diagnose = column_diagnose,
+    .done = column_done,
+    .initial_packing = column_initial_packing,
+    .column_geometry = column_geometry,
+};

@@ -1,0 +1,205 @@
+/*
+ * Janssen silo: grains poured into a square box whose side walls are made of
+ * glued grains, settled under gravity (Izard 2014 §2.1.3.2; Janssen 1895).
+ *
+ * Geometry (seed: 0.1 x 0.1 x 5 m, R = 5 mm +- 10 %, 56 400 grains): a free
+ * box [0, S]^2 x [0, h] (S = side_over_D D, 10 D in the seed; h the fill
+ * height) whose four side walls are glued grains ("walls made of glued
+ * grains, so that the wall friction is under control"): a square lattice of
+ * glued grains on each side (add_glued_wall) whose largest grains touch the
+ * side plane; a plane floor y = 0 and a lid well above the fill.
+ * Frictionless plane walls through the glued centres are only a safety net
+ * (no vertical force, so they do not bias the wall load). S^2 and 4 S are the nominal cross-section and perimeter, and
+ * the seed's C_tot = N V / (S^2 h) uses the same box (grains nesting into
+ * the wall make the effective section slightly larger; the test measures it).
+ *
+ * Filling (the seed's "settling from a taller box"): gf_packing deposits the
+ * grains between the glued walls (its obstacles, with the run's grain
+ * friction mu_c on grain-wall contacts) at the requested interior packing
+ * fraction (seed C_tot = 0.59, tolerance phi_tolerance), so that the wall
+ * friction is mobilised by the filling itself (a column prepared
+ * between frictionless planes and handed to rough walls at rest carries no
+ * wall load; a violent pour from a tall gas overshoots and reverses it).
+ * The column then settles with the run's contacts for settle_time_nd, and
+ * the floor is lowered by floor_drop_over_D D in five steps (lower_floor:
+ * Vanel et al. PRL 84 1439, 2000 pull the bottom piston down so that the
+ * wall friction is fully mobilised upwards, Janssen's assumption); t = 0
+ * after. The achieved C_tot = N V / (S^2 h_top) is measured.
+ * done(): mean kinetic energy per mobile grain below 1e-6 m g D (static).
+ *
+ * Janssen law with a free top (thesis (2.11)-(2.15), erratum 6: P_m in the
+ * exponent): sigma(d) = rho_e g lambda (1 - exp(-d/lambda)) with
+ * lambda = S^2 / (f_p K 4 S) = S / (4 f_p K), d the depth below the top.
+ * The vertical stress profile is gf_measure_silo_vertical_stress (weight of
+ * the grains above a plane minus what the glued walls carry).
+ * No scalar diagnostics (docs/output.md: profiles go to janssen.nc).
+ */
+#include <math.h>
+
+#include "particles/gf_packing.h"
+#include "scenes/gf_measure.h"
+#include "scenes/gf_scene.h"
+
+static const gf_param_info janssen_params[] = {
+    {"side_over_D", "1", 10.0, 3.0, 1000.0, "box side S / D (seed: 0.1 m / 1 cm = 10)"},
+    {"fill_height_over_D", "1", 40.0, 3.0, 10000.0, "fill height h / D (seed: 500)"},
+    {"phi_target", "1", 0.59, 0.50, 0.645, "interior packing fraction requested (seed C_tot = 0.59)"},
+    {"phi_tolerance", "1", 0.01, 0.001, 0.05, "accepted |Phi - target| of the preparation (seed row 4: 0.01)"},
+    {"settle_time_nd", "1", 10.0, 0.0, 1e4, "settling with the run's contacts before t = 0, sqrt(D/g)"},
+    {"floor_drop_over_D", "1", 0.05, 0.0, 1.0, "floor lowered by this / D in 5 steps to mobilise wall friction"},
+};
+
+static double glued_radius_max(const gf_run_spec *s)
+{
+    return 0.5 * s->grains.diameter_m * (1.0 + s->grains.polydispersity);
+}
+
+/* One wall of glued grains whose inner face is the plane x_axis = face (`out` = -1 for the low side,
+ * +1 for the high side): a square lattice of spacing D (1 + p) in (t, y), t over [-r_w, S + r_w] so that
+ * the corners close, centres at face + out r_w (r_w = R (1 + p)): the largest grains touch the face, the
+ * others sit up to 2 p R behind it. A grain resting in a lattice hole keeps its centre ~0.1 D inside the
+ * face (holes of diagonal 0.55 D), so the section is S^2 within a few per cent. */
+static gf_status add_glued_wall(gf_ctx *ctx, gf_particles *p, const gf_run_spec *spec, int axis, double face,
+                                double out, double side, double height, gf_rng *rng)
+{
+    double D = spec->grains.diameter_m, pd = spec->grains.polydispersity, a = D * (1.0 + pd);
+    double rw = glued_radius_max(spec), span = side + 2.0 * rw;
+    int nt = (int)ceil(span / a) + 1, ny = (int)ceil(height / a);
+    double at_t = span / (nt - 1), n_pos = face + out * rw;
+    for (int j = 0; j < ny; ++j)
+        for (int k = 0; k < nt; ++k) {
+            if (axis == 2 && (k == 0 || k == nt - 1))
+                continue; /* the corner columns belong to the x walls */
+            double t = -rw + k * at_t, y = (j + 0.5) * a;
+            double r = 0.5 * D * (1.0 + pd * gf_rng_range(rng, -1.0, 1.0));
+            double x = axis == 0 ? n_pos : t, z = axis == 0 ? t : n_pos;
+            GF_TRY(gf_particles_add(ctx, p, x, y, z, r, spec->grains.density_kg_m3, GF_P_GLUED, NULL));
+        }
+    return GF_OK;
+}
+
+/* Mobilises the wall friction as Vanel et al. (PRL 2000) do by pulling the silo's bottom piston down:
+ * the floor (wall 0) is replaced by planes 1/N_DROP, 2/N_DROP, ... of floor_drop_over_D D lower, one at a
+ * time with 2 sqrt(D/g) of settling each, so the column slides down the glued walls by a small fraction
+ * of a grain and every wall contact reaches its Coulomb limit upwards (Janssen's assumption). */
+static gf_status lower_floor(gf_sim *sim, const gf_run_spec *spec)
+{
+    enum { N_DROP = 5 };
+    double D = spec->grains.diameter_m, drop = gf_run_spec_param(spec, "floor_drop_over_D", 0.05) * D;
+    if (!(drop > 0.0))
+        return GF_OK;
+    long steps = (long)ceil(2.0 * sqrt(D / spec->gravity_m_s2) / gf_run_spec_dt_s(spec));
+    int previous = 0; /* the floor y = 0 is wall 0 */
+    for (int k = 1; k <= N_DROP; ++k) {
+        double pt[3] = {0.0, -drop * k / N_DROP, 0.0}, up[3] = {0.0, 1.0, 0.0};
+        int id;
+        GF_TRY(gf_sim_add_wall(sim, pt, up, spec->contact.wall_friction, &id));
+        GF_TRY(gf_sim_set_wall_active(sim, previous, 0));
+        previous = id;
+        GF_TRY(gf_sim_advance(sim, steps));
+    }
+    return GF_OK;
+}
+
+static gf_status janssen_build(gf_sim *sim, const gf_run_spec *spec)
+{
+    gf_ctx *ctx = gf_sim_ctx(sim);
+    gf_particles *p = gf_sim_particles(sim);
+    double D = spec->grains.diameter_m, g = spec->gravity_m_s2;
+    double S = gf_run_spec_param(spec, "side_over_D", 10.0) * D;
+    double h = gf_run_spec_param(spec, "fill_height_over_D", 40.0) * D;
+    double top = h + 6.0 * D;
+    double rw = glued_radius_max(spec);
+    double lo[3] = {-2.0 * D, -D, -2.0 * D}, hi[3] = {S + 2.0 * D, top, S + 2.0 * D}, grav[3] = {0, -g, 0};
+    int periodic[3] = {0, 0, 0};
+    GF_TRY(gf_sim_set_box(sim, lo, hi, periodic));
+    GF_TRY(gf_sim_set_gravity(sim, grav));
+    const double planes[6][6] = {{0, 0, 0, 0, 1, 0},       {0, top, 0, 0, -1, 0},  {-rw, 0, 0, 1, 0, 0},
+                                 {S + rw, 0, 0, -1, 0, 0}, {0, 0, -rw, 0, 0, 1},   {0, 0, S + rw, 0, 0, -1}};
+    for (int w = 0; w < 6; ++w)
+        GF_TRY(gf_sim_add_wall(sim, planes[w], planes[w] + 3, w < 2 ? spec->contact.wall_friction : 0.0, NULL));
+    /* glued walls first (kept apart as the preparation's obstacles), then the deposit between them */
+    gf_rng *rng = gf_sim_rng(sim);
+    gf_particles *walls = NULL;
+    GF_TRY(gf_particles_create(ctx, 1024, &walls));
+    gf_status st = GF_OK;
+    for (int k = 0; k < 4 && st == GF_OK; ++k)
+        st = add_glued_wall(ctx, walls, spec, k < 2 ? 0 : 2, k % 2 ? S : 0.0, k % 2 ? 1.0 : -1.0, S, top, rng);
+    for (size_t i = 0; st == GF_OK && i < walls->n_local; ++i)
+        st = gf_particles_add(ctx, p, walls->x_m[i], walls->y_m[i], walls->z_m[i], walls->radius_m[i],
+                              spec->grains.density_kg_m3, GF_P_GLUED, NULL);
+    gf_packing_spec ps = {.lo_m = {0, 0, 0}, .hi_m = {S, h, S}, .periodic = {0, 0, 0}, .walls_x = 0, .walls_z = 0,
+                          .phi_target = isnan(spec->phi_initial) ? gf_run_spec_param(spec, "phi_target", 0.59)
+                                                                 : spec->phi_initial,
+                          .tolerance = gf_run_spec_param(spec, "phi_tolerance", 0.01),
+                          .psd = {0.5 * D, spec->grains.polydispersity}, .density_kg_m3 = spec->grains.density_kg_m3,
+                          .gravity_m_s2 = g, .obstacles = walls, .mu_obstacles = spec->contact.friction,
+                          .seed = spec->seed};
+    gf_packing_result pr;
+    if (st == GF_OK)
+        st = gf_packing_build(ctx, &ps, p, &pr);
+    gf_particles_destroy(&walls);
+    GF_TRY(st);
+    gf_log(ctx, GF_LOG_INFO, "janssen: %zu grains at Phi %.4f (preparation interior), %d deposits, %.1f s",
+           pr.n_grains, pr.phi_local, pr.iterations, pr.cpu_s);
+    double t_settle = gf_run_spec_param(spec, "settle_time_nd", 10.0) * sqrt(D / g);
+    long steps = (long)ceil(t_settle / gf_run_spec_dt_s(spec));
+    if (steps > 0)
+        GF_TRY(gf_sim_advance(sim, steps));
+    GF_TRY(lower_floor(sim, spec));
+    gf_sim_reset_clock(sim);
+    return GF_OK;
+}
+
+static int janssen_done(gf_sim *sim)
+{
+    const gf_run_spec *s = gf_sim_spec(sim);
+    const gf_particles *p = gf_sim_particles(sim);
+    size_t n = 0;
+    double m = 0.0;
+    for (size_t i = 0; i < p->n_local; ++i)
+        if (!(p->flags[i] & GF_P_GLUED))
+            ++n, m += p->mass_kg[i];
+    if (n == 0)
+        return 1;
+    return gf_particles_kinetic_energy(p) / (double)n < 1e-6 * (m / (double)n) * s->gravity_m_s2 * s->grains.diameter_m;
+}
+
+static gf_status janssen_initial_packing(gf_sim *sim, double *phi_measured, double *phi_local)
+{
+    /* C_tot of the seed: grain volume / (S^2 x fill height), the fill height being where the slab solid
+     * fraction falls to half its plateau; local: an interior box 1.5 D inside the walls, 3 D from the ends */
+    const gf_run_spec *s = gf_sim_spec(sim);
+    const gf_particles *p = gf_sim_particles(sim);
+    double D = s->grains.diameter_m, S = gf_run_spec_param(s, "side_over_D", 10.0) * D, vol = 0.0;
+    for (size_t i = 0; i < p->n_local; ++i)
+        if (!(p->flags[i] & GF_P_GLUED))
+            vol += 4.0 / 3.0 * M_PI * pow(p->radius_m[i], 3);
+    gf_measure_domain d;
+    gf_sim_box(sim, d.lo_m, d.hi_m, d.periodic);
+    enum { MAX_SLABS = 8192 };
+    static _Thread_local double phi[MAX_SLABS];
+    int n = (int)fmin(MAX_SLABS, ceil(d.hi_m[1] / D));
+    GF_TRY(gf_measure_profile_y(gf_sim_ctx(sim), p, &d, 0.0, D, n, phi, NULL));
+    double h = gf_measure_bed_height_m(phi, n, 0.0, D, 0.5);
+    *phi_measured = vol / (S * S * h);
+    double lo[3] = {1.5 * D, 3.0 * D, 1.5 * D}, hi[3] = {S - 1.5 * D, h - 3.0 * D, S - 1.5 * D};
+    *phi_local = gf_measure_solid_fraction_box(p, &d, lo, hi, D / 8.0, 0);
+    return GF_OK;
+}
+
+const gf_scene_desc gf_scene_janssen = {
+    .name = "janssen",
+    .caption = "Janssen silo with walls of glued grains, settled at rest (Izard 2014 §2.1.3.2)",
+    .needs = GF_NEED_CONTACTS | GF_NEED_PACKING,
+    .params = janssen_params,
+    .n_params = (int)(sizeof janssen_params / sizeof janssen_params[0]),
+    .default_end_time_nd = 50.0,
+    .build = janssen_build,
+    .start = NULL,
+    .n_diag = 0,
+    .diag = NULL,
+    .diagnose = NULL,
+    .done = janssen_done,
+    .initial_packing = janssen_initial_packing,
+};

@@ -1,0 +1,291 @@
+/*
+ * The configuration schema table and the reader built on it (gf_spec_schema.h).
+ *
+ * Ranges are generous physical bounds, not preferences: they reject typos
+ * (a diameter of 7.6 instead of 7.6e-3 m is a boulder) and values that make
+ * the model meaningless (restitution above 1, a negative viscosity), while
+ * leaving every regime of the seeds (Izard 2014 Tables 4.2, 5.1) inside.
+ * The stability of the time step is the engine's check (gf_sim_create), not
+ * the schema's, because it depends on several values at once.
+ */
+#include "campaign/gf_spec_schema.h"
+
+#include <math.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "scenes/gf_scene.h"
+
+static const char *const contact_laws[] = {"linear", "hertz", NULL};
+static const char *const fluid_models[] = {"none", "unresolved", "resolved", "auto", NULL};
+static const char *const drag_laws[] = {"di_felice", "beetstra", "tenneti", NULL};
+
+#define D(sec, k, field, lo, hi, open, unit, doc) \
+    {sec, k, GF_FIELD_DOUBLE, offsetof(gf_run_spec, field), 0, lo, hi, open, unit, NULL, doc}
+#define B(sec, k, field, doc) {sec, k, GF_FIELD_BOOL, offsetof(gf_run_spec, field), 0, 0, 1, 0, "", NULL, doc}
+#define N(sec, k, field, choices, doc) \
+    {sec, k, GF_FIELD_NAME, offsetof(gf_run_spec, field), GF_NAME_LEN, 0, 0, 0, "", choices, doc}
+
+static const gf_spec_field fields[] = {
+    {"", "seed", GF_FIELD_U64, offsetof(gf_run_spec, seed), 0, 0, 0, 0, "", NULL, "RNG seed (packing, radii)"},
+    D("", "end_time", end_time_nd, 0, 1e7, 0, "1", "end time in sqrt(D/g); 0: the scene's default"),
+    D("", "gravity", gravity_m_s2, 0, 1e3, 1, "m s-2", "|g|"),
+    D("grains", "diameter_m", grains.diameter_m, 0, 1.0, 1, "m", "mean grain diameter D"),
+    D("grains", "polydispersity", grains.polydispersity, 0, 0.5, 0, "1", "radii uniform in R(1 -+ p)"),
+    D("grains", "density_kg_m3", grains.density_kg_m3, 0, 1e5, 1, "kg m-3", "grain density rho_p"),
+    N("contact", "law", contact.law, contact_laws, "normal force law"),
+    D("contact", "t_contact_nd", contact.t_contact_nd, 0, 1.0, 1, "1", "contact duration t_c sqrt(g/D)"),
+    D("contact", "restitution", contact.restitution, 0, 1.0, 1, "1", "dry normal restitution eps_max"),
+    D("contact", "friction", contact.friction, 0, 10.0, 0, "1", "grain-grain Coulomb friction mu_c"),
+    D("contact", "wall_friction", contact.wall_friction, 0, 10.0, 0, "1", "grain-wall friction"),
+    D("contact", "kt_over_kn", contact.kt_over_kn, 0, 10.0, 0, "1", "tangential / normal stiffness"),
+    B("contact", "allow_attraction", contact.allow_attraction, "keep the attractive part of the dashpot"),
+    D("contact", "dt_over_tc", contact.dt_over_tc, 0, 0.5, 1, "1", "DEM time step / t_c"),
+    D("contact", "skin_over_D", contact.skin_over_D, 0, 5.0, 0, "1", "Verlet skin / D"),
+    N("fluid", "model", fluid.model, fluid_models, "fluid tier"),
+    D("fluid", "density_kg_m3", fluid.density_kg_m3, 0, 1e5, 0, "kg m-3", "fluid density rho_f (0: dry)"),
+    D("fluid", "viscosity_Pa_s", fluid.viscosity_Pa_s, 0, 1e6, 0, "Pa s", "dynamic viscosity eta_f (0: dry)"),
+    N("fluid", "drag", fluid.drag, drag_laws, "drag closure (unresolved tier)"),
+    D("fluid", "cell_over_D", fluid.cell_over_D, 0, 100.0, 1, "1", "fluid cell size / D"),
+    D("fluid", "cfl", fluid.cfl, 0, 1.0, 1, "1", "advective CFL bound"),
+    B("fluid", "lubrication", fluid.lubrication, "Brenner normal lubrication"),
+    D("fluid", "roughness_over_R", fluid.roughness_over_R, 0, 1.0, 0, "1", "effective roughness eta_e / R"),
+    D("fluid", "lub_cutoff_over_R", fluid.lub_cutoff_over_R, 0, 10.0, 0, "1", "lubrication range / R"),
+    D("output", "interval_nd", output.interval_nd, 0, 1e7, 1, "1", "output interval in sqrt(D/g)"),
+    B("output", "particles", output.particles, "write particles.nc"),
+    B("output", "fields", output.fields, "write fields.nc"),
+    B("output", "probes", output.probes, "write probes.nc"),
+    B("output", "diagnostics", output.diagnostics, "write diagnostics.nc"),
+    D("output", "checkpoint_interval_nd", output.checkpoint_interval_nd, 0, 1e7, 0, "1",
+      "periodic checkpoint interval in sqrt(D/g); 0: none"),
+};
+
+const gf_spec_field *gf_spec_fields(int *n)
+{
+    *n = (int)(sizeof fields / sizeof *fields);
+    return fields;
+}
+
+const gf_spec_field *gf_spec_field_find(const char *section, const char *key)
+{
+    for (size_t i = 0; i < sizeof fields / sizeof *fields; ++i)
+        if (strcmp(fields[i].section, section) == 0 && strcmp(fields[i].key, key) == 0)
+            return &fields[i];
+    return NULL;
+}
+
+void gf_spec_field_format(const gf_spec_field *f, const gf_run_spec *spec, char *buf, size_t n)
+{
+    const char *base = (const char *)spec + f->offset;
+    switch (f->type) {
+    case GF_FIELD_DOUBLE:
+        snprintf(buf, n, "%.17g", *(const double *)base);
+        break;
+    case GF_FIELD_BOOL:
+        snprintf(buf, n, "%s", *(const int *)base ? "true" : "false");
+        break;
+    case GF_FIELD_U64:
+        snprintf(buf, n, "%llu", (unsigned long long)*(const uint64_t *)base);
+        break;
+    case GF_FIELD_NAME:
+        snprintf(buf, n, "%s", base);
+        break;
+    }
+}
+
+const char *const gf_group_names[4] = {"St", "r", "a", "Phi_i"};
+
+double *gf_spec_group(gf_run_spec *spec, int i)
+{
+    switch (i) {
+    case 0: return &spec->stokes_St;
+    case 1: return &spec->density_ratio_r;
+    case 2: return &spec->aspect_ratio_a;
+    default: return &spec->phi_initial;
+    }
+}
+
+int gf_group_value_ok(int i, double v, const char **why)
+{
+    /* Phi_i: random loose packing of spheres is ~0.55, random close ~0.64,
+     * crystalline 0.74; beyond that no packing exists. */
+    static const double lo[4] = {0, 0, 0, 0}, hi[4] = {1e12, 1e6, 1e4, 0.7405};
+    static const char *const text[4] = {"St must be in (0, 1e12]", "r must be in (0, 1e6]",
+                                        "a must be in (0, 1e4]", "Phi_i must be in (0, 0.7405] (hexagonal packing)"};
+    if (isfinite(v) && v > lo[i] && v <= hi[i])
+        return 1;
+    *why = text[i];
+    return 0;
+}
+
+static gf_status read_field(gf_ctx *ctx, const gf_cfg_doc *doc, const gf_spec_field *f, const gf_cfg_node *node,
+                            gf_run_spec *spec)
+{
+    char *base = (char *)spec + f->offset;
+    switch (f->type) {
+    case GF_FIELD_DOUBLE: {
+        double v;
+        GF_TRY(gf_cfg_to_double(ctx, doc, node, f->min, f->max, &v));
+        if (f->min_open && !(v > f->min))
+            return gf_cfg_fail(ctx, GF_ERR_CONFIG, doc, node, 0, "%s = %g is out of range: must be > %g", f->key, v,
+                               f->min);
+        *(double *)base = v;
+        return GF_OK;
+    }
+    case GF_FIELD_BOOL:
+        return gf_cfg_to_bool(ctx, doc, node, (int *)base);
+    case GF_FIELD_U64:
+        return gf_cfg_to_u64(ctx, doc, node, (uint64_t *)base);
+    case GF_FIELD_NAME:
+        return gf_cfg_to_name(ctx, doc, node, f->choices, base, f->size);
+    }
+    return GF_OK;
+}
+
+static gf_status read_section(gf_ctx *ctx, const gf_cfg_doc *doc, const gf_cfg_node *map, const char *section,
+                              gf_run_spec *spec)
+{
+    GF_TRY(gf_cfg_expect(ctx, doc, map, GF_CFG_MAP));
+    const char *keys[64];
+    int nk = 0, n;
+    const gf_spec_field *all = gf_spec_fields(&n);
+    for (int i = 0; i < n && nk < 63; ++i)
+        if (strcmp(all[i].section, section) == 0)
+            keys[nk++] = all[i].key;
+    keys[nk] = NULL;
+    for (int i = 0; i < map->n_items; ++i) {
+        const gf_cfg_node *item = map->items[i];
+        const gf_spec_field *f = gf_spec_field_find(section, item->key);
+        if (!f)
+            return gf_cfg_fail_unknown_key(ctx, doc, item, section, keys);
+        GF_TRY(read_field(ctx, doc, f, item, spec));
+    }
+    return GF_OK;
+}
+
+/* Scene parameters of one map (scene: or domain:), checked against the scene's table. */
+static gf_status read_scene_params(gf_ctx *ctx, const gf_cfg_doc *doc, const gf_cfg_node *map,
+                                   const gf_scene_desc *scene, const char *section, gf_run_spec *spec)
+{
+    GF_TRY(gf_cfg_expect(ctx, doc, map, GF_CFG_MAP));
+    const char *keys[GF_MAX_SCENE_PARAMS + 2];
+    int nk = 0;
+    if (strcmp(section, "scene") == 0)
+        keys[nk++] = "name";
+    for (int i = 0; i < scene->n_params && nk < GF_MAX_SCENE_PARAMS + 1; ++i)
+        keys[nk++] = scene->params[i].key;
+    keys[nk] = NULL;
+    for (int i = 0; i < map->n_items; ++i) {
+        const gf_cfg_node *item = map->items[i];
+        if (strcmp(section, "scene") == 0 && strcmp(item->key, "name") == 0)
+            continue;
+        const gf_param_info *info = NULL;
+        for (int j = 0; j < scene->n_params; ++j)
+            if (strcmp(scene->params[j].key, item->key) == 0)
+                info = &scene->params[j];
+        if (!info) {
+            char where[80];
+            snprintf(where, sizeof where, "%s (scene %s)", section, scene->name);
+            return gf_cfg_fail_unknown_key(ctx, doc, item, where, keys);
+        }
+        double v;
+        int flag;
+        if (item->kind == GF_CFG_SCALAR && !item->quoted &&
+            (strcmp(item->text, "true") == 0 || strcmp(item->text, "false") == 0)) {
+            GF_TRY(gf_cfg_to_bool(ctx, doc, item, &flag));
+            v = flag;
+        } else {
+            GF_TRY(gf_cfg_to_double(ctx, doc, item, -INFINITY, INFINITY, &v));
+        }
+        if (v < info->min || v > info->max)
+            return gf_cfg_fail(ctx, GF_ERR_CONFIG, doc, item, 0, "%s = %g %s is out of range [%g, %g]%s%s",
+                               item->key, v, info->unit && strcmp(info->unit, "1") ? info->unit : "", info->min,
+                               info->max, info->doc ? ": " : "", info->doc ? info->doc : "");
+        GF_TRY(gf_run_spec_set_param(ctx, spec, item->key, v));
+    }
+    return GF_OK;
+}
+
+static gf_status read_groups(gf_ctx *ctx, const gf_cfg_doc *doc, const gf_cfg_node *map, gf_run_spec *spec)
+{
+    GF_TRY(gf_cfg_expect(ctx, doc, map, GF_CFG_MAP));
+    const char *keys[] = {"St", "r", "a", "Phi_i", NULL};
+    for (int i = 0; i < map->n_items; ++i) {
+        const gf_cfg_node *item = map->items[i];
+        int g = -1;
+        for (int j = 0; j < 4; ++j)
+            if (strcmp(item->key, gf_group_names[j]) == 0)
+                g = j;
+        if (g < 0)
+            return gf_cfg_fail_unknown_key(ctx, doc, item, "groups", keys);
+        double v;
+        const char *why;
+        GF_TRY(gf_cfg_to_double(ctx, doc, item, -INFINITY, INFINITY, &v));
+        if (!gf_group_value_ok(g, v, &why))
+            return gf_cfg_fail(ctx, GF_ERR_CONFIG, doc, item, 0, "%s = %g: %s", item->key, v, why);
+        *gf_spec_group(spec, g) = v;
+    }
+    return GF_OK;
+}
+
+static const char *const top_keys[] = {"name",  "description", "seed",   "end_time", "gravity",
+                                       "scene", "grains",      "contact", "fluid",   "output",
+                                       "domain", "groups",     "grid",   "variants", NULL};
+
+gf_status gf_spec_read(gf_ctx *ctx, const gf_cfg_doc *doc, const gf_cfg_node *root, gf_run_spec *spec)
+{
+    gf_run_spec_defaults(spec);
+    if (!root)
+        return gf_cfg_fail(ctx, GF_ERR_CONFIG, doc, NULL, 0, "empty configuration (expected scene:, grains:, ...)");
+    if (root->kind != GF_CFG_MAP)
+        return gf_cfg_fail(ctx, GF_ERR_CONFIG, doc, root, 0,
+                           "a configuration is a mapping of sections (scene:, grains:, ...), not %s",
+                           root->kind == GF_CFG_SEQ ? "a list" : "a single value");
+    for (int i = 0; i < root->n_items; ++i) {
+        const gf_cfg_node *item = root->items[i];
+        int known = 0;
+        for (const char *const *k = top_keys; *k; ++k)
+            known |= strcmp(*k, item->key) == 0;
+        if (!known)
+            return gf_cfg_fail_unknown_key(ctx, doc, item, "the top level", top_keys);
+    }
+
+    /* The scene first: its table decides which scene keys exist. */
+    const gf_cfg_node *scene_node = gf_cfg_get(root, "scene");
+    if (!scene_node)
+        return gf_cfg_fail(ctx, GF_ERR_CONFIG, doc, root, 0, "missing section 'scene:' (e.g. scene: {name: %s})",
+                           spec->scene);
+    const gf_cfg_node *name_node = scene_node->kind == GF_CFG_MAP ? gf_cfg_get(scene_node, "name") : scene_node;
+    if (!name_node)
+        return gf_cfg_fail(ctx, GF_ERR_CONFIG, doc, scene_node, 0, "scene: missing 'name'");
+    int n_scenes = 0;
+    const gf_scene_desc *const *all = gf_scene_all(&n_scenes);
+    const char *names[64];
+    int nn = 0;
+    for (int i = 0; i < n_scenes && nn < 63; ++i)
+        names[nn++] = all[i]->name;
+    names[nn] = NULL;
+    GF_TRY(gf_cfg_to_name(ctx, doc, name_node, names, spec->scene, sizeof spec->scene));
+    const gf_scene_desc *scene = gf_scene_find(spec->scene);
+    if (!scene)
+        return gf_cfg_fail(ctx, GF_ERR_CONFIG, doc, name_node, 0, "unknown scene '%s'", spec->scene);
+
+    for (int i = 0; i < root->n_items; ++i) {
+        const gf_cfg_node *item = root->items[i];
+        const char *k = item->key;
+        if (strcmp(k, "scene") == 0 && item->kind == GF_CFG_MAP)
+            GF_TRY(read_scene_params(ctx, doc, item, scene, "scene", spec));
+        else if (strcmp(k, "domain") == 0)
+            GF_TRY(read_scene_params(ctx, doc, item, scene, "domain", spec));
+        else if (strcmp(k, "groups") == 0)
+            GF_TRY(read_groups(ctx, doc, item, spec));
+        else if (!strcmp(k, "grains") || !strcmp(k, "contact") || !strcmp(k, "fluid") || !strcmp(k, "output"))
+            GF_TRY(read_section(ctx, doc, item, k, spec));
+        else if (gf_spec_field_find("", k))
+            GF_TRY(read_field(ctx, doc, gf_spec_field_find("", k), item, spec));
+        else if (strcmp(k, "name") == 0 || strcmp(k, "description") == 0)
+            GF_TRY(gf_cfg_expect(ctx, doc, item, GF_CFG_SCALAR));
+    }
+    return GF_OK;
+}

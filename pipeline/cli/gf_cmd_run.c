@@ -1,0 +1,112 @@
+/* `grainflow run SCENE.yaml`: one run, in this process, with a progress line. */
+#include <stdio.h>
+#include <string.h>
+
+#include "cli/gf_cli.h"
+#include "core/gf_timer.h"
+#include "schedule/gf_ledger.h"
+#include "schedule/gf_run_exec.h"
+#include "schedule/gf_sched.h"
+
+#define MAX_SETS 64
+
+static const char help[] =
+    "usage: grainflow run SCENE.yaml [-o DIR] [--set key.path=value ...]\n"
+    "\n"
+    "Runs the one run SCENE.yaml describes into DIR/<name>/<run-id>/ (run.yaml,\n"
+    "particles.nc, diagnostics.nc, probes.nc, fields.nc, status). A run.yaml\n"
+    "written by an earlier run reproduces it exactly (same run id). A file with a\n"
+    "grid or variants is a campaign: use grainflow campaign.\n"
+    "\n"
+    "options:\n"
+    "  -o, --output DIR     output directory (default: runs)\n"
+    "      --set KEY=VALUE  override a value, e.g. --set scene.aspect_ratio=2 --set fluid.model=none\n"
+    "  -q, --quiet          no progress line\n"
+    "\n"
+    "exit status: 0 done, 1 the run failed, 2 usage/configuration error\n";
+
+typedef struct progress_state {
+    int tty;
+    const char *run_id;
+    gf_progress progress;
+} progress_state;
+
+static void on_progress(void *user, double t_s, double t_end_s, double steps_per_s)
+{
+    progress_state *p = user;
+    gf_progress_update(&p->progress, t_s, t_end_s, steps_per_s);
+    if (!p->tty)
+        return;
+    char text[160];
+    gf_sched_progress_text(&p->progress, text, sizeof text);
+    printf("\r  %s  %s\033[K", p->run_id, text);
+    fflush(stdout);
+}
+
+int gf_cmd_run(int argc, char **argv)
+{
+    const char *file = NULL, *out_dir = "runs", *v, *sets[MAX_SETS];
+    int n_sets = 0, quiet = 0;
+    for (int i = 1; i < argc; ++i) {
+        int m;
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+            fputs(help, stdout);
+            return GF_EXIT_OK;
+        } else if ((m = gf_cli_opt_value(argc, argv, &i, "-o", "--output", &out_dir))) {
+            if (m < 0)
+                return gf_cli_usage_error("run", "-o needs a directory");
+        } else if ((m = gf_cli_opt_value(argc, argv, &i, NULL, "--set", &v))) {
+            if (m < 0 || n_sets == MAX_SETS)
+                return gf_cli_usage_error("run", "--set needs KEY=VALUE (at most %d)", MAX_SETS);
+            sets[n_sets++] = v;
+        } else if (!strcmp(argv[i], "-q") || !strcmp(argv[i], "--quiet")) {
+            quiet = 1;
+        } else if (argv[i][0] == '-' && argv[i][1]) {
+            return gf_cli_usage_error("run", "unknown option '%s'", argv[i]);
+        } else if (!file) {
+            file = argv[i];
+        } else {
+            return gf_cli_usage_error("run", "unexpected argument '%s'", argv[i]);
+        }
+    }
+    if (!file)
+        return gf_cli_usage_error("run", "missing SCENE.yaml");
+    gf_ctx ctx = {.log_level = GF_LOG_WARN};
+    gf_campaign *c = NULL;
+    if (gf_campaign_load_file(&ctx, file, sets, n_sets, &c) != GF_OK) {
+        gf_cli_print_error(&ctx);
+        return GF_EXIT_USAGE;
+    }
+    if (c->n_runs != 1) {
+        fprintf(stderr, "%s: describes %d runs (a grid or variants): use grainflow campaign\n", file, c->n_runs);
+        gf_campaign_destroy(&c);
+        return GF_EXIT_USAGE;
+    }
+    const gf_run_spec *spec = &c->runs[0].spec;
+    char dir[4200];
+    gf_ledger_run_dir(out_dir, c->name, spec->run_id, dir, sizeof dir);
+    progress_state ps = {.tty = gf_cli_is_tty() && !quiet, .run_id = spec->run_id,
+                         .progress = {.started_s = gf_wtime()}};
+    gf_run_exec_opts eo = {.run_dir = dir,
+                           .campaign = c->name,
+                           .progress = on_progress,
+                           .progress_user = &ps,
+                           .interrupt = gf_cli_catch_signals()};
+    gf_run_result res;
+    gf_status st = gf_run_execute(&ctx, spec, &eo, &res);
+    if (ps.tty)
+        printf("\r\033[K");
+    int code = GF_EXIT_OK;
+    if (st != GF_OK) {
+        gf_cli_print_error(&ctx);
+        code = GF_EXIT_RUN_FAILED;
+    } else if (res.status != GF_OK) {
+        fprintf(stderr, "run %s failed: %s\n", spec->run_id, res.message);
+        code = GF_EXIT_RUN_FAILED;
+    } else if (!quiet) {
+        printf("run %s done: %ld grains, %ld steps, t = %.4g s in %.1f s wall -> %s\n", spec->run_id,
+               res.n_particles, res.steps, res.sim_time_s, res.wall_s, dir);
+    }
+    gf_campaign_destroy(&c);
+    return code;
+}

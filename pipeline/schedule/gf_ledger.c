@@ -1,0 +1,116 @@
+/* Run directories, status files and run.yaml; see gf_ledger.h. */
+#include "schedule/gf_ledger.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "campaign/gf_spec_text.h"
+
+gf_status gf_ledger_mkdirs(gf_ctx *ctx, const char *path)
+{
+    char buf[4096];
+    if (snprintf(buf, sizeof buf, "%s", path) >= (int)sizeof buf)
+        return GF_FAIL(ctx, GF_ERR_IO, "%s: path too long", path);
+    for (char *p = buf + 1;; ++p) {
+        if (*p == '/' || *p == '\0') {
+            char c = *p;
+            *p = '\0';
+            if (mkdir(buf, 0777) != 0 && errno != EEXIST)
+                return GF_FAIL(ctx, GF_ERR_IO, "%s: cannot create directory: %s", buf, strerror(errno));
+            *p = c;
+            if (!c)
+                break;
+        }
+    }
+    struct stat sb;
+    if (stat(path, &sb) != 0 || !S_ISDIR(sb.st_mode))
+        return GF_FAIL(ctx, GF_ERR_IO, "%s: not a directory", path);
+    return GF_OK;
+}
+
+gf_status gf_ledger_write_atomic(gf_ctx *ctx, const char *path, const char *text, size_t len)
+{
+    char tmp[4200];
+    snprintf(tmp, sizeof tmp, "%s.tmp.%ld", path, (long)getpid());
+    FILE *f = fopen(tmp, "wb");
+    if (!f)
+        return GF_FAIL(ctx, GF_ERR_IO, "%s: cannot write: %s", tmp, strerror(errno));
+    int ok = fwrite(text, 1, len, f) == len;
+    ok &= fflush(f) == 0;
+    ok &= fsync(fileno(f)) == 0 || errno == EINVAL;
+    ok &= fclose(f) == 0;
+    if (!ok || rename(tmp, path) != 0) {
+        int e = errno;
+        remove(tmp);
+        return GF_FAIL(ctx, GF_ERR_IO, "%s: cannot write: %s", path, strerror(e));
+    }
+    return GF_OK;
+}
+
+void gf_ledger_run_dir(const char *out_dir, const char *campaign, const char *run_id, char *buf, size_t n)
+{
+    snprintf(buf, n, "%s/%s/%s", out_dir, campaign, run_id);
+}
+
+gf_run_state gf_ledger_state(const char *run_dir, char *reason, size_t n)
+{
+    char path[4200], line[600] = "";
+    if (n)
+        reason[0] = '\0';
+    snprintf(path, sizeof path, "%s/status", run_dir);
+    FILE *f = fopen(path, "r");
+    if (!f)
+        return GF_RUN_NEW;
+    if (!fgets(line, sizeof line, f))
+        line[0] = '\0';
+    fclose(f);
+    line[strcspn(line, "\n")] = '\0';
+    if (strcmp(line, "done") == 0)
+        return GF_RUN_DONE;
+    if (n)
+        snprintf(reason, n, "%s", strncmp(line, "failed: ", 8) == 0 ? line + 8 : line);
+    return GF_RUN_FAILED;
+}
+
+gf_status gf_ledger_set_done(gf_ctx *ctx, const char *run_dir)
+{
+    char path[4200];
+    snprintf(path, sizeof path, "%s/status", run_dir);
+    return gf_ledger_write_atomic(ctx, path, "done\n", 5);
+}
+
+gf_status gf_ledger_set_failed(gf_ctx *ctx, const char *run_dir, const char *reason)
+{
+    char path[4200], text[700];
+    snprintf(path, sizeof path, "%s/status", run_dir);
+    int len = snprintf(text, sizeof text, "failed: %s", reason && *reason ? reason : "unknown");
+    if (len >= (int)sizeof text)
+        len = (int)sizeof text - 2;
+    for (int i = 8; i < len; ++i) /* the status is one line */
+        if (text[i] == '\n')
+            text[i] = ' ';
+    text[len++] = '\n';
+    return gf_ledger_write_atomic(ctx, path, text, (size_t)len);
+}
+
+char *gf_ledger_run_yaml(const gf_run_spec *spec, const char *campaign, size_t *len)
+{
+    char body[GF_SPEC_TEXT_MAX];
+    size_t nb = gf_spec_text(spec, body, sizeof body);
+    size_t cap = nb + 512;
+    char *text = malloc(cap);
+    if (!text)
+        return NULL;
+    int nh = snprintf(text, cap,
+                      "# grainflow %s (%s): resolved spec of run %s.\n"
+                      "# Every value is explicit; `grainflow run run.yaml` reproduces the run (same id).\n"
+                      "name: %s\n",
+                      GF_VERSION, GF_GIT_HASH, spec->run_id, campaign);
+    memcpy(text + nh, body, nb + 1);
+    *len = (size_t)nh + nb;
+    return text;
+}

@@ -1,0 +1,59 @@
+/* One run in this process; see gf_run_exec.h. */
+#include "schedule/gf_run_exec.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/gf_timer.h"
+#include "gf_sim.h"
+#include "schedule/gf_ledger.h"
+
+gf_status gf_run_execute(gf_ctx *ctx, const gf_run_spec *spec, const gf_run_exec_opts *opt, gf_run_result *res)
+{
+    memset(res, 0, sizeof *res);
+    char *yaml = NULL;
+    size_t yaml_len = 0;
+    if (opt->run_dir) {
+        GF_TRY(gf_ledger_mkdirs(ctx, opt->run_dir));
+        yaml = gf_ledger_run_yaml(spec, opt->campaign ? opt->campaign : "run", &yaml_len);
+        if (!yaml)
+            return GF_FAIL(ctx, GF_ERR_NOMEM, "out of memory");
+        char path[4200];
+        snprintf(path, sizeof path, "%s/run.yaml", opt->run_dir);
+        gf_status st = gf_ledger_write_atomic(ctx, path, yaml, yaml_len);
+        if (st != GF_OK) {
+            free(yaml);
+            return st;
+        }
+    }
+    gf_ctx run_ctx = {.log_level = ctx->log_level};
+    gf_sim_options so = {.output_dir = opt->run_dir,
+                         .resolved_yaml = yaml,
+                         .n_threads = opt->n_threads,
+                         .progress = opt->progress,
+                         .progress_user = opt->progress_user,
+                         .interrupt = opt->interrupt};
+    const double t0 = gf_wtime();
+    gf_sim *sim = NULL;
+    gf_status st = gf_sim_create(&run_ctx, spec, &so, &sim);
+    if (st == GF_OK) {
+        res->n_particles = (long)gf_sim_particles(sim)->n_local;
+        st = gf_sim_run(sim);
+        res->steps = gf_sim_step_count(sim);
+        res->sim_time_s = gf_sim_time_s(sim);
+        const gf_timers *t = gf_sim_timers(sim);
+        for (int i = 0; i < GF_TIMER_COUNT && i < 16; ++i)
+            res->timers_s[i] = t->elapsed_s[i];
+    }
+    gf_sim_destroy(&sim);
+    res->wall_s = gf_wtime() - t0;
+    res->status = st;
+    free(yaml);
+    if (st != GF_OK)
+        snprintf(res->message, sizeof res->message, "%s: %s", gf_status_str(st),
+                 run_ctx.last_msg[0] ? run_ctx.last_msg : "no message");
+    if (!opt->run_dir)
+        return GF_OK;
+    return st == GF_OK ? gf_ledger_set_done(ctx, opt->run_dir) : gf_ledger_set_failed(ctx, opt->run_dir, res->message);
+}

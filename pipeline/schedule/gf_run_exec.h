@@ -1,0 +1,36 @@
+/*
+ * One run, in this process: write run.yaml, build the scene, run it, record
+ * the status. Used by every scheduler (worker pool child, MPI rank, Slurm
+ * array task, `grainflow run`) so that a run is the same whatever launched it.
+ */
+#ifndef GF_RUN_EXEC_H
+#define GF_RUN_EXEC_H
+
+#include "campaign/gf_campaign.h"
+#include "core/gf_status.h"
+
+typedef struct gf_run_exec_opts {
+    const char *run_dir;       /* NULL: no files at all (benchmarks) */
+    const char *campaign;      /* campaign name, for run.yaml */
+    int n_threads;             /* 0: library default */
+    void (*progress)(void *user, double t_s, double t_end_s, double steps_per_s);
+    void *progress_user;
+    volatile int *interrupt;
+} gf_run_exec_opts;
+
+typedef struct gf_run_result {
+    gf_status status;
+    char message[640];         /* failure reason, "" on success */
+    double wall_s;
+    long steps;
+    long n_particles;
+    double sim_time_s;
+    double timers_s[16];       /* gf_sim_timers elapsed_s, GF_TIMER_COUNT entries */
+} gf_run_result;
+
+/* Runs spec; never returns an error for a failed simulation: that is in
+ * result->status (and in the status file). Returns non-OK only when the run
+ * directory or run.yaml cannot be written. */
+gf_status gf_run_execute(gf_ctx *ctx, const gf_run_spec *spec, const gf_run_exec_opts *opt, gf_run_result *result);
+
+#endif

@@ -1,0 +1,327 @@
+/* Worker pool, MPI task farm and progress display; see gf_sched.h. */
+#include "schedule/gf_sched.h"
+
+#include <errno.h>
+#include <math.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/mman.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "campaign/gf_spec_schema.h"
+#include "core/gf_timer.h"
+#include "schedule/gf_comm.h"
+#include "schedule/gf_ledger.h"
+#include "schedule/gf_run_exec.h"
+
+void gf_sched_describe(const gf_campaign_run *r, char *buf, size_t n)
+{
+    size_t len = 0;
+    buf[0] = '\0';
+    for (int g = 0; g < 4; ++g) {
+        double v = *gf_spec_group((gf_run_spec *)&r->spec, g);
+        if (!isnan(v) && len < n)
+            len += (size_t)snprintf(buf + len, n - len, "%s%s=%g", len ? " " : "", gf_group_names[g], v);
+    }
+    if (r->label[0] && len < n)
+        len += (size_t)snprintf(buf + len, n - len, "%s[%s]", len ? " " : "", r->label);
+    if (!len)
+        snprintf(buf, n, "%s", r->spec.scene);
+}
+
+static void format_duration(double s, char *buf, size_t n)
+{
+    if (!isfinite(s) || s < 0) {
+        snprintf(buf, n, "--:--");
+        return;
+    }
+    long t = (long)(s + 0.5);
+    if (t >= 3600)
+        snprintf(buf, n, "%ld:%02ld:%02ld", t / 3600, (t / 60) % 60, t % 60);
+    else
+        snprintf(buf, n, "%ld:%02ld", t / 60, t % 60);
+}
+
+void gf_progress_update(gf_progress *p, double t_s, double t_end_s, double steps_per_s)
+{
+    if (t_s > 0.0 && !(p->wall0_s > 0.0)) {
+        p->wall0_s = gf_wtime();
+        p->t0_s = t_s;
+    }
+    p->t_s = t_s;
+    p->t_end_s = t_end_s;
+    p->steps_per_s = steps_per_s;
+}
+
+void gf_sched_progress_text(const gf_progress *p, char *buf, size_t n)
+{
+    char eta[32];
+    const double now = gf_wtime();
+    if (!(p->wall0_s > 0.0)) {
+        format_duration(now - p->started_s, eta, sizeof eta);
+        snprintf(buf, n, "preparing the scene (packing, settling)  %s", eta);
+        return;
+    }
+    const double frac = p->t_end_s > 0 ? p->t_s / p->t_end_s : 0.0;
+    const double rate = p->t_s > p->t0_s ? (p->t_s - p->t0_s) / (now - p->wall0_s) : 0.0; /* sim s per wall s */
+    format_duration(rate > 0 ? (p->t_end_s - p->t_s) / rate : NAN, eta, sizeof eta);
+    snprintf(buf, n, "t = %.3g/%.3g s (%3.0f%%)  %.3g steps/s  ETA %s", p->t_s, p->t_end_s, 100.0 * frac,
+             p->steps_per_s, eta);
+}
+
+/* --- shared progress table between the pool and its workers --- */
+
+typedef struct slot {
+    volatile int run;           /* run index, -1: free */
+    gf_progress progress;       /* written by the worker, read by the parent (a torn read only blurs one frame) */
+    pid_t pid;
+} slot;
+
+static void on_progress(void *user, double t_s, double t_end_s, double steps_per_s)
+{
+    slot *s = user;
+    gf_progress_update(&s->progress, t_s, t_end_s, steps_per_s);
+}
+
+static volatile int child_interrupt;
+static void child_on_signal(int sig)
+{
+    (void)sig;
+    child_interrupt = 1;
+}
+
+/* The worker process: one run, then _exit (the child must not return into
+ * the caller's stack, nor run its atexit handlers or flush its stdio twice). */
+static void worker(const gf_campaign *c, int index, const char *run_dir, int n_threads, slot *s)
+{
+    struct sigaction sa = {0};
+    sa.sa_handler = child_on_signal;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+    gf_ctx ctx = {.log_level = GF_LOG_WARN};
+    gf_run_exec_opts eo = {.run_dir = run_dir,
+                           .campaign = c->name,
+                           .n_threads = n_threads,
+                           .progress = on_progress,
+                           .progress_user = s,
+                           .interrupt = &child_interrupt};
+    gf_run_result res;
+    gf_status st = gf_run_execute(&ctx, &c->runs[index].spec, &eo, &res);
+    if (st != GF_OK)
+        fprintf(stderr, "grainflow: %s\n", gf_ctx_message(&ctx));
+    fflush(stderr);
+    _exit(st == GF_OK && res.status == GF_OK ? 0 : 1);
+}
+
+typedef struct display {
+    int tty, quiet, drawn;      /* drawn: lines of the live block on screen */
+    int done, failed, total;
+} display;
+
+static void clear_block(display *d)
+{
+    if (d->tty && d->drawn) {
+        printf("\033[%dA\033[J", d->drawn);
+        d->drawn = 0;
+    }
+}
+
+static void report_finished(display *d, const gf_campaign *c, int index, const char *dir, double wall_s)
+{
+    char reason[520], what[200], wall[32];
+    gf_run_state state = gf_ledger_state(dir, reason, sizeof reason);
+    if (state == GF_RUN_DONE)
+        ++d->done;
+    else
+        ++d->failed;
+    if (d->quiet)
+        return;
+    clear_block(d);
+    gf_sched_describe(&c->runs[index], what, sizeof what);
+    format_duration(wall_s, wall, sizeof wall);
+    if (state == GF_RUN_DONE)
+        printf("[%d/%d] %s done    %s  (%s)\n", d->done + d->failed, d->total, c->runs[index].spec.run_id, what,
+               wall);
+    else
+        printf("[%d/%d] %s failed: %s  (%s, %s)\n", d->done + d->failed, d->total, c->runs[index].spec.run_id,
+               reason, what, wall);
+    fflush(stdout);
+}
+
+static void draw_block(display *d, const gf_campaign *c, const slot *slots, int n_slots, int remaining)
+{
+    if (!d->tty || d->quiet)
+        return;
+    clear_block(d);
+    for (int i = 0; i < n_slots; ++i) {
+        if (slots[i].run < 0)
+            continue;
+        char text[160];
+        gf_sched_progress_text(&slots[i].progress, text, sizeof text);
+        printf("  %s  %s\n", c->runs[slots[i].run].spec.run_id, text);
+        ++d->drawn;
+    }
+    int running = 0;
+    for (int i = 0; i < n_slots; ++i)
+        running += slots[i].run >= 0;
+    printf("campaign %s: %d done, %d failed, %d running, %d remaining\n", c->name, d->done, d->failed, running,
+           remaining);
+    ++d->drawn;
+    fflush(stdout);
+}
+
+static gf_status run_pool(gf_ctx *ctx, const gf_campaign *c, const gf_sched_opts *opt, const int *todo, int n_todo,
+                          display *d)
+{
+    int n_jobs = opt->n_jobs > 0 ? opt->n_jobs : 1;
+    if (n_jobs > n_todo)
+        n_jobs = n_todo > 0 ? n_todo : 1;
+    slot *slots = mmap(NULL, (size_t)n_jobs * sizeof *slots, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1,
+                       0);
+    if (slots == MAP_FAILED)
+        return GF_FAIL(ctx, GF_ERR_NOMEM, "worker pool: cannot map the progress table: %s", strerror(errno));
+    for (int i = 0; i < n_jobs; ++i)
+        slots[i] = (slot){.run = -1};
+    /* One thread per worker when several share the machine; the library
+     * default (all cores) for a lone worker. */
+    const int n_threads = n_jobs > 1 ? 1 : 0;
+    int next = 0, running = 0;
+    gf_status st = GF_OK;
+    double last_draw = 0.0;
+    fflush(stdout);
+    fflush(stderr);
+    while (next < n_todo || running > 0) {
+        const int stop = opt->interrupt && *opt->interrupt;
+        for (int i = 0; i < n_jobs && next < n_todo && !stop; ++i) {
+            if (slots[i].run >= 0)
+                continue;
+            const int index = todo[next++];
+            char dir[4200];
+            gf_ledger_run_dir(opt->out_dir, c->name, c->runs[index].spec.run_id, dir, sizeof dir);
+            slots[i] = (slot){.run = index, .progress = {.started_s = gf_wtime()}};
+            pid_t pid = fork();
+            if (pid == 0)
+                worker(c, index, dir, n_threads, &slots[i]);
+            if (pid < 0) {
+                st = GF_FAIL(ctx, GF_ERR_IO, "worker pool: fork failed: %s", strerror(errno));
+                slots[i].run = -1;
+                next = n_todo;
+                break;
+            }
+            slots[i].pid = pid;
+            ++running;
+        }
+        if (stop && next < n_todo)
+            next = n_todo, st = GF_ERR_INTERRUPTED;
+        int wstatus;
+        pid_t pid;
+        while (running > 0 && (pid = waitpid(-1, &wstatus, WNOHANG)) > 0) {
+            for (int i = 0; i < n_jobs; ++i) {
+                if (slots[i].run < 0 || slots[i].pid != pid)
+                    continue;
+                char dir[4200];
+                const int index = slots[i].run;
+                gf_ledger_run_dir(opt->out_dir, c->name, c->runs[index].spec.run_id, dir, sizeof dir);
+                if (WIFSIGNALED(wstatus) || gf_ledger_state(dir, NULL, 0) == GF_RUN_NEW) {
+                    char why[128];
+                    if (WIFSIGNALED(wstatus))
+                        snprintf(why, sizeof why, "worker killed by signal %d (%s)", WTERMSIG(wstatus),
+                                 strsignal(WTERMSIG(wstatus)));
+                    else
+                        snprintf(why, sizeof why, "worker exited with code %d before recording a status",
+                                 WEXITSTATUS(wstatus));
+                    gf_ctx tmp = {0};
+                    if (gf_ledger_mkdirs(&tmp, dir) == GF_OK)
+                        gf_ledger_set_failed(&tmp, dir, why);
+                }
+                report_finished(d, c, index, dir, gf_wtime() - slots[i].progress.started_s);
+                slots[i].run = -1;
+                --running;
+            }
+        }
+        const double now = gf_wtime();
+        if (now - last_draw > 0.5) {
+            draw_block(d, c, slots, n_jobs, n_todo - next);
+            last_draw = now;
+        }
+        struct timespec ts = {0, 50 * 1000 * 1000};
+        nanosleep(&ts, NULL);
+    }
+    clear_block(d);
+    munmap(slots, (size_t)n_jobs * sizeof *slots);
+    return st;
+}
+
+/* Under MPI: run i on rank i mod K, in this process; one line per run. */
+static gf_status run_farm(gf_ctx *ctx, const gf_campaign *c, const gf_sched_opts *opt, const int *todo, int n_todo,
+                          display *d)
+{
+    const int rank = gf_comm_rank(), size = gf_comm_size();
+    gf_status st = GF_OK;
+    for (int k = rank; k < n_todo; k += size) {
+        if (opt->interrupt && *opt->interrupt) {
+            st = GF_ERR_INTERRUPTED;
+            break;
+        }
+        const int index = todo[k];
+        char dir[4200], what[200];
+        gf_ledger_run_dir(opt->out_dir, c->name, c->runs[index].spec.run_id, dir, sizeof dir);
+        gf_run_exec_opts eo = {.run_dir = dir, .campaign = c->name, .interrupt = opt->interrupt};
+        gf_run_result res;
+        gf_status est = gf_run_execute(ctx, &c->runs[index].spec, &eo, &res);
+        if (est != GF_OK)
+            gf_log(ctx, GF_LOG_WARN, "rank %d: %s", rank, gf_ctx_message(ctx));
+        if (res.status == GF_OK && est == GF_OK)
+            ++d->done;
+        else
+            ++d->failed;
+        gf_sched_describe(&c->runs[index], what, sizeof what);
+        if (!opt->quiet)
+            printf("[rank %d] %s %s %s  (%s%s%.1f s)\n", rank, c->runs[index].spec.run_id,
+                   res.status == GF_OK ? "done   " : "failed:", res.status == GF_OK ? what : res.message,
+                   res.status == GF_OK ? "" : what, res.status == GF_OK ? "" : ", ", res.wall_s);
+        fflush(stdout);
+    }
+    d->done = (int)gf_comm_sum(d->done);
+    d->failed = (int)gf_comm_sum(d->failed);
+    int interrupted = (int)gf_comm_sum(st == GF_ERR_INTERRUPTED);
+    return interrupted ? GF_ERR_INTERRUPTED : GF_OK;
+}
+
+gf_status gf_sched_run(gf_ctx *ctx, const gf_campaign *c, const gf_sched_opts *opt, gf_sched_counts *counts)
+{
+    memset(counts, 0, sizeof *counts);
+    const int n_sel = opt->selected ? opt->n_selected : c->n_runs;
+    int *todo = malloc((size_t)(n_sel > 0 ? n_sel : 1) * sizeof *todo);
+    if (!todo)
+        return GF_FAIL(ctx, GF_ERR_NOMEM, "out of memory");
+    int n_todo = 0;
+    for (int k = 0; k < n_sel; ++k) {
+        const int index = opt->selected ? opt->selected[k] : k;
+        char dir[4200];
+        gf_ledger_run_dir(opt->out_dir, c->name, c->runs[index].spec.run_id, dir, sizeof dir);
+        if (opt->resume && gf_ledger_state(dir, NULL, 0) == GF_RUN_DONE)
+            ++counts->n_skipped;
+        else
+            todo[n_todo++] = index;
+    }
+    counts->n_total = n_sel;
+    char cdir[4200];
+    snprintf(cdir, sizeof cdir, "%s/%s", opt->out_dir, c->name);
+    gf_status st = gf_ledger_mkdirs(ctx, cdir);
+    display d = {.tty = opt->tty && gf_comm_size() == 1, .quiet = opt->quiet, .total = n_todo};
+    if (st == GF_OK)
+        st = gf_comm_size() > 1 ? run_farm(ctx, c, opt, todo, n_todo, &d) : run_pool(ctx, c, opt, todo, n_todo, &d);
+    counts->n_done = d.done;
+    counts->n_failed = d.failed;
+    free(todo);
+    if (st == GF_ERR_INTERRUPTED)
+        return GF_FAIL(ctx, GF_ERR_INTERRUPTED, "campaign %s interrupted: %d done, %d failed, %d not started",
+                       c->name, d.done, d.failed, n_todo - d.done - d.failed);
+    return st;
+}

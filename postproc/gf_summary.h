@@ -1,0 +1,23 @@
+/*
+ * Campaign summary: summary.nc (CF-1.10, one entry per run along dimension
+ * "run") and summary.csv (same columns, header line first). Columns: the
+ * run's identity and inputs (run_id, scene, St, r, a, Phi_i, fluid_model,
+ * status, error, ...), then every column declared in the stage table, in
+ * table order. Missing values are NaN (_FillValue) in netCDF and empty in
+ * CSV. Both files are written to "<name>.tmp" and renamed.
+ */
+#ifndef GF_SUMMARY_H
+#define GF_SUMMARY_H
+
+#include "core/gf_status.h"
+#include "stages/gf_stage.h"
+
+/* Identity columns (filled by gf_post_campaign from the run files). */
+extern const gf_post_col gf_summary_identity_cols[];
+
+gf_status gf_summary_write(gf_ctx *ctx, const char *dir, const gf_post_row *rows, int n_rows);
+
+/* Reads summary.nc back into rows (the figures are drawn from it). *rows is malloc'ed. */
+gf_status gf_summary_read(gf_ctx *ctx, const char *path, gf_post_row **rows, int *n_rows);
+
+#endif

@@ -1,0 +1,159 @@
+/*
+ * Stage deposit: final heap of a column collapse and the front history
+ * (Izard 2014 §5.3–5.5; digest §7.4), from the grains of particles.nc.
+ *
+ * Final frame -> gf_deposit_envelope (method in gf_deposit.h): R_inf from
+ * the back wall, H_inf, (R_inf − R0)/R0 and H_inf/R0 with R0 the
+ * column_length_m attribute, the shape (triangle / trapezoid) and the flank
+ * angle. Every frame -> the heap front x_front(t) (same binning, so a grain
+ * that rolls ahead does not count); if particles.nc holds a single frame,
+ * diagnostics front_position is used instead. The maximum front speed is
+ * the largest slope of least-squares lines over windows of max(5, n/100)
+ * frames; the time to rest is the earliest time after which the front stays
+ * within D/2 of its final position.
+ * Writes post_deposit.nc: time, front_position, (x_front − R0)/R0, and the
+ * final envelope deposit_height(x_bin).
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "stages/gf_deposit.h"
+#include "stages/gf_post_stats.h"
+#include "stages/gf_stage_util.h"
+
+const gf_post_col gf_stage_deposit_cols[] = {
+    {"R_inf_m", 0, "m", "final runout from the back wall"},
+    {"H_inf_m", 0, "m", "final deposit height (maximum)"},
+    {"R_inf_over_R0", 0, "1", "final runout over the initial column length"},
+    {"runout_norm", 0, "1", "normalised runout (R_inf - R0)/R0"},
+    {"H_inf_over_R0", 0, "1", "final height over the initial column length"},
+    {"deposit_shape", 1, "", "deposit shape (triangle or trapezoid)"},
+    {"flank_angle_deg", 0, "degree", "slope angle of the collapsed flank"},
+    {"plateau_length_m", 0, "m", "length of the full-height plateau at the back"},
+    {"Ufront_particles_max_m_s", 0, "m s-1", "maximum front speed from the grains"},
+    {"t_front_max_speed_s", 0, "s", "time of the maximum front speed"},
+    {"t_rest_s", 0, "s", "time after which the front stays within D/2 of its final position"},
+    {NULL, 0, NULL, NULL}};
+
+gf_status gf_stage_deposit(gf_ctx *ctx, const gf_stage_in *in, const gf_stage_opts *opts, gf_stage_out *out)
+{
+    const int collapse = gf_stage_is_scene(in, "column_collapse");
+    if (!collapse)
+        return GF_ERR_UNSUPPORTED;   /* only a collapse leaves a heap against a back wall */
+    gf_ncr p;
+    GF_TRY(gf_stage_open(ctx, in, "particles.nc", &p));
+    gf_grains_info g;
+    gf_status st = gf_stage_grains(ctx, &p, 1, &g);
+    if (st != GF_OK) {
+        gf_ncr_close(&p);
+        return st;
+    }
+    double D = gf_ncr_att_double_or(&p, "grain_diameter_m", g.mean_diameter_m);
+    if (!(D > 0.0))
+        D = g.mean_diameter_m;
+    double R0, H0;
+    gf_stage_column(&p, &R0, &H0);
+    const size_t n = g.n_all, nt = g.n_time;
+    double *x = malloc((n ? n : 1) * sizeof *x), *y = malloc((n ? n : 1) * sizeof *y);
+    double *t = NULL, *front = calloc(nt ? nt : 1, sizeof *front);
+    size_t ntt = 0;
+    gf_deposit dep = {0};
+    if (!x || !y || !front)
+        st = GF_FAIL(ctx, GF_ERR_NOMEM, "deposit: out of memory");
+    if (st == GF_OK && nt == 0)
+        st = GF_FAIL(ctx, GF_ERR_IO, "%s: no frame", p.path);
+    if (st == GF_OK)
+        st = gf_ncr_var_1d(ctx, &p, "time", &t, &ntt);
+    for (size_t k = 0; st == GF_OK && k < nt; ++k) {
+        st = gf_ncr_var_2d_col(ctx, &p, "x", k, x, n);
+        if (st == GF_OK)
+            st = gf_ncr_var_2d_col(ctx, &p, "y", k, y, n);
+        if (st == GF_OK)
+            front[k] = gf_deposit_front(x, y, g.radius, g.mobile, n, D);
+    }
+    if (st == GF_OK)   /* x, y hold the final frame */
+        st = gf_deposit_envelope(ctx, x, y, g.radius, g.mobile, n, D, &dep);
+    gf_ncr_close(&p);
+    const double *ft = t, *fx = front;
+    size_t fn = nt;
+    double *dt = NULL, *dx = NULL;
+    if (st == GF_OK && nt < 2 && gf_stage_has_file(in, "diagnostics.nc")) {
+        gf_ncr d;
+        size_t n1 = 0, n2 = 0;
+        if (gf_stage_open(ctx, in, "diagnostics.nc", &d) == GF_OK) {
+            if (gf_ncr_has_var(&d, "front_position") && gf_ncr_var_1d(ctx, &d, "time", &dt, &n1) == GF_OK &&
+                gf_ncr_var_1d(ctx, &d, "front_position", &dx, &n2) == GF_OK && n1 == n2) {
+                ft = dt;
+                fx = dx;
+                fn = n1;
+            }
+            gf_ncr_close(&d);
+        }
+    }
+    if (st == GF_OK) {
+        gf_post_row *row = out->row;
+        gf_post_row_set(row, "R_inf_m", dep.runout_m);
+        gf_post_row_set(row, "H_inf_m", dep.height_m);
+        if (R0 > 0.0) {
+            gf_post_row_set(row, "R_inf_over_R0", dep.runout_m / R0);
+            gf_post_row_set(row, "runout_norm", (dep.runout_m - R0) / R0);
+            gf_post_row_set(row, "H_inf_over_R0", dep.height_m / R0);
+        }
+        gf_post_row_set_text(row, "deposit_shape",
+                             dep.trapezoid < 0 ? "undetermined" : dep.trapezoid ? "trapezoid" : "triangle");
+        gf_post_row_set(row, "flank_angle_deg", dep.flank_angle_deg);
+        gf_post_row_set(row, "plateau_length_m", dep.plateau_length_m);
+        if (fn >= 3) {
+            size_t w = fn / 100 > 5 ? fn / 100 : 5;
+            double t_at;
+            gf_post_row_set(row, "Ufront_particles_max_m_s", gf_stats_max_rate(ft, fx, fn, w, &t_at));
+            gf_post_row_set(row, "t_front_max_speed_s", t_at);
+            gf_post_row_set(row, "t_rest_s", gf_stats_settle_time(ft, fx, fn, 0.5 * D));
+        }
+    }
+    if (st == GF_OK && opts && opts->write_series) {
+        gf_postnc w;
+        int dim_t, dim_b, v_t, v_f, v_fn, v_xb, v_h;
+        st = gf_postnc_create(ctx, in, "deposit", 1, &w);
+        if (st == GF_OK) {
+            double *fnorm = malloc((fn ? fn : 1) * sizeof *fnorm), *xb = malloc((dep.n_bins + 1) * sizeof *xb);
+            for (size_t k = 0; fnorm && k < fn; ++k)
+                fnorm[k] = R0 > 0.0 ? (fx[k] - R0) / R0 : NAN;
+            for (size_t b = 0; xb && b < dep.n_bins; ++b)
+                xb[b] = (b + 0.5) * dep.bin_m;
+            if (!fnorm || !xb)
+                st = GF_FAIL(ctx, GF_ERR_NOMEM, "deposit: out of memory");
+            if (st == GF_OK) st = gf_postnc_dim(ctx, &w, "time", fn, &dim_t);
+            if (st == GF_OK) st = gf_postnc_dim(ctx, &w, "x_bin", dep.n_bins, &dim_b);
+            if (st == GF_OK)
+                st = gf_postnc_var(ctx, &w, "time", 1, &dim_t, "s since 2000-01-01 00:00:00", "time", "time", &v_t);
+            if (st == GF_OK)
+                st = gf_postnc_var(ctx, &w, "front_position", 1, &dim_t, "m", "front position from the back wall",
+                                   NULL, &v_f);
+            if (st == GF_OK)
+                st = gf_postnc_var(ctx, &w, "front_position_norm", 1, &dim_t, "1", "(x_front - R0)/R0", NULL, &v_fn);
+            if (st == GF_OK)
+                st = gf_postnc_var(ctx, &w, "x_bin", 1, &dim_b, "m", "bin centre from the back wall", NULL, &v_xb);
+            if (st == GF_OK)
+                st = gf_postnc_var(ctx, &w, "deposit_height", 1, &dim_b, "m", "final deposit surface height", NULL,
+                                   &v_h);
+            if (st == GF_OK) st = gf_postnc_enddef(ctx, &w);
+            if (st == GF_OK) st = gf_postnc_put(ctx, &w, v_t, ft);
+            if (st == GF_OK) st = gf_postnc_put(ctx, &w, v_f, fx);
+            if (st == GF_OK) st = gf_postnc_put(ctx, &w, v_fn, fnorm);
+            if (st == GF_OK) st = gf_postnc_put(ctx, &w, v_xb, xb);
+            if (st == GF_OK) st = gf_postnc_put(ctx, &w, v_h, dep.bin_height_m);
+            if (st == GF_OK)
+                st = gf_postnc_close(ctx, &w);
+            else
+                gf_postnc_abort(&w);
+            free(fnorm);
+            free(xb);
+        }
+    }
+    gf_deposit_free(&dep);
+    gf_stage_grains_free(&g);
+    free(x), free(y), free(t), free(front), free(dt), free(dx);
+    return st;
+}

@@ -1,0 +1,37 @@
+/*
+ * The table of post-processing stages (STYLE §10): a new stage is one file
+ * and one row here. Order matters only for the column order of the summary.
+ */
+#include "stages/gf_stage.h"
+
+#include <string.h>
+
+const gf_stage_info gf_stage_table[] = {
+    {"flow_rate", 1, gf_stage_flow_rate, "diagnostics.nc: time, grain_flow_rate, fluid_flow_rate",
+     "summary row", gf_stage_flow_rate_cols},
+    {"regime", 1, gf_stage_regime,
+     "attributes (grains, fluid, geometry, scene_param_*); diagnostics.nc: grain_flow_rate, bed_height, "
+     "bed_packing_fraction or front_position; particles.nc: "
+     "radius, glued",
+     "summary row", gf_stage_regime_cols},
+    {"deposit", 1, gf_stage_deposit,
+     "particles.nc: x, y, radius, glued (all frames); diagnostics.nc: front_position (single-frame runs)",
+     "summary row, post_deposit.nc", gf_stage_deposit_cols},
+    {"pore_pressure", 1, gf_stage_pore_pressure, "probes.nc: station_name, x, y, excess_pore_pressure",
+     "summary row, post_pore_pressure.nc", gf_stage_pore_pressure_cols},
+    {"profiles", 1, gf_stage_profiles,
+     "particles.nc: x, y, z, u, v, w, radius, glued; diagnostics.nc: grain_flow_rate; fields.nc: x, y, z, "
+     "fluid_fraction, u_fluid; attributes: grains, fluid",
+     "summary row, post_profiles.nc", gf_stage_profiles_cols},
+    {"energy", 1, gf_stage_energy, "diagnostics.nc: ecx_per_grain; particles.nc: radius, glued",
+     "summary row, post_energy.nc", gf_stage_energy_cols},
+};
+const int gf_stage_count = (int)(sizeof gf_stage_table / sizeof gf_stage_table[0]);
+
+const gf_stage_info *gf_stage_find(const char *name)
+{
+    for (int i = 0; name && i < gf_stage_count; ++i)
+        if (strcmp(gf_stage_table[i].name, name) == 0)
+            return &gf_stage_table[i];
+    return NULL;
+}

@@ -1,0 +1,75 @@
+/*
+ * Fuzz corpus: every file in tests/pipeline/corpus/ is malformed on purpose
+ * (tabs, unclosed quotes and brackets, wrong types, unknown keys, numbers too
+ * large for a double, NaN and infinities, an empty file, binary junk, invalid
+ * UTF-8, NUL bytes, nesting 200 deep, keys 20000 characters long, ...). Each
+ * must give a clean configuration error: status GF_ERR_CONFIG and exactly one
+ * line "path:line:column: message" naming a position inside the file, and no
+ * campaign. Run under -DGF_SANITIZE=ON this also checks that no input makes
+ * the parser read out of bounds or leak.
+ */
+#include <dirent.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "campaign/gf_campaign.h"
+#include "gf_test.h"
+
+/* "path:L:C: text" with L, C >= 1 and text non-empty. */
+static int located(const char *msg, const char *path, int *line, int *col)
+{
+    size_t n = strlen(path);
+    if (strncmp(msg, path, n) != 0 || msg[n] != ':')
+        return 0;
+    int used = 0;
+    if (sscanf(msg + n, ":%d:%d: %n", line, col, &used) != 2 || used == 0)
+        return 0;
+    return *line >= 1 && *col >= 1 && msg[n + (size_t)used] != '\0';
+}
+
+static int lines_in(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    int n = 1, c;
+    while (f && (c = fgetc(f)) != EOF)
+        n += c == '\n';
+    if (f)
+        fclose(f);
+    return n;
+}
+
+int main(void)
+{
+    const char *src = getenv("GF_SOURCE_DIR");
+    char dir[4096];
+    snprintf(dir, sizeof dir, "%s/tests/pipeline/corpus", src ? src : ".");
+    DIR *d = opendir(dir);
+    GF_CHECK(d != NULL);
+    int n_files = 0;
+    struct dirent *e;
+    while (d && (e = readdir(d))) {
+        if (e->d_name[0] == '.')
+            continue;
+        char path[4400];
+        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+        gf_ctx ctx = {0};
+        gf_campaign *c = NULL;
+        gf_status st = gf_campaign_load_file(&ctx, path, NULL, 0, &c);
+        int line = 0, col = 0;
+        gf_test_check(st == GF_ERR_CONFIG, __FILE__, __LINE__, "%s: status %s (%s)", e->d_name, gf_status_str(st),
+                      ctx.last_msg);
+        gf_test_check(located(ctx.last_msg, path, &line, &col), __FILE__, __LINE__, "%s: not file:line:col: %s",
+                      e->d_name, ctx.last_msg);
+        gf_test_check(line <= lines_in(path), __FILE__, __LINE__, "%s: line %d beyond the file", e->d_name, line);
+        gf_test_check(strchr(ctx.last_msg, '\n') == NULL, __FILE__, __LINE__, "%s: one line", e->d_name);
+        gf_test_check(c == NULL, __FILE__, __LINE__, "%s: no campaign", e->d_name);
+        printf("%-28s %s\n", e->d_name, ctx.last_msg + strlen(dir) + 1);
+        gf_campaign_destroy(&c);
+        ++n_files;
+    }
+    if (d)
+        closedir(d);
+    gf_test_check(n_files >= 40, __FILE__, __LINE__, "corpus has %d files, expected >= 40", n_files);
+    return gf_test_finish();
+}

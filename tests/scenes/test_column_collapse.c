@@ -1,0 +1,103 @@
+/*
+ * Dry granular column collapse in a quasi-2D periodic slab (Izard 2014
+ * §2.1.3.3, Fig. 2.12-2.13; digest §2.4 and §8 row 9).
+ *
+ * Set-up as the thesis' 3-D dry runs: R = 5 mm +- 10 %, rho_p = 2500,
+ * eps = 0.5, mu_c = 1.0 grain-grain and grain-wall (Staron & Hinch 2005),
+ * transverse periodic width 3 D (the thesis uses 24 R = 12 D; the transverse
+ * direction "has no effect", §2.4), column length R0 = 16 D on a rough base,
+ * Phi_i = 0.60, t_c = 0.02 sqrt(D/g) (softer than the thesis' 1e-4 s; the
+ * thesis notes that softening k_n does not alter dry dynamics, §1.2).
+ *
+ * Claims, against the published planar laws (reference/published-laws.md):
+ *   (R_inf - R0)/R0 = lambda1 a for a below the crossover a0 ~ 2-3, with
+ *   lambda1 in [1.2, 1.8] (Lube et al. 2005 / Lajeunesse et al. 2005), and
+ *   lambda2 a^(2/3) above it with lambda2 in [1.9, 2.3]. Each fitted
+ *   coefficient must lie inside the published band widened by 15 %
+ *   (the 15 % is the brief's tolerance: the thesis quotes agreement "within
+ *   their scatter", ~10 %, and the published coefficients themselves differ
+ *   by 50 %).
+ *   For a = 0.5 the deposit keeps the initial height (a trapezoid:
+ *   H_inf = H0 below a ~ 0.7-1.15, Lube 2005, Lajeunesse 2005): H_inf/H0 within 10 %.
+ * Arguments: the aspect ratios to run (default 0.5 1 2: the `slow` variant
+ * adds 4 and 6 and fits lambda2).
+ */
+#include <stdlib.h>
+
+#include "scene_runner.h"
+#include "scenes/gf_measure.h"
+
+static void collapse(double a, double *runout, double *h_over_r0, double *phi_i)
+{
+    gf_ctx ctx = {0};
+    gf_run_spec spec;
+    runner_dry_spec(&spec, "column_collapse");
+    spec.contact.restitution = 0.5;
+    spec.contact.friction = getenv("GF_TEST_MU") ? atof(getenv("GF_TEST_MU")) : 1.0;
+    spec.contact.wall_friction = spec.contact.friction;
+    spec.contact.t_contact_nd = 0.02;
+    GF_CHECK_OK(gf_run_spec_set_param(&ctx, &spec, "aspect_ratio", a), &ctx);
+    GF_CHECK_OK(gf_run_spec_set_param(&ctx, &spec, "phi_target", 0.60), &ctx);
+    double t0 = runner_now_s();
+    gf_sim *sim = NULL;
+    gf_sim_options opt = {.n_threads = 1};
+    GF_CHECK_OK(gf_sim_create(&ctx, &spec, &opt, &sim), &ctx);
+    if (!sim) {
+        *runout = *h_over_r0 = *phi_i = NAN;
+        return;
+    }
+    double t1 = runner_now_s();
+    const gf_scene_desc *d = gf_scene_find("column_collapse");
+    double phi_m, phi_l;
+    d->initial_packing(sim, &phi_m, &phi_l);
+    *phi_i = phi_l;
+    double T0_nd = sqrt(2.0 * a * 16.0);
+    long steps = runner_until_done(sim, 10.0 * T0_nd + 40.0, 1.0);
+    double v[3];
+    GF_CHECK_OK(d->diagnose(sim, v), &ctx);
+    double D = spec.grains.diameter_m, R0 = 16 * D;
+    *runout = (v[0] - R0) / R0;
+    *h_over_r0 = v[1] / R0;
+    /* the final profile, for the notebook: envelope (top of grains) and solid height per D bin */
+    gf_measure_domain dom;
+    gf_sim_box(sim, dom.lo_m, dom.hi_m, dom.periodic);
+    double top[400], solid[400];
+    gf_measure_deposit dep;
+    int nb = (int)fmin(400, ceil(dom.hi_m[0] / D));
+    gf_measure_deposit_profile(&ctx, gf_sim_particles(sim), &dom, 0.0, D, nb, 0.25 * D, 1, top, solid, &dep);
+    printf("  deposit (x/D: top/D, solid/D):");
+    for (int b = 0; b < nb && b * D < v[0] + 4 * D; b += 2)
+        printf(" %d:%.1f,%.2f", b, top[b] / D, solid[b] / D);
+    printf("\n");
+    size_t n = gf_sim_particles(sim)->n_local;
+    printf("a = %.2f: Phi_i %.4f (global %.4f), (R_inf - R0)/R0 = %.3f, H_inf/R0 = %.3f, t_stop = %.1f sqrt(D/g), "
+           "%zu grains, build %.1f s, run %.1f s (%ld steps)\n",
+           a, phi_l, phi_m, *runout, *h_over_r0, gf_sim_time_s(sim) / sqrt(D / 9.81), n, t1 - t0,
+           runner_now_s() - t1, steps);
+    fflush(stdout);
+    gf_sim_destroy(&sim);
+}
+
+int main(int argc, char **argv)
+{
+    double a[8] = {0.5, 1.0, 2.0}, r[8], h[8], phi[8];
+    int n = 3;
+    if (argc > 1) {
+        n = argc - 1 > 8 ? 8 : argc - 1;
+        for (int k = 0; k < n; ++k)
+            a[k] = atof(argv[k + 1]);
+    }
+    for (int k = 0; k < n; ++k) {
+        collapse(a[k], &r[k], &h[k], &phi[k]);
+        if (a[k] <= 0.5)
+            GF_CHECK_REL(h[k], a[k], 0.10); /* trapezoid: H_inf = H0 */
+        GF_CHECK_ABS(phi[k], 0.60, 0.02);    /* re-equilibrated column stays near the request */
+    }
+    double lambda1, lambda2;
+    gf_measure_fit_runout(a, r, n, 2.5, &lambda1, &lambda2);
+    printf("fit: lambda1 = %.3f (published 1.2-1.8), lambda2 = %.3f (published 1.9-2.3)\n", lambda1, lambda2);
+    GF_CHECK(lambda1 >= 1.2 * 0.85 && lambda1 <= 1.8 * 1.15);
+    if (!isnan(lambda2))
+        GF_CHECK(lambda2 >= 1.9 * 0.85 && lambda2 <= 2.3 * 1.15);
+    return gf_test_finish();
+}

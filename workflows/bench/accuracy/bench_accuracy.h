@@ -1,0 +1,73 @@
+/*
+ * gf-bench-accuracy: shared types of the accuracy benchmark.
+ *
+ * A case is one validation scene with a reference value (closed form,
+ * conservation law, or the finest affordable run) and a tolerance taken from
+ * the validation table (digest izard-immersed-dem §8). A setting is one
+ * choice of the accuracy knobs; measuring it runs the scene through gf_sim
+ * (no output files) and returns the observable, its error against the
+ * reference, and the CPU time of the simulation calls (gf_sim_create +
+ * gf_sim_advance, one thread; the benchmark's own bookkeeping is not timed).
+ * CPU time, not wall time, is the cost the fronts use: on a shared machine
+ * it does not count the time other processes hold the core, and for a
+ * one-thread run it is the wall time of an idle machine. The wall time of
+ * each setting is recorded next to it.
+ */
+#ifndef BENCH_ACCURACY_H
+#define BENCH_ACCURACY_H
+
+#include "core/gf_status.h"
+
+enum { BENCH_KNOB_DT = 1u << 0, BENCH_KNOB_SKIN = 1u << 1, BENCH_KNOB_TC = 1u << 2, BENCH_KNOB_CELL = 1u << 3 };
+
+/* Defaults of the knobs a case does not sweep: the run-spec defaults. */
+#define BENCH_DEFAULT_DT_OVER_TC 0.02
+#define BENCH_DEFAULT_SKIN_OVER_D 0.1
+#define BENCH_DEFAULT_TC_ND 1e-2
+#define BENCH_DEFAULT_CELL_OVER_D 2.0
+
+typedef struct bench_knobs {
+    double dt_over_tc, skin_over_D, t_contact_nd, cell_over_D;
+} bench_knobs;
+
+typedef struct bench_result {
+    double observable, reference, error, cpu_s;
+} bench_result;
+
+typedef struct bench_case {
+    const char *name;           /* scene-level name: "restitution", ... */
+    const char *observable;     /* what is measured, with units */
+    const char *reference;      /* where the reference comes from */
+    const char *error_label;    /* y-axis label of the Pareto plot */
+    double tolerance;           /* error accepted for the recommended default */
+    unsigned knobs;             /* BENCH_KNOB_* swept */
+    int full_only;              /* 1: only under --full (long runs) */
+    /* 1 when the case can run in this build (scene present, tier working), else 0 and *why set */
+    int (*available)(const char **why);
+    /* Measures one setting. The reference may be computed lazily on the first call (finest run). */
+    gf_status (*measure)(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out);
+} bench_case;
+
+const bench_case *bench_cases(int *n);
+
+/* One measured point. */
+typedef struct bench_point {
+    int case_index;
+    bench_knobs k;
+    bench_result r;
+    double wall_s;              /* best wall time of the repeats (includes the case's bookkeeping) */
+    gf_status status;
+    char message[512];          /* ctx message when status != GF_OK */
+    char label[64];             /* "dt=tc/50 skin=0.1" */
+    unsigned char on_front, recommended, within_tolerance;
+} bench_point;
+
+/* Front and recommendation of every case (cheapest within tolerance). */
+void bench_analyse(bench_point *pts, int n, const bench_case *cases, int n_cases);
+/* Writes <dir>/bench_accuracy.csv, <dir>/bench_accuracy.nc and <dir>/pareto_<case>.svg. */
+gf_status bench_write(gf_ctx *ctx, const char *dir, const bench_point *pts, int n, const bench_case *cases,
+                      int n_cases, int full);
+/* Prints the measured order in dt of each case (error ratio when dt halves). */
+void bench_print_orders(const bench_point *pts, int n, const bench_case *cases, int n_cases);
+
+#endif

@@ -1,0 +1,380 @@
+/*
+ * The accuracy cases: each runs one validation scene through gf_sim with the
+ * knobs of a setting and compares its observable with a reference.
+ *
+ *  restitution      binary_collision, clipped linear law, eps_max = 0.5:
+ *                   restitution against the closed form of the clipped
+ *                   oscillator (digest §1.2 [D]: 0.550), tolerance 1 %
+ *                   (digest §8 row 1). The dashpot switches on inside a step
+ *                   at a random phase; the error quoted is the WORST over
+ *                   n onset phases (4 quick, 8 full), what a user may get.
+ *  contact_duration binary_collision, unclipped law (attraction allowed),
+ *                   eps = 0.87: the overlap lasts exactly t_c = pi/omega_d
+ *                   (k_n of Izard (3.17)); error |T/t_c - 1|, worst over the
+ *                   phases, tolerance 3 % (row 2). Times are taken from the
+ *                   free flight after separation, so they are not quantised
+ *                   by dt.
+ *  gas_energy       elastic_gas, eps = 1, mu = 0, 216 equal grains in a
+ *                   periodic 7.5 D cube (solid fraction 0.27), rms speed
+ *                   2 sqrt(gD): total energy (kinetic + (1/2) k_n delta^2) is
+ *                   conserved by the ODE; error = max |E(t)/E(0) - 1| over 100
+ *                   samples in 4 sqrt(D/g) (quick) or 20 sqrt(D/g) (full).
+ *                   Tolerance 1e-3: a thousandth of the energy, small against
+ *                   the 25 % a dissipative collision (eps 0.87) removes. The
+ *                   Verlet skin changes only the cost (rebuild frequency
+ *                   against list length), so it is swept too.
+ *  hindered_settling  settling scene (unresolved tier chosen by `fluid: auto`),
+ *                   suspension at phi = 0.2, Re_t = 0.05: U/U_t against
+ *                   Richardson & Zaki (1954) (1 - phi)^4.65; tolerance 10 %
+ *                   (issue #4). Knobs: fluid cell / D and dt/t_c.
+ *  collapse_runout  (--full) dry column_collapse, R0 = 8 D, a = 0.5, W = 3 D:
+ *                   final front position, mean over 3 seeds (the packing
+ *                   and the collapse are chaotic: one run's front scatters
+ *                   by several D between seeds or dt, and the front is
+ *                   measured in bins of D), against the same mean for the
+ *                   finest setting (dt = t_c/200, t_c sqrt(g/D) = 5e-3);
+ *                   tolerance 10 % (row 33, resolution A vs B). The seed
+ *                   scatter of the reference is printed: below it, a
+ *                   difference is noise, not a discretisation error.
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+#include <time.h>
+
+#include "bench_accuracy.h"
+#include "contact/gf_contact.h"
+#include "coupling/gf_tier.h"
+#include "gf_sim.h"
+#include "scenes/gf_scene.h"
+
+/* CPU time of the process, s: the cost of a one-thread run, insensitive to
+ * the other processes sharing the machine (its wall time on an idle one). */
+static double bench_cpu_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static gf_run_spec base_spec(const char *scene, const bench_knobs *k)
+{
+    gf_run_spec s;
+    gf_run_spec_defaults(&s);
+    snprintf(s.scene, sizeof s.scene, "%s", scene);
+    /* acetate-like grains of the seeds' collision tests (Foerster et al. 1994) */
+    s.grains.diameter_m = 3e-3;
+    s.grains.density_kg_m3 = 1319.0;
+    s.grains.polydispersity = 0.0;
+    s.contact.dt_over_tc = k->dt_over_tc;
+    s.contact.skin_over_D = k->skin_over_D;
+    s.contact.t_contact_nd = k->t_contact_nd;
+    s.fluid.cell_over_D = k->cell_over_D;
+    return s;
+}
+
+static gf_status make_sim(gf_ctx *ctx, const gf_run_spec *spec, gf_sim **out)
+{
+    gf_sim_options opt;
+    memset(&opt, 0, sizeof opt);
+    opt.output_dir = NULL;
+    opt.n_threads = 1;
+    return gf_sim_create(ctx, spec, &opt, out);
+}
+
+static int always(const char **why)
+{
+    *why = "";
+    return 1;
+}
+
+/* ---------------------------------------------------------------- collisions */
+
+typedef struct collision_out {
+    double restitution, overlap_over_tc, wall_s;
+} collision_out;
+
+/* One head-on collision of two equal grains at V = sqrt(gD), the overlap
+ * opening at a fraction `phase` of a step (as tests/engine/test_dem_restitution.c). */
+static gf_status collide(gf_ctx *ctx, const bench_knobs *k, double eps, int attraction, double phase,
+                         collision_out *o)
+{
+    gf_run_spec spec = base_spec("binary_collision", k);
+    spec.contact.restitution = eps;
+    spec.contact.allow_attraction = attraction;
+    spec.contact.friction = 0.0;
+    double D = spec.grains.diameter_m, V = sqrt(spec.gravity_m_s2 * D), dt = gf_run_spec_dt_s(&spec);
+    double gap_over_D = (floor(0.01 * D / (V * dt)) + phase) * V * dt / D;
+    GF_TRY(gf_run_spec_set_param(ctx, &spec, "gap_over_D", gap_over_D));
+    gf_sim *sim = NULL;
+    double t0 = bench_cpu_s();
+    GF_TRY(make_sim(ctx, &spec, &sim));
+    double tc = gf_run_spec_t_contact_s(&spec);
+    long n = (long)ceil((gap_over_D * D / V + 1.5 * tc) / gf_sim_dt_s(sim));
+    gf_status st = gf_sim_advance(sim, n);
+    o->wall_s = bench_cpu_s() - t0;
+    if (st == GF_OK) {
+        gf_particles *p = gf_sim_particles(sim);
+        double v_sep = p->vx_m_s[1] - p->vx_m_s[0], dist = p->x_m[1] - p->x_m[0];
+        double t_end = gf_sim_time_s(sim) - (dist - D) / v_sep; /* free flight, back-extrapolated */
+        o->restitution = v_sep / V;
+        o->overlap_over_tc = (t_end - gap_over_D * D / V) / tc;
+    }
+    gf_sim_destroy(&sim);
+    return st;
+}
+
+static gf_status measure_restitution(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out)
+{
+    const double eps_max = 0.5;
+    double closed, force_duration;
+    gf_contact_clipped_restitution(eps_max, &closed, &force_duration);
+    int n_phase = full ? 8 : 4;
+    double worst = 0.0, mean = 0.0, wall = 0.0;
+    for (int ph = 0; ph < n_phase; ++ph) {
+        collision_out o;
+        GF_TRY(collide(ctx, k, eps_max, 0, (ph + 0.5) / n_phase, &o));
+        mean += o.restitution / n_phase;
+        worst = fmax(worst, fabs(o.restitution / closed - 1.0));
+        wall += o.wall_s;
+    }
+    *out = (bench_result){mean, closed, worst, wall};
+    return GF_OK;
+}
+
+static gf_status measure_duration(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out)
+{
+    int n_phase = full ? 8 : 4;
+    double worst = 0.0, mean = 0.0, wall = 0.0;
+    for (int ph = 0; ph < n_phase; ++ph) {
+        collision_out o;
+        GF_TRY(collide(ctx, k, 0.87, 1, (ph + 0.5) / n_phase, &o));
+        mean += o.overlap_over_tc / n_phase;
+        worst = fmax(worst, fabs(o.overlap_over_tc - 1.0));
+        wall += o.wall_s;
+    }
+    *out = (bench_result){mean, 1.0, worst, wall};
+    return GF_OK;
+}
+
+/* ---------------------------------------------------------------- elastic gas */
+
+/* Elastic energy (1/2) k_n delta^2 of every overlapping pair (minimum image):
+ * equal grains, one k_n (gf_contact.h, gamma_n = 0 at eps = 1). */
+static double spring_energy(gf_sim *sim)
+{
+    gf_particles *p = gf_sim_particles(sim);
+    const gf_run_spec *s = gf_sim_spec(sim);
+    double lo[3], hi[3], e = 0.0;
+    int per[3];
+    gf_sim_box(sim, lo, hi, per);
+    double D = s->grains.diameter_m, m = s->grains.density_kg_m3 * M_PI * D * D * D / 6.0;
+    double tc = gf_run_spec_t_contact_s(s), kn = 0.5 * m * M_PI * M_PI / (tc * tc);
+    for (size_t i = 0; i < p->n_local; ++i)
+        for (size_t j = i + 1; j < p->n_local; ++j) {
+            double d[3] = {p->x_m[i] - p->x_m[j], p->y_m[i] - p->y_m[j], p->z_m[i] - p->z_m[j]}, r2 = 0.0;
+            for (int a = 0; a < 3; ++a) {
+                double L = hi[a] - lo[a];
+                d[a] -= L * round(d[a] / L);
+                r2 += d[a] * d[a];
+            }
+            double ov = p->radius_m[i] + p->radius_m[j] - sqrt(r2);
+            if (ov > 0.0)
+                e += 0.5 * kn * ov * ov;
+        }
+    return e;
+}
+
+static gf_status measure_gas(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out)
+{
+    gf_run_spec spec = base_spec("elastic_gas", k);
+    spec.contact.restitution = 1.0;
+    spec.contact.friction = 0.0;
+    GF_TRY(gf_run_spec_set_param(ctx, &spec, "n_grains", 216));
+    GF_TRY(gf_run_spec_set_param(ctx, &spec, "box_over_D", 7.5));
+    GF_TRY(gf_run_spec_set_param(ctx, &spec, "speed_nd", 2.0));
+    gf_sim *sim = NULL;
+    double wall = 0.0, t0 = bench_cpu_s();
+    GF_TRY(make_sim(ctx, &spec, &sim));
+    wall += bench_cpu_s() - t0;
+    gf_particles *p = gf_sim_particles(sim);
+    double e0 = gf_particles_kinetic_energy(p) + spring_energy(sim), worst = 0.0;
+    double t_total = (full ? 20.0 : 4.0) * sqrt(spec.grains.diameter_m / spec.gravity_m_s2);
+    long n_total = (long)ceil(t_total / gf_sim_dt_s(sim)), done = 0;
+    gf_status st = GF_OK;
+    for (int smp = 1; smp <= 100 && st == GF_OK; ++smp) {
+        long target = n_total * smp / 100;
+        t0 = bench_cpu_s();
+        st = gf_sim_advance(sim, target - done);
+        wall += bench_cpu_s() - t0;
+        done = target;
+        if (st == GF_OK)
+            worst = fmax(worst, fabs((gf_particles_kinetic_energy(p) + spring_energy(sim)) / e0 - 1.0));
+    }
+    gf_sim_destroy(&sim);
+    GF_TRY(st);
+    *out = (bench_result){worst, 0.0, worst, wall};
+    return GF_OK;
+}
+
+/* ---------------------------------------------------------------- dry collapse */
+
+#define COLLAPSE_SEEDS 3
+static double collapse_reference_m = NAN, collapse_reference_sd_m = NAN;
+
+static int collapse_available(const char **why)
+{
+    const gf_scene_desc *d = gf_scene_find("column_collapse");
+    if (!d || !d->diagnose || d->n_diag < 1) {
+        *why = "scene column_collapse (with front_position diagnostic) not in this build";
+        return 0;
+    }
+    *why = "";
+    return 1;
+}
+
+/* Final front position of a small dry collapse (run to the scene's end condition). */
+static gf_status collapse_front(gf_ctx *ctx, const bench_knobs *k, uint64_t seed, double *front_m, double *wall_s)
+{
+    gf_run_spec spec = base_spec("column_collapse", k);
+    spec.seed = seed;
+    spec.grains.diameter_m = 7.6e-3; /* Izard 2014 §5.2 grains, defaults of the run spec */
+    spec.grains.density_kg_m3 = 2500.0;
+    spec.grains.polydispersity = 0.05;
+    GF_TRY(gf_run_spec_set_param(ctx, &spec, "column_length_over_D", 8.0));
+    GF_TRY(gf_run_spec_set_param(ctx, &spec, "aspect_ratio", 0.5));
+    GF_TRY(gf_run_spec_set_param(ctx, &spec, "width_over_D", 3.0));
+    spec.end_time_nd = 40.0; /* upper bound; done() stops the run at rest */
+    const gf_scene_desc *d = gf_scene_find("column_collapse");
+    gf_sim *sim = NULL;
+    double t0 = bench_cpu_s();
+    GF_TRY(make_sim(ctx, &spec, &sim));
+    long chunk = (long)ceil(0.25 * sqrt(spec.grains.diameter_m / spec.gravity_m_s2) / gf_sim_dt_s(sim));
+    gf_status st = GF_OK;
+    while (st == GF_OK && gf_sim_time_s(sim) < gf_sim_end_time_s(sim) && !(d->done && d->done(sim)))
+        st = gf_sim_advance(sim, chunk);
+    *wall_s = bench_cpu_s() - t0;
+    double v[16];
+    if (st == GF_OK && d->n_diag <= 16)
+        st = d->diagnose(sim, v);
+    *front_m = v[0]; /* front_position, docs/output.md */
+    gf_sim_destroy(&sim);
+    return st;
+}
+
+static gf_status collapse_mean(gf_ctx *ctx, const bench_knobs *k, double *mean_m, double *sd_m, double *wall_s)
+{
+    double sum = 0.0, sum2 = 0.0;
+    *wall_s = 0.0;
+    for (int seed = 1; seed <= COLLAPSE_SEEDS; ++seed) {
+        double f, w;
+        GF_TRY(collapse_front(ctx, k, (uint64_t)seed, &f, &w));
+        sum += f, sum2 += f * f, *wall_s += w;
+    }
+    *mean_m = sum / COLLAPSE_SEEDS;
+    *sd_m = sqrt(fmax(0.0, sum2 / COLLAPSE_SEEDS - *mean_m * *mean_m));
+    return GF_OK;
+}
+
+static gf_status measure_collapse(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out)
+{
+    if (isnan(collapse_reference_m)) {
+        bench_knobs fine = *k;
+        fine.dt_over_tc = 1.0 / 200.0;
+        fine.t_contact_nd = 5e-3;
+        double w;
+        GF_TRY(collapse_mean(ctx, &fine, &collapse_reference_m, &collapse_reference_sd_m, &w));
+        printf("collapse_runout   reference (dt = t_c/200, t_c sqrt(g/D) = 5e-3, %d seeds): front %.3g D, seed "
+               "scatter (sd) %.3g D = %.1f %%\n",
+               COLLAPSE_SEEDS, collapse_reference_m / 7.6e-3, collapse_reference_sd_m / 7.6e-3,
+               100.0 * collapse_reference_sd_m / collapse_reference_m);
+    }
+    double front, sd, wall;
+    GF_TRY(collapse_mean(ctx, k, &front, &sd, &wall));
+    double D = 7.6e-3; /* observables are dimensionless: front / D */
+    *out = (bench_result){front / D, collapse_reference_m / D, fabs(front / collapse_reference_m - 1.0), wall};
+    return GF_OK;
+}
+
+/* ---------------------------------------------------------------- hindered settling */
+
+static int settling_available(const char **why)
+{
+    const gf_scene_desc *d = gf_scene_find("settling");
+    if (!d || !d->diagnose || d->n_diag < 3) {
+        *why = "scene settling (with settling_velocity_ratio) not in this build";
+        return 0;
+    }
+    *why = "";
+    return 1;
+}
+
+/* Homogeneous suspension at phi = 0.2 in a periodic ~16 D cube, Re_t = 0.05
+ * (tests/fluid/test_hindered_settling.c set-up, run through gf_sim): U/U_t
+ * after 3 sqrt(D/g) (the grains' Stokes relaxation time is 0.1 sqrt(D/g))
+ * against Richardson & Zaki (1954), (1 - phi)^4.65. The tier comes from the
+ * `fluid: auto` rule (gf_tier.h), which must pick "unresolved" here. */
+static gf_status measure_settling(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out)
+{
+    gf_run_spec spec = base_spec("settling", k);
+    const double D = 1e-3, rho_p = 2500.0, rho_f = 1000.0, g = 9.81, phi = 0.2;
+    spec.grains.diameter_m = D;
+    spec.grains.density_kg_m3 = rho_p;
+    spec.fluid.density_kg_m3 = rho_f;
+    spec.fluid.viscosity_Pa_s = sqrt(rho_f * (rho_p - rho_f) * g * D * D * D / (18.0 * 0.05)); /* Re_t = 0.05 */
+    gf_groups_input in = {.diameter_m = D, .grain_density_kg_m3 = rho_p, .fluid_density_kg_m3 = rho_f,
+                          .viscosity_Pa_s = spec.fluid.viscosity_Pa_s, .gravity_m_s2 = g, .slope_sin = 1.0};
+    gf_scales sc;
+    GF_TRY(gf_groups_compute(ctx, &in, &sc));
+    gf_tier_choice tier;
+    GF_TRY(gf_tier_from_scales(ctx, &sc, &tier));
+    snprintf(spec.fluid.model, sizeof spec.fluid.model, "%s", tier.model);
+    if (tier.tier != GF_TIER_UNRESOLVED)
+        return GF_FAIL(ctx, GF_ERR_PHYSICS, "settling: fluid: auto chose '%s' (%s)", tier.model, tier.reason);
+    /* Richardson-Zaki is a drag law of the suspension: lubrication between the
+     * rare close pairs is not part of it, and at St = 0.06 its explicit
+     * damping would need dt < t_c/230 (gf_sim refuses the default dt) */
+    spec.fluid.lubrication = 0;
+    GF_TRY(gf_run_spec_set_param(ctx, &spec, "mode", 1.0));
+    GF_TRY(gf_run_spec_set_param(ctx, &spec, "phi_suspension", phi));
+    GF_TRY(gf_run_spec_set_param(ctx, &spec, "box_over_D", 16.0));
+    const gf_scene_desc *d = gf_scene_find("settling");
+    gf_sim *sim = NULL;
+    double t0 = bench_cpu_s();
+    GF_TRY(make_sim(ctx, &spec, &sim));
+    long n = (long)ceil((full ? 5.0 : 3.0) * sqrt(D / g) / gf_sim_dt_s(sim));
+    gf_status st = gf_sim_advance(sim, n);
+    double wall = bench_cpu_s() - t0, v[8] = {NAN, NAN, NAN};
+    if (st == GF_OK)
+        st = d->diagnose(sim, v);
+    gf_sim_destroy(&sim);
+    GF_TRY(st);
+    double rz = pow(1.0 - phi, 4.65);
+    *out = (bench_result){v[2], rz, fabs(v[2] / rz - 1.0), wall};
+    return GF_OK;
+}
+
+/* ---------------------------------------------------------------- table */
+
+static const bench_case cases[] = {
+    {"restitution", "restitution of a normal collision, clipped law, eps_max 0.5 (1)",
+     "closed form of the clipped oscillator, 0.550 (digest §1.2)", "worst |e/e_closed - 1| over onset phases (1)",
+     0.01, BENCH_KNOB_DT, 0, always, measure_restitution},
+    {"contact_duration", "overlap duration / t_c, unclipped law, eps 0.87 (1)", "t_c exactly (Izard (3.17))",
+     "worst |T/t_c - 1| over onset phases (1)", 0.03, BENCH_KNOB_DT, 0, always, measure_duration},
+    {"gas_energy", "max relative energy error, elastic frictionless gas (1)", "0 (energy conserved by the ODE)",
+     "max |E/E0 - 1| (1)", 1e-3, BENCH_KNOB_DT | BENCH_KNOB_SKIN, 0, always, measure_gas},
+    {"collapse_runout", "final front position / D, dry collapse R0 = 8 D, a = 0.5 (1)",
+     "finest run: dt = t_c/200, t_c sqrt(g/D) = 5e-3, mean of 3 seeds", "|R/R_finest - 1| (1)", 0.10, BENCH_KNOB_DT | BENCH_KNOB_TC,
+     1, collapse_available, measure_collapse},
+    {"hindered_settling", "settling velocity / Stokes velocity, suspension phi = 0.2, Re_t = 0.05 (1)",
+     "Richardson & Zaki 1954: (1 - phi)^4.65", "|U/U_RZ - 1| (1)", 0.10, BENCH_KNOB_DT | BENCH_KNOB_CELL, 0,
+     settling_available, measure_settling},
+};
+
+const bench_case *bench_cases(int *n)
+{
+    *n = (int)(sizeof cases / sizeof cases[0]);
+    return cases;
+}

@@ -1,0 +1,211 @@
+/*
+ * gf-bench-dem: throughput of the DEM core on the settled_bed scene, a dense
+ * bed at rest (periodic x and z, floor, gravity), linear spring-dashpot with
+ * tangential history (the seeds' law), t_c = t_contact_nd sqrt(D/g),
+ * dt = t_c/50.
+ *
+ * For each N: build and settle the bed once, checkpoint it, then for each
+ * thread count re-create the sim from the checkpoint (same state, bit for
+ * bit) and time `steps` steps. Reports particle-timesteps per second, per
+ * core, and the split neighbour / force / integrate from the step-loop timers.
+ *
+ *   gf-bench-dem [--n N]... [--threads T]... [--steps S] [--settle T_nd]
+ *                [--lammps-data PATH] [--friction MU]
+ *
+ * --lammps-data writes the settled bed of the LAST N as a LAMMPS data file
+ * (atom_style sphere) plus PATH.params (k_n, gamma_n, k_t, mu, dt, box),
+ * for workflows/bench/lammps_compare.sh.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "contact/gf_contact.h"
+#include "gf_sim.h"
+
+static double cpu_time_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+typedef struct bench_args {
+    long n[8];
+    int n_n;
+    int threads[8];
+    int n_threads;
+    long steps;
+    double settle_nd, friction;
+    const char *lammps;
+} bench_args;
+
+static void spec_for(gf_ctx *ctx, gf_run_spec *s, const bench_args *a, long n, double settle_nd)
+{
+    gf_run_spec_defaults(s);
+    snprintf(s->scene, sizeof s->scene, "settled_bed");
+    s->grains.diameter_m = 1e-3;
+    s->grains.density_kg_m3 = 2500.0;
+    s->grains.polydispersity = 0.1;
+    s->contact.restitution = 0.5;
+    s->contact.friction = a->friction;
+    s->contact.wall_friction = a->friction;
+    s->contact.t_contact_nd = 1e-2;
+    s->contact.dt_over_tc = 0.02;
+    gf_run_spec_set_param(ctx, s, "n_grains", (double)n);
+    gf_run_spec_set_param(ctx, s, "settle_time_nd", settle_nd);
+}
+
+static int write_lammps(gf_sim *sim, const char *path)
+{
+    gf_particles *p = gf_sim_particles(sim);
+    double lo[3], hi[3];
+    int per[3];
+    gf_sim_box(sim, lo, hi, per);
+    FILE *f = fopen(path, "w");
+    if (!f)
+        return 0;
+    const gf_run_spec *s = gf_sim_spec(sim);
+    double ytop = 0.0;
+    for (size_t i = 0; i < p->n_local; ++i)
+        ytop = fmax(ytop, p->y_m[i] + p->radius_m[i]);
+    fprintf(f, "grainflow settled_bed, %zu grains (SI units)\n\n%zu atoms\n1 atom types\n\n", p->n_local, p->n_local);
+    fprintf(f, "%.17g %.17g xlo xhi\n%.17g %.17g ylo yhi\n%.17g %.17g zlo zhi\n\nAtoms # sphere\n\n", lo[0], hi[0],
+            lo[1], fmax(hi[1], ytop + 0.01 * (hi[1] - lo[1])), lo[2], hi[2]);
+    for (size_t i = 0; i < p->n_local; ++i) {
+        double x = p->x_m[i] - (hi[0] - lo[0]) * floor((p->x_m[i] - lo[0]) / (hi[0] - lo[0]));
+        double z = p->z_m[i] - (hi[2] - lo[2]) * floor((p->z_m[i] - lo[2]) / (hi[2] - lo[2]));
+        fprintf(f, "%zu 1 %.17g %.17g %.17g %.17g %.17g\n", i + 1, 2.0 * p->radius_m[i], s->grains.density_kg_m3, x,
+                p->y_m[i], z);
+    }
+    fprintf(f, "\nVelocities\n\n");
+    for (size_t i = 0; i < p->n_local; ++i)
+        fprintf(f, "%zu %.17g %.17g %.17g %.17g %.17g %.17g\n", i + 1, p->vx_m_s[i], p->vy_m_s[i], p->vz_m_s[i],
+                p->wx_rad_s[i], p->wy_rad_s[i], p->wz_rad_s[i]);
+    fclose(f);
+    /* the law's constants for the mean pair, in LAMMPS gran/hooke/history terms */
+    gf_contact_params cp;
+    gf_ctx ctx = {0};
+    gf_contact_params_from_spec(&ctx, s, &cp);
+    double gamma_n = 2.0 * cp.zeta * sqrt(cp.m_eff_mean_kg * cp.k_n_N_m);
+    char pp[600];
+    snprintf(pp, sizeof pp, "%s.params", path);
+    f = fopen(pp, "w");
+    if (!f)
+        return 0;
+    /* gran/hooke/history: F_n = k_n delta - m_eff gamma_n v_n, gamma_n in 1/s */
+    fprintf(f, "KN=%.17g\nGAMMAN=%.17g\nKT=%.17g\nGAMMAT=0\nMU=%.17g\nDT=%.17g\nSKIN=%.17g\nG=%.17g\nN=%zu\n",
+            cp.k_n_N_m, gamma_n / cp.m_eff_mean_kg, cp.kt_over_kn * cp.k_n_N_m, cp.mu_grain, gf_sim_dt_s(sim),
+            s->contact.skin_over_D * s->grains.diameter_m, s->gravity_m_s2, p->n_local);
+    fclose(f);
+    return 1;
+}
+
+static int parse(int argc, char **argv, bench_args *a)
+{
+    memset(a, 0, sizeof *a);
+    a->steps = 2000;
+    a->settle_nd = 4.0;
+    a->friction = 0.5;
+    for (int i = 1; i < argc; ++i) {
+        const char *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (!v)
+            return 0;
+        if (!strcmp(argv[i], "--n") && a->n_n < 8)
+            a->n[a->n_n++] = atol(v);
+        else if (!strcmp(argv[i], "--threads") && a->n_threads < 8)
+            a->threads[a->n_threads++] = atoi(v);
+        else if (!strcmp(argv[i], "--steps"))
+            a->steps = atol(v);
+        else if (!strcmp(argv[i], "--settle"))
+            a->settle_nd = atof(v);
+        else if (!strcmp(argv[i], "--friction"))
+            a->friction = atof(v);
+        else if (!strcmp(argv[i], "--lammps-data"))
+            a->lammps = v;
+        else
+            return 0;
+        ++i;
+    }
+    if (!a->n_n)
+        a->n[a->n_n++] = 10000;
+    if (!a->n_threads)
+        a->threads[0] = 1, a->threads[1] = 2, a->n_threads = 2;
+    return 1;
+}
+
+int main(int argc, char **argv)
+{
+    bench_args a;
+    if (!parse(argc, argv, &a)) {
+        fprintf(stderr, "usage: gf-bench-dem [--n N]... [--threads T]... [--steps S] [--settle T_nd] "
+                        "[--friction MU] [--lammps-data PATH]\n");
+        return 2;
+    }
+    gf_ctx ctx = {0};
+    for (int k = 0; k < a.n_n; ++k) {
+        gf_run_spec spec;
+        spec_for(&ctx, &spec, &a, a.n[k], a.settle_nd);
+        gf_sim *sim = NULL;
+        double w0 = gf_wtime();
+        gf_sim_options opt = {.n_threads = 1};
+        if (gf_sim_create(&ctx, &spec, &opt, &sim) != GF_OK) {
+            fprintf(stderr, "gf-bench-dem: %s\n", ctx.last_msg);
+            return 1;
+        }
+        size_t nc;
+        double ov;
+        gf_sim_contact_stats(sim, &nc, &ov);
+        printf("N = %ld: settled in %.1f s wall (%.1f sqrt(D/g)); %zu contacts (%.2f per grain), max overlap %.4f D, "
+               "KE %.3g J\n",
+               a.n[k], gf_wtime() - w0, a.settle_nd, nc, 2.0 * nc / a.n[k], ov,
+               gf_particles_kinetic_energy(gf_sim_particles(sim)));
+        char ck[256];
+        snprintf(ck, sizeof ck, "/tmp/gf_bench_dem_%d.h5", (int)getpid());
+        if (gf_sim_checkpoint(sim, ck) != GF_OK) {
+            fprintf(stderr, "gf-bench-dem: %s\n", ctx.last_msg);
+            return 1;
+        }
+        if (a.lammps && k == a.n_n - 1 && !write_lammps(sim, a.lammps)) {
+            fprintf(stderr, "gf-bench-dem: cannot write %s\n", a.lammps);
+            return 1;
+        }
+        gf_sim_destroy(&sim);
+        gf_run_spec again;
+        spec_for(&ctx, &again, &a, a.n[k], 0.0); /* no second settling: the checkpoint holds the bed */
+        double rate1 = 0.0;
+        for (int q = 0; q < a.n_threads; ++q) {
+            gf_sim_options o = {.n_threads = a.threads[q], .restart_path = ck};
+            if (gf_sim_create(&ctx, &again, &o, &sim) != GF_OK) {
+                fprintf(stderr, "gf-bench-dem: %s\n", ctx.last_msg);
+                return 1;
+            }
+            const gf_timers *t = gf_sim_timers(sim);
+            double e0[GF_TIMER_COUNT];
+            memcpy(e0, t->elapsed_s, sizeof e0);
+            double t0 = gf_wtime(), c0 = cpu_time_s();
+            if (gf_sim_advance(sim, a.steps) != GF_OK) {
+                fprintf(stderr, "gf-bench-dem: %s\n", ctx.last_msg);
+                return 1;
+            }
+            double wall = gf_wtime() - t0, cpu = cpu_time_s() - c0;
+            double rate = (double)a.n[k] * a.steps / wall;
+            if (q == 0)
+                rate1 = rate;
+            double tn = t->elapsed_s[GF_T_NEIGHBOUR] - e0[GF_T_NEIGHBOUR], tf = t->elapsed_s[GF_T_FORCE] - e0[GF_T_FORCE],
+                   ti = t->elapsed_s[GF_T_INTEGRATE] - e0[GF_T_INTEGRATE];
+            printf("N = %ld, %d thread(s): %ld steps in %.3f s wall, %.3f s CPU: %.3e particle-steps/s wall "
+                   "(speed-up %.2f), %.3e per CPU-second; neighbour %.1f %%, force %.1f %%, integrate %.1f %%, "
+                   "other %.1f %%\n",
+                   a.n[k], a.threads[q], a.steps, wall, cpu, rate, rate / rate1, (double)a.n[k] * a.steps / cpu,
+                   100 * tn / wall, 100 * tf / wall, 100 * ti / wall, 100 * (wall - tn - tf - ti) / wall);
+            fflush(stdout);
+            gf_sim_destroy(&sim);
+        }
+        remove(ck);
+    }
+    return 0;
+}
