@@ -404,9 +404,8 @@ static void kick(gf_sim *s, double h)
 {
     gf_particles *p = s->p;
     long n = (long)p->n_local;
-    int nt = s->n_threads;
 #ifdef _OPENMP
-#pragma omp parallel num_threads(nt) if (nt > 1 && n >= GF_SIM_PARALLEL_MIN_GRAINS)
+#pragma omp parallel num_threads(s->n_threads) if (s->n_threads > 1 && n >= GF_SIM_PARALLEL_MIN_GRAINS)
 #endif
     {
 #ifdef _OPENMP
@@ -424,11 +423,10 @@ static double drift(gf_sim *s)
 {
     gf_particles *p = s->p;
     long n = (long)p->n_local;
-    int nt = s->n_threads;
     double d2[GF_SIM_MAX_THREADS] = {0.0};
     int used = 1;
 #ifdef _OPENMP
-#pragma omp parallel num_threads(nt) if (nt > 1 && n >= GF_SIM_PARALLEL_MIN_GRAINS)
+#pragma omp parallel num_threads(s->n_threads) if (s->n_threads > 1 && n >= GF_SIM_PARALLEL_MIN_GRAINS)
 #endif
     {
 #ifdef _OPENMP

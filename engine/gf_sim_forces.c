@@ -161,6 +161,9 @@ static inline __attribute__((always_inline)) void pair_rows_impl(gf_sim *s, size
     double *restrict hist = nl->hist;
     const double lub_cut = s->lubrication ? s->lub_cutoff_m : 0.0;
     const double dt = s->dt_s, mu = s->cp.mu_grain;
+    const gf_contact_params cp = s->cp; /* local copy: history stores cannot alias it */
+    size_t n_contacts = 0;
+    double max_overlap = acc->max_overlap_m;
     const double *vpx = s->vx_pred, *vpy = s->vy_pred, *vpz = s->vz_pred;
     gf_contact_kernel *kernel = s->law->kernel;
     for (size_t i = i0; i < i1; ++i) {
@@ -202,17 +205,16 @@ static inline __attribute__((always_inline)) void pair_rows_impl(gf_sim *s, size
                 g.mu = mu;
                 double f_n, f_t[3];
                 if (linear)
-                    gf_contact_linear_inline(&s->cp, &g, dt, h, &f_n, f_t);
+                    gf_contact_linear_inline(&cp, &g, dt, h, &f_n, f_t);
                 else
-                    kernel(&s->cp, &g, dt, h, &f_n, f_t);
+                    kernel(&cp, &g, dt, h, &f_n, f_t);
                 F[0] = f_n * g.n[0] + f_t[0], F[1] = f_n * g.n[1] + f_t[1], F[2] = f_n * g.n[2] + f_t[2];
                 double nxt[3];
                 cross(g.n, f_t, nxt);
                 txi -= ri * nxt[0], tyi -= ri * nxt[1], tzi -= ri * nxt[2];
                 tx[j] -= R[j] * nxt[0], ty[j] -= R[j] * nxt[1], tz[j] -= R[j] * nxt[2];
-                acc->n_contacts++;
-                if (g.overlap_m > acc->max_overlap_m)
-                    acc->max_overlap_m = g.overlap_m;
+                n_contacts++;
+                max_overlap = g.overlap_m > max_overlap ? g.overlap_m : max_overlap;
             } else if (touching[k]) {
                 h[0] = h[1] = h[2] = 0.0;
                 touching[k] = 0;
@@ -231,6 +233,8 @@ static inline __attribute__((always_inline)) void pair_rows_impl(gf_sim *s, size
         fx[i] += fxi, fy[i] += fyi, fz[i] += fzi;
         tx[i] += txi, ty[i] += tyi, tz[i] += tzi;
     }
+    acc->n_contacts += n_contacts;
+    acc->max_overlap_m = max_overlap;
 }
 
 static void pair_rows_linear(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_sim_accum *acc)

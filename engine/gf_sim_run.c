@@ -164,6 +164,7 @@ static gf_status run_loop(gf_sim *s, run_out *o)
     double wall0 = gf_wtime(), last_progress = wall0;
     long chunk = 16, steps_at_progress = s->step;
     GF_TRY(write_record(s, o));
+    long written_step = s->step; /* a step count, not a time: steps overshoot an instant by up to dt */
     while (s->t_s < s->t_end_s - 0.5 * s->dt_s) {
         double t_stop = fmin(fmin(next_out, next_ck), s->t_end_s);
         long to_stop = (long)ceil((t_stop - s->t_s) / s->dt_s - 1e-9);
@@ -183,6 +184,7 @@ static gf_status run_loop(gf_sim *s, run_out *o)
         chunk = took < 0.05 ? chunk * 2 : (took > 0.2 && chunk > 1 ? chunk / 2 : chunk); /* ~0.1 s per chunk */
         if (s->t_s >= next_out - 0.5 * s->dt_s) {
             GF_TRY(write_record(s, o));
+            written_step = s->step;
             next_out += out_dt;
         }
         if (s->t_s >= next_ck - 0.5 * s->dt_s) {
@@ -197,10 +199,21 @@ static gf_status run_loop(gf_sim *s, run_out *o)
         if (s->scene->done && s->scene->done(s))
             break;
     }
-    if (o->diag || o->parts) /* last state, unless it was just written */
-        if (out_dt <= 0.0 || fabs(s->t_s - (next_out - out_dt)) > 0.5 * s->dt_s)
-            GF_TRY(write_record(s, o));
+    if ((o->diag || o->parts) && s->step != written_step) /* last state, unless just written */
+        GF_TRY(write_record(s, o));
     return GF_OK;
+}
+
+/* Column length R0 and height H0 (collapse), incline (avalanche) as the scene
+ * resolved them: the campaign's a and Phi_i win over the scene's own keys. */
+static void scene_geometry(const gf_sim *s, double *R0_m, double *H0_m, double *incline_deg)
+{
+    const gf_run_spec *sp = &s->spec;
+    double D = sp->grains.diameter_m;
+    *R0_m = gf_run_spec_param(sp, "column_length_over_D", 0.0) * D;
+    double a = isnan(sp->aspect_ratio_a) ? gf_run_spec_param(sp, "aspect_ratio", 0.0) : sp->aspect_ratio_a;
+    *H0_m = a * *R0_m;
+    *incline_deg = gf_run_spec_param(sp, "incline_deg", 0.0);
 }
 
 gf_status gf_sim_run(gf_sim *s)
@@ -209,6 +222,10 @@ gf_status gf_sim_run(gf_sim *s)
     memset(&o, 0, sizeof o);
     gf_status st = GF_OK;
     if (s->opt.output_dir) {
+        double R0_m, H0_m, incline_deg, phi_measured = NAN, phi_local = NAN;
+        scene_geometry(s, &R0_m, &H0_m, &incline_deg);
+        if (s->scene->initial_packing && s->step == 0)
+            GF_TRY(s->scene->initial_packing(s, &phi_measured, &phi_local));
         gf_nc_meta meta = {
             .spec = &s->spec,
             .scales = &s->scales,
@@ -218,11 +235,11 @@ gf_status gf_sim_run(gf_sim *s)
             .stages = s->immersed ? (s->lubrication ? "fluid,contacts,lubrication,coupling,integrate"
                                                     : "fluid,contacts,coupling,integrate")
                                   : "contacts,integrate",
-            .column_length_m = gf_run_spec_param(&s->spec, "column_length_m", 0.0),
-            .column_height_m = gf_run_spec_param(&s->spec, "column_height_m", 0.0),
-            .incline_deg = gf_run_spec_param(&s->spec, "incline_deg", 0.0),
-            .phi_initial_measured = gf_run_spec_param(&s->spec, "phi_initial_measured", NAN),
-            .phi_initial_local = gf_run_spec_param(&s->spec, "phi_initial_local", NAN),
+            .column_length_m = R0_m,
+            .column_height_m = H0_m,
+            .incline_deg = incline_deg,
+            .phi_initial_measured = phi_measured,
+            .phi_initial_local = phi_local,
         };
         st = open_outputs(s, &o, &meta);
     }

@@ -46,6 +46,11 @@ double gf_coupling_excess_pressure_Pa(const gf_coupling *c, const double x_m[3])
 /* Grid and cell-centred fields for fields.nc (borrowed arrays, x fastest). */
 int gf_coupling_fields(const gf_coupling *c, int n_cells[3], double lo_m[3], double cell_m[3],
                        const gf_var_info **vars, const double *const **fields);
+/* New gravity after create (a scene's start() tilting it, e.g. the avalanche):
+ * the hydrostatic reference, the buoyancy and the drag update follow it.
+ * The step loop calls it whenever gf_sim_set_gravity changes gravity on a run
+ * that already has a coupling. Errors: non-finite g. */
+gf_status gf_coupling_set_gravity(gf_coupling *c, const double gravity_m_s2[3]);
 /* Fluid volume flux through the domain along x per unit length (Q_f, m^3/s), and fluid mass, kg. */
 double gf_coupling_fluid_flow_rate(const gf_coupling *c);
 double gf_coupling_fluid_mass_kg(const gf_coupling *c);

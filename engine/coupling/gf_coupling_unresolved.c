@@ -16,7 +16,8 @@
  * analytically, while the grid carries only the excess pore pressure p' the
  * gauges report. The reaction of -V grad p on the fluid is already inside
  * the -eps grad p term (the phi grad p share), so the only explicit exchange
- * term in the fluid equation is -f_d: fluid + grains conserve momentum.
+ * term in the fluid equation is -f_d: fluid + grains conserve momentum (up to
+ * the sub-cycling lag, see fix_mixture_momentum).
  * In p' form the fluid equation has no gravity: the step of gf_fluid.h with
  * beta = sum_i K_i delta_i / V_cell and the implicit drag inside the projection.
  *
@@ -38,11 +39,10 @@
  *     by ~1 %.
  *  2. Self-induced velocity. A grain's own reaction force, spread over the
  *     kernel, moves the fluid at its centre by u_self = -G0 F_d, with
- *     G0 = 1/(6 pi^{3/2} eta sigma_e), the Stokes flow of a Gaussian force of
- *     width sigma_e averaged with the same Gaussian (Maxey & Patel, IJMF 27,
- *     2001, force-coupling method), sigma_e^2 = sigma^2 + h^2/12 for the
- *     cell-integrated kernel. With sigma = 2 D this is 14 % of the Stokes
- *     velocity. The undisturbed velocity is recovered as u_f + s_i G0 F_d
+ *     G0 ~ 1/(6 pi^{3/2} eta sigma), the Stokes flow of a Gaussian force of
+ *     width sigma averaged with the same Gaussian (Maxey & Patel, IJMF 27,
+ *     2001, force-coupling method). With sigma = 2.5 D this is 11-13 % of the
+ *     Stokes velocity. The undisturbed velocity is recovered as u_f + s_i G0 F_d
  *     (Balachandar, Liu & Lakhote, JCP 376, 2019; Evrard, Denner & van Wachem,
  *     JCP 2020 use the same idea), i.e. K_eff = K / (1 - s_i K G0), where s_i
  *     is the grain's own share of the kernel-averaged solid fraction at its
@@ -50,7 +50,8 @@
  *     density is uniform and whose averaged velocity is already the
  *     closure's mean (homogeneous suspensions need no correction). K G0 s is
  *     capped at 0.5. G0 is measured on this grid (calibrate_self_mobility:
- *     the discrete Stokes value, 0-35 % above the continuum one) and reduced
+ *     the discrete Stokes value; within 1 % of the continuum one at
+ *     sigma = h, but not for other kernel/cell ratios) and reduced
  *     at finite kernel Reynolds number rho W sigma/eta by the Oseen factor of
  *     oseen_factor_exact (the disturbance is swept downstream).
  *
@@ -69,7 +70,8 @@
  *   phi1(x) = (1 - e^{-x}) / x  (-> the plain explicit drag when x << 1).
  * This is unconditionally stable AND gives the exact terminal slip F_tot/K for
  * any particle response time m/K, so small-St grains do not force small DEM
- * steps (dt_s is gf_run_spec_dt_s(spec), or gf_coupling_set_dem_step). The coupled lag scheme
+ * steps (dt_s is gf_run_spec_dt_s(spec), or gf_coupling_set_dem_step). The
+ * coupled lag scheme
  * (fluid implicit towards the grains, grains exponentially towards the
  * fluid) contracts the slip by e^{-dt/tau_p}/(1 + dt beta/(eps rho)) per
  * fluid step: no drag stability limit. gf_coupling_dt_max_s returns the
@@ -77,8 +79,9 @@
  * velocity scale min(Stokes settling, sqrt(drho/rho_p g D)) stands in for
  * their speed before they move) and the viscous accuracy bound h^2/nu (the
  * viscous step is implicit; beyond h^2/nu the kernel-scale flow would lag),
- * and, in packed regions only, the pore-pressure feedback bound 2 m/K
- * (pore_pressure_limit: an accuracy bound, not a stability one); a
+ * and, in packed regions only, the pore-pressure feedback bound 0.5 m/K
+ * (pore_pressure_limit: the lagged dilation/pressure loop is unstable
+ * beyond ~ m/K there); a
  * step past the advective STABILITY limit (CFL 1), or one that lets a grain
  * cross more than a cell, is refused with GF_ERR_NUMERIC naming the limit.
  *
@@ -145,9 +148,9 @@ struct gf_coupling {
 /*
  * Self-mobility G0 of a kernel-spread force on this grid: the Stokes velocity,
  * interpolated with the same kernel, per unit force. The continuum value
- * 1/(6 pi^{3/2} eta sigma) (Maxey & Patel 2001) misses the discretisation
- * (the MAC Laplacian and the face <-> cell averaging raise it by ~ 35 % at
- * sigma = h), so it is measured: one backward-Euler step with dt -> infinity
+ * 1/(6 pi^{3/2} eta sigma) (Maxey & Patel 2001) ignores the discretisation
+ * (MAC Laplacian, cell-integrated kernel, face <-> cell averaging), so it is
+ * measured: one backward-Euler step with dt -> infinity
  * on a periodic 24^3 grid of the same cells IS the discrete steady Stokes
  * solution; the periodic images are removed with Hasimoto's (JFM 5, 1959)
  * leading term, G0 = G0_periodic + 2.8373 / (6 pi eta L). Averaged over four
@@ -249,6 +252,33 @@ static gf_status calibrate_self_mobility(gf_ctx *ctx, gf_coupling *c)
     return GF_OK;
 }
 
+/* Pressure reference: the face opposite to gravity on a non-periodic gravity axis (the free-surface side). */
+static void pressure_reference_axis(gf_coupling *c)
+{
+    const gf_grid *g = &c->fluid->grid;
+    const double *gv = c->setup.gravity_m_s2;
+    c->ref_axis = -1;
+    int ga = 0;
+    for (int d = 1; d < 3; ++d)
+        if (fabs(gv[d]) > fabs(gv[ga]))
+            ga = d;
+    if (gv[ga] != 0.0 && !g->periodic[ga]) {
+        c->ref_axis = ga;
+        c->ref_side = gv[ga] < 0.0 ? 1 : 0;
+    }
+}
+
+gf_status gf_coupling_set_gravity(gf_coupling *c, const double g[3])
+{
+    for (int d = 0; d < 3; ++d)
+        if (!isfinite(g[d]))
+            return GF_FAIL(c->ctx, GF_ERR_ARG, "coupling: gravity component %d is not finite", d);
+    for (int d = 0; d < 3; ++d)
+        c->setup.gravity_m_s2[d] = g[d];
+    pressure_reference_axis(c);
+    return GF_OK;
+}
+
 /* --- set-up --------------------------------------------------------------------------------- */
 
 static gf_grid_bc map_bc(gf_fluid_bc b)
@@ -320,16 +350,7 @@ gf_status gf_coupling_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_coup
         return st;
     }
 
-    /* pressure reference: the face opposite to gravity on a non-periodic gravity axis (the free surface side) */
-    c->ref_axis = -1;
-    int ga = 0;
-    for (int d = 1; d < 3; ++d)
-        if (fabs(setup->gravity_m_s2[d]) > fabs(setup->gravity_m_s2[ga]))
-            ga = d;
-    if (setup->gravity_m_s2[ga] != 0.0 && !g->periodic[ga]) {
-        c->ref_axis = ga;
-        c->ref_side = setup->gravity_m_s2[ga] < 0.0 ? 1 : 0;
-    }
+    pressure_reference_axis(c);
     int ok = 1;
     for (int a = 0; a < 3; ++a) {
         ok &= (c->uc[a] = calloc(g->n_cells, sizeof(double))) != NULL;
@@ -427,18 +448,25 @@ static double min_cell(const gf_coupling *c)
 }
 
 /*
- * Pore-pressure feedback limit. In a packed region (phi > PHI_PACKED) the
- * grains' motion and the pore pressure are tied: dilation sucks fluid in and
- * the suction slows the dilation (Iverson 2000; Rondon 2011). The fluid sees
- * the grains' dilation one fluid step late, so a step much longer than the
- * grains' drag response time tau_p = m/K lets them dilate or compact freely
- * under a stale pressure and erases the feedback. Stability does not need
- * this (the exponential drag update is stable for any step) but accuracy in
- * dense columns does: dt <= 2 tau_p over grains in packed regions (the seed's
- * Delta t_f = 0.025 sqrt(D/g) is 2.5 tau_p in its collapse). Dilute grains
- * (suspensions, single spheres) do not constrain the step.
+ * Pore-pressure feedback limit (the drag-relaxation limit of packed
+ * regions). In a packed region (phi > PHI_PACKED) the grains' motion and the
+ * pore pressure are tied: dilation sucks fluid in and the suction slows the
+ * dilation (Iverson 2000; Rondon 2011). The fluid sees the grains' dilation
+ * one fluid step late; when the grains respond to the held pressure within
+ * the step (response time tau_p = m/K shorter than the step), the loop
+ * "dilation -> suction -> compaction -> over-pressure" has a gain ~ phi/eps > 1
+ * and the pore pressure oscillates step to step (measured in the dense
+ * column at dt_f = 2 tau_p: +-0.9 drho g H0 under a column at rest). Hence
+ * dt_f <= 0.5 tau_p over grains in packed regions, the practice of
+ * CFDEM-type codes (coupling interval below the particle relaxation time);
+ * with it the same column shows a smooth suction of -0.03..-0.1 drho g H0.
+ * Dilute grains (suspensions, single spheres) do not constrain the step:
+ * there the exponential drag update keeps them stable at any step.
  */
 #define PHI_PACKED 0.5
+#ifndef PORE_PRESSURE_TAU_FACTOR
+#define PORE_PRESSURE_TAU_FACTOR 0.5
+#endif
 static double grain_volume(const gf_particles *p, size_t i)
 {
     double r = p->radius_m[i];
@@ -488,7 +516,7 @@ static double pore_pressure_limit(const gf_coupling *c, const gf_particles *p)
             tau = fmin(tau, p->mass_kg[i] / K);
     }
     free(bins);
-    return 2.0 * tau;
+    return PORE_PRESSURE_TAU_FACTOR * tau;
 }
 
 double gf_coupling_dt_max_s(const gf_coupling *c, const gf_particles *p)

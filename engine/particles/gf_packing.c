@@ -740,22 +740,40 @@ gf_status gf_packing_build(gf_ctx *ctx, const gf_packing_spec *sp, gf_particles 
 }
 
 gf_status gf_packing_rough_base(gf_ctx *ctx, gf_particles *out, const gf_psd *psd, double density, double y,
-                                double x0, double x1, double z0, double z1, uint64_t seed)
+                                double x0, double x1, double z0, double z1, const int periodic_xz[2], uint64_t seed)
 {
     GF_TRY(gf_psd_check(ctx, psd));
+    if (!(x1 - x0 > 2.0 * psd->mean_radius_m) || !(z1 - z0 > 2.0 * psd->mean_radius_m))
+        return GF_FAIL(ctx, GF_ERR_CONFIG, "packing: rough base of %g x %g m is smaller than one grain", x1 - x0,
+                       z1 - z0);
     gf_rng rng;
     gf_rng_seed(&rng, seed ^ 0x9e3779b97f4a7c15ull);
-    double D = 2.0 * psd->mean_radius_m, a = D * (1.0 + psd->polydispersity);
-    int nx = (int)floor((x1 - x0) / a), nz = (int)floor((z1 - z0) / a);
-    if (nx < 1 || nz < 1)
-        return GF_FAIL(ctx, GF_ERR_CONFIG, "packing: rough base of %g x %g m is smaller than one grain",
-                       x1 - x0, z1 - z0);
-    double ax = (x1 - x0) / nx, az = (z1 - z0) / nz, jit = 0.5 * (fmin(ax, az) - a);
-    jit = fmin(fmax(jit, 0.0), 0.1 * D);
-    for (int i = 0; i < nx; ++i)
-        for (int k = 0; k < nz; ++k)
-            GF_TRY(gf_particles_add(ctx, out, x0 + (i + 0.5) * ax + gf_rng_range(&rng, -jit, jit), y,
-                                    z0 + (k + 0.5) * az + gf_rng_range(&rng, -jit, jit),
-                                    gf_psd_draw_radius_m(psd, &rng), density, GF_P_GLUED, NULL));
+    double lx = x1 - x0, lz = z1 - z0;
+    size_t first = out->n_local;
+    for (int fails = 0; fails < 500;) {
+        double r = gf_psd_draw_radius_m(psd, &rng);
+        double x = x0 + lx * gf_rng_uniform(&rng), z = z0 + lz * gf_rng_uniform(&rng);
+        /* non-periodic sides: keep the grain inside the strip */
+        if ((!periodic_xz[0] && (x - r < x0 || x + r > x1)) || (!periodic_xz[1] && (z - r < z0 || z + r > z1))) {
+            ++fails;
+            continue;
+        }
+        int ok = 1;
+        for (size_t j = first; j < out->n_local && ok; ++j) {
+            double dx = out->x_m[j] - x, dz = out->z_m[j] - z;
+            if (periodic_xz[0])
+                dx -= lx * round(dx / lx);
+            if (periodic_xz[1])
+                dz -= lz * round(dz / lz);
+            double rr = out->radius_m[j] + r;
+            ok = dx * dx + dz * dz >= rr * rr;
+        }
+        if (!ok) {
+            ++fails;
+            continue;
+        }
+        fails = 0;
+        GF_TRY(gf_particles_add(ctx, out, x, y, z, r, density, GF_P_GLUED, NULL));
+    }
     return GF_OK;
 }

@@ -100,11 +100,16 @@ gf_status gf_packing_deposit(gf_ctx *ctx, const gf_packing_spec *spec, double mu
                              double *phi_local);
 
 /* Rough base (Izard 2014 §1.5, §4.1.2.2): glued grains of radii drawn from
- * psd with their centres on the plane y = y_m ("half-grains"), on a square
- * lattice of spacing D(1 + p) over x in [x0, x1), z in [z0, z1) with a
- * random jitter of 0.1 D in x and z. Appends GF_P_GLUED grains to out. */
+ * psd with their centres on the plane y = y_m ("half-grains"), placed by
+ * random sequential adsorption over x in [x0, x1), z in [z0, z1) (touching
+ * allowed, no overlap, periodic images on the periodic axes) until 500
+ * successive rejections, i.e. close to the RSA jamming coverage (0.547 of
+ * the plane for equal discs; Feder, J. Theor. Biol. 1980). A random base is
+ * statistically the same whatever the domain size, which a lattice fitted
+ * to the box length is not. Appends GF_P_GLUED grains to out. */
 gf_status gf_packing_rough_base(gf_ctx *ctx, gf_particles *out, const gf_psd *psd, double density_kg_m3, double y_m,
-                                double x0_m, double x1_m, double z0_m, double z1_m, uint64_t seed);
+                                double x0_m, double x1_m, double z0_m, double z1_m, const int periodic_xz[2],
+                                uint64_t seed);
 
 /* Solid fraction of the box [lo, hi] by sampling the grain indicator on a
  * cell-centred lattice of spacing h_m, periodic images of the domain

@@ -6,8 +6,9 @@
  *
  * Axes: x downslope, y normal to the bed, z spanwise. The domain is
  * L x H x W (5D x 20D x 5D in the thesis, §6.3 of the digest), periodic in
- * x and z, with glued grains centred on y = 0 ("half-grains", §1.5) over a
- * plane floor, and a plane lid at y = H (the fluid's free-slip top). The bed
+ * x and z, with glued grains centred on y = 0 ("half-grains", §1.5; placed
+ * at random by gf_packing_rough_base, so the base roughness does not depend
+ * on L and W) over a plane floor, and a plane lid at y = H (the fluid's free-slip top). The bed
  * (height h_bed, 7-8 D in the thesis) is prepared at theta = 0 by gf_packing
  * at the requested packing fraction, re-equilibrated with the run's
  * contacts, and at t = 0 start() tilts gravity to
@@ -77,7 +78,7 @@ static gf_status avalanche_build(gf_sim *sim, const gf_run_spec *spec)
     gf_psd psd = {0.5 * D, spec->grains.polydispersity};
     gf_particles *base = NULL;
     GF_TRY(gf_particles_create(ctx, 256, &base));
-    gf_status st = gf_packing_rough_base(ctx, base, &psd, rho, 0.0, 0.0, L, 0.0, W, spec->seed);
+    gf_status st = gf_packing_rough_base(ctx, base, &psd, rho, 0.0, 0.0, L, 0.0, W, (const int[2]){1, 1}, spec->seed);
     for (size_t i = 0; st == GF_OK && i < base->n_local; ++i)
         st = gf_particles_add(ctx, p, base->x_m[i], base->y_m[i], base->z_m[i], base->radius_m[i], rho, GF_P_GLUED,
                               NULL);

@@ -9,7 +9,8 @@
  * x = 0 and is held by a gate wall at x = R0 that start() removes at t = 0
  * (Izard §5.2: the column collapses towards +x only; digest §7.3 [D]).
  * The floor is a plane at y = 0, made rough (default) by glued grains
- * centred on it (Izard §5.2 "fixed grains on the floor for roughness"). The
+ * centred on it at random (gf_packing_rough_base; Izard §5.2 "fixed grains
+ * on the floor for roughness"). The
  * column is prepared at the requested Phi_i by gf_packing (deposition with a
  * tuned preparation friction, trimmed to H0), then re-equilibrated with the
  * run's own contacts and gravity for settle_time_nd, and the clock is reset.
@@ -117,7 +118,8 @@ static gf_status column_build(gf_sim *sim, const gf_run_spec *spec)
     GF_TRY(gf_particles_create(ctx, 256, &base));
     gf_status st = GF_OK;
     if (g.rough)
-        st = gf_packing_rough_base(ctx, base, &psd, spec->grains.density_kg_m3, 0.0, 0.0, g.L, 0.0, g.W, spec->seed);
+        st = gf_packing_rough_base(ctx, base, &psd, spec->grains.density_kg_m3, 0.0, 0.0, g.L, 0.0, g.W,
+                                   (const int[2]){0, 1}, spec->seed);
     /* all base grains go to the run; those under the column are the preparation's obstacles */
     gf_particles *under = NULL;
     if (st == GF_OK)

@@ -7,6 +7,8 @@
  * its weight, downslope part included, is balanced by the hydrostatic
  * pressure p_h = rho_f g.x, so a quiescent fluid stays at rest, and every
  * grain feels the full buoyancy -rho_f V g, downslope component included.
+ * The coupling is created with vertical gravity and tilted with
+ * gf_coupling_set_gravity, the path of the avalanche scene's start().
  * Checks, with grains held at rest in the quiescent fluid:
  *   - the fluid force on each grain is -rho_f V g in all three components
  *     (relative 1e-9): the seed's (4.6) would leave the downslope component
@@ -27,8 +29,8 @@ int main(void)
     gf_run_spec spec;
     double D = 5e-3, rp = 2500, rf = 1000, mu = 0.05, g = 9.81, th = 25.0 * M_PI / 180.0;
     spec_fluid(&spec, D, rp, rf, mu, "di_felice", 2.0);
-    gf_coupling_setup su = {.lo_m = {0, 0, 0}, .hi_m = {10 * D, 20 * D, 6 * D},
-                            .gravity_m_s2 = {g * sin(th), -g * cos(th), 0}};
+    /* created with vertical gravity, tilted afterwards as the avalanche scene's start() does */
+    gf_coupling_setup su = {.lo_m = {0, 0, 0}, .hi_m = {10 * D, 20 * D, 6 * D}, .gravity_m_s2 = {0, -g, 0}};
     su.bc[0][0] = su.bc[0][1] = su.bc[2][0] = su.bc[2][1] = GF_BC_PERIODIC;
     su.bc[1][0] = GF_BC_NO_SLIP;
     su.bc[1][1] = GF_BC_FREE_SLIP;
@@ -40,6 +42,7 @@ int main(void)
     }
     GF_CHECK_OK(gf_coupling_create(&ctx, &spec, &su, &L.c), &ctx);
     GF_CHECK_OK(gf_particles_create(&ctx, 256, &L.p), &ctx);
+    GF_CHECK_OK(gf_coupling_set_gravity(L.c, L.g), &ctx);
     gf_rng rng;
     gf_rng_seed(&rng, 9);
     for (int i = 0; i < 10; ++i)  /* rough bed */

@@ -11,11 +11,18 @@
  *   H_inf/R0, deposit type (trapezoid when the back keeps >= 90 % of H0),
  *   basal excess pore pressure at x = 13/16 R0: extremum (Pa and / drho g H0)
  *   and its time, E_cx^max / (m g D), wall time split fluid / DEM.
- * Usage: validate_collapse PHI [END_T_VISQ] [LUBRICATION 0|1]
+ * Usage: validate_collapse PHI [END_T_VISQ] [LUBRICATION 0|1] [MODE]
+ * MODE "dry": the same scene with fluid.model = none; "thin": the unresolved
+ * tier with a fluid of negligible density and viscosity (rho_f = 1e-3 kg/m3,
+ * eta_f = 1e-7 Pa s). Both run for END_T_VISQ x T_visq of the viscous case
+ * and must give the same run-out within 5 % (issue #4's dry limit).
+ * "dry_perturbed": the dry run with g changed by 1e-7, to measure how far a
+ * perturbation of that size moves the run-out (granular collapses amplify it).
  */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "coupling/gf_coupling.h"
 #include "gf_sim.h"
@@ -27,6 +34,7 @@ int main(int argc, char **argv)
     double phi = argc > 1 ? atof(argv[1]) : 0.6;
     double end_tv = argc > 2 ? atof(argv[2]) : 1.2e4;
     int lub = argc > 3 ? atoi(argv[3]) : 0;
+    const char *mode = argc > 4 ? argv[4] : "viscous";
     gf_ctx ctx = {0};
     gf_run_spec spec;
     gf_run_spec_defaults(&spec);
@@ -38,6 +46,15 @@ int main(int argc, char **argv)
     spec.fluid.density_kg_m3 = rf;
     spec.fluid.viscosity_Pa_s = eta;
     spec.fluid.lubrication = lub;
+    if (strcmp(mode, "dry") == 0 || strcmp(mode, "dry_perturbed") == 0) {
+        if (mode[3] == '_')  /* chaos check: the dry run with g changed by 1e-7 */
+            spec.gravity_m_s2 *= 1.0 + 1e-7;
+        snprintf(spec.fluid.model, sizeof spec.fluid.model, "none");
+        spec.fluid.density_kg_m3 = spec.fluid.viscosity_Pa_s = 0.0;
+    } else if (strcmp(mode, "thin") == 0) {
+        spec.fluid.density_kg_m3 = 1e-3;
+        spec.fluid.viscosity_Pa_s = 1e-7;
+    }
     spec.phi_initial = phi;
     spec.aspect_ratio_a = 0.5;
     double R0 = 16 * D, H0 = 0.5 * R0;
@@ -55,7 +72,8 @@ int main(int argc, char **argv)
     if (sc->initial_packing)
         sc->initial_packing(sim, &phm, &phl);
     gf_particles *p = gf_sim_particles(sim);
-    double xg[3] = {13.0 / 16.0 * R0, 0.0, 1.5 * D};
+    double xg[3] = {13.0 / 16.0 * R0, 0.0, 1.5 * D}, xg8[3] = {0.5 * R0, 0.0, 1.5 * D}, xg4[3] = {0.25 * R0, 0.0, 1.5 * D};
+    double pb8_min = 0, pb8_max = 0, pb4_min = 0, pb4_max = 0;
     double t_end = end_tv * t_visq, dt = gf_sim_dt_s(sim);
     long n_chunk = (long)ceil(50.0 * t_visq / dt);
     double t_start = NAN, pb_min = 0, pb_max = 0, t_pbmin = 0, t_pbmax = 0, ecx_max = 0, m_mean = 0;
@@ -66,7 +84,7 @@ int main(int argc, char **argv)
     m_mean /= (double)n_mob;
     double v[3];
     t0 = gf_wtime();
-    printf("# t/T_visq  front/R0  Pb/(drho g H0)\n");
+    printf("# t/T_visq  front/R0  Pb/(drho g H0) at x = 13/16 R0, 8/16 R0, 4/16 R0\n");
     int k = 0;
     while (gf_sim_time_s(sim) < t_end) {
         if (gf_sim_advance(sim, n_chunk) != GF_OK) {
@@ -76,6 +94,10 @@ int main(int argc, char **argv)
         double t = gf_sim_time_s(sim);
         sc->diagnose(sim, v);
         double pb = sim->coupling ? gf_coupling_excess_pressure_Pa(sim->coupling, xg) : 0.0;
+        double pb8 = sim->coupling ? gf_coupling_excess_pressure_Pa(sim->coupling, xg8) : 0.0;
+        double pb4 = sim->coupling ? gf_coupling_excess_pressure_Pa(sim->coupling, xg4) : 0.0;
+        pb8_min = fmin(pb8_min, pb8), pb8_max = fmax(pb8_max, pb8);
+        pb4_min = fmin(pb4_min, pb4), pb4_max = fmax(pb4_max, pb4);
         if (pb < pb_min)
             pb_min = pb, t_pbmin = t;
         if (pb > pb_max)
@@ -89,8 +111,9 @@ int main(int argc, char **argv)
         ecx /= (double)n_mob;
         if (ecx > ecx_max)
             ecx_max = ecx;
-        if (k++ % 20 == 0)
-            printf("%8.0f %7.3f %+8.4f\n", t / t_visq, v[0] / R0, pb / ((rp - rf) * g * H0));
+        if (k++ % 10 == 0)
+            printf("%8.0f %7.3f %+8.4f %+8.4f %+8.4f\n", t / t_visq, v[0] / R0, pb / ((rp - rf) * g * H0),
+                   pb8 / ((rp - rf) * g * H0), pb4 / ((rp - rf) * g * H0));
     }
     double wall = gf_wtime() - t0;
     sc->diagnose(sim, v);
@@ -101,14 +124,15 @@ int main(int argc, char **argv)
     const gf_timers *tm = gf_sim_timers(sim);
     double scale = (rp - rf) * g * H0;
     int dense_sign = fabs(pb_min) > fabs(pb_max) ? -1 : +1;
-    printf("SUMMARY phi_i %.3f (requested %.2f, solid volume/R0 H0 W %.3f) | start %.0f T_visq | R_inf/R0 %.2f | "
+    printf("SUMMARY [%s] phi_i %.3f (requested %.2f, solid volume/R0 H0 W %.3f) | start %.0f T_visq | R_inf/R0 %.2f | "
            "H_inf/R0 %.3f | back height/H0 %.2f -> %s | Pb extremum %+.0f Pa = %+.3f drho g H0 at %.0f T_visq "
-           "(min %+.3f at %.0f, max %+.3f at %.0f) | Ecx_max/(mgD) %.4f | grains %zu | wall %.0f s (build %.0f s): "
+           "(min %+.3f at %.0f, max %+.3f at %.0f) | Pb at 8/16 R0 min %+.3f max %+.3f, at 4/16 R0 min %+.3f max %+.3f | Ecx_max/(mgD) %.4f | grains %zu | wall %.0f s (build %.0f s): "
            "fluid %.1f s, coupling %.1f s, DEM %.1f s, %ld DEM steps, %d per fluid step\n",
-           phl, phi, phm, t_start / t_visq, v[0] / R0, v[1] / R0, h_back / H0,
+           mode, phl, phi, phm, t_start / t_visq, v[0] / R0, v[1] / R0, h_back / H0,
            h_back > 0.9 * H0 ? "trapezoid" : "triangle", dense_sign < 0 ? pb_min : pb_max,
            (dense_sign < 0 ? pb_min : pb_max) / scale, (dense_sign < 0 ? t_pbmin : t_pbmax) / t_visq,
-           pb_min / scale, t_pbmin / t_visq, pb_max / scale, t_pbmax / t_visq, ecx_max / (m_mean * g * D), n_mob,
+           pb_min / scale, t_pbmin / t_visq, pb_max / scale, t_pbmax / t_visq, pb8_min / scale, pb8_max / scale,
+           pb4_min / scale, pb4_max / scale, ecx_max / (m_mean * g * D), n_mob,
            wall, t_build, tm->elapsed_s[GF_T_FLUID], tm->elapsed_s[GF_T_COUPLING],
            tm->elapsed_s[GF_T_FORCE] + tm->elapsed_s[GF_T_NEIGHBOUR] + tm->elapsed_s[GF_T_INTEGRATE],
            gf_sim_step_count(sim), sim->n_substeps);
