@@ -39,8 +39,8 @@ if [ "$2" != "--no-collapse" ] && [ -x "$T/validate_collapse" ]; then
     run collapse_dryp nice "$T/validate_collapse" "$DENSE" 10000 0 dry_perturbed
 fi
 
-block() { echo '```'; grep -v '^#' "$TMP/$1.txt" | grep -v '^ *[0-9]' ; echo '```'; }
-series() { echo '```'; cat "$TMP/$1.txt" | grep '^#\|^ *[0-9]' ; echo '```'; }
+block() { echo '```'; cat "$TMP/$1.txt"; echo '```'; }
+series() { echo '```'; grep '^#\|^ *[0-9][0-9]* ' "$TMP/$1.txt" | grep -v 'passed' || true; echo '```'; }
 
 {
 cat <<'HDR'

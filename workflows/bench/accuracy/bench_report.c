@@ -171,6 +171,7 @@ static gf_status write_nc(gf_ctx *ctx, const char *path, const bench_point *pts,
     NC(put_text(ncid, NC_GLOBAL, "title", "grainflow accuracy benchmark: error against run time per setting"));
     NC(put_text(ncid, NC_GLOBAL, "history", full ? strcat(hist, " --full") : strcat(hist, " --quick")));
     NC(put_text(ncid, NC_GLOBAL, "source", "grainflow " GF_VERSION " (" GF_GIT_HASH ")"));
+    NC(put_text(ncid, NC_GLOBAL, "institution", "grainflow simulation framework"));
     NC(put_text(ncid, NC_GLOBAL, "references",
                 "Izard 2014 (digest izard-immersed-dem §1.2, §8); tolerances from the validation table"));
     NC(put_text(ncid, NC_GLOBAL, "comment",
