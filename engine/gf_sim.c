@@ -244,14 +244,17 @@ static gf_status compute_scales(gf_sim *s)
 {
     const gf_run_spec *sp = &s->spec;
     double incline = gf_run_spec_param(sp, "incline_deg", 90.0);
+    double R0_m = 0.0, H0_m = 0.0;
+    if (s->scene->column_geometry)
+        s->scene->column_geometry(sp, &R0_m, &H0_m);
     gf_groups_input in = {.diameter_m = sp->grains.diameter_m,
                           .grain_density_kg_m3 = sp->grains.density_kg_m3,
                           .fluid_density_kg_m3 = s->immersed ? sp->fluid.density_kg_m3 : 0.0,
                           .viscosity_Pa_s = s->immersed ? sp->fluid.viscosity_Pa_s : 0.0,
                           .gravity_m_s2 = sp->gravity_m_s2,
                           .slope_sin = sin(incline * M_PI / 180.0),
-                          .column_height_m = gf_run_spec_param(sp, "column_height_m", 0.0),
-                          .column_length_m = gf_run_spec_param(sp, "column_length_m", 0.0)};
+                          .column_height_m = H0_m,
+                          .column_length_m = R0_m};
     return gf_groups_compute(s->ctx, &in, &s->scales);
 }
 

@@ -204,16 +204,13 @@ static gf_status run_loop(gf_sim *s, run_out *o)
     return GF_OK;
 }
 
-/* Column length R0 and height H0 (collapse), incline (avalanche) as the scene
- * resolved them: the campaign's a and Phi_i win over the scene's own keys. */
+/* Column length R0 and height H0 (collapse scenes), incline (avalanche). */
 static void scene_geometry(const gf_sim *s, double *R0_m, double *H0_m, double *incline_deg)
 {
-    const gf_run_spec *sp = &s->spec;
-    double D = sp->grains.diameter_m;
-    *R0_m = gf_run_spec_param(sp, "column_length_over_D", 0.0) * D;
-    double a = isnan(sp->aspect_ratio_a) ? gf_run_spec_param(sp, "aspect_ratio", 0.0) : sp->aspect_ratio_a;
-    *H0_m = a * *R0_m;
-    *incline_deg = gf_run_spec_param(sp, "incline_deg", 0.0);
+    *R0_m = *H0_m = 0.0;
+    if (s->scene->column_geometry)
+        s->scene->column_geometry(&s->spec, R0_m, H0_m);
+    *incline_deg = gf_run_spec_param(&s->spec, "incline_deg", 0.0);
 }
 
 gf_status gf_sim_run(gf_sim *s)

@@ -140,6 +140,11 @@ static gf_status column_build(gf_sim *sim, const gf_run_spec *spec)
     gf_particles_destroy(&base);
     gf_particles_destroy(&under);
     GF_TRY(st);
+    if (pr.n_grains == 0)
+        return GF_FAIL(ctx, GF_ERR_CONFIG,
+                       "column_collapse: the preparation left no grain in the %.3g m x %.3g m column "
+                       "(H0 = %.2g D is too low; raise column_length_over_D or aspect_ratio)",
+                       g.R0, g.H0, g.H0 / g.D);
     gf_log(ctx, GF_LOG_INFO, "column_collapse: %zu grains at Phi_i %.4f (interior, preparation; global %.4f), %d deposits, %.1f s",
            pr.n_grains, pr.phi_local, pr.phi_global, pr.iterations, pr.cpu_s);
     /* re-equilibrate with the run's contacts behind the closed gate */

@@ -20,6 +20,11 @@
 #include "figures/gf_figures.h"
 #include "figures/gf_svg.h"
 
+/* Errors equal to 1e-9 relative are ties: two averages of the same integers
+ * (a front measured in whole bins, say) differ in their last bits only. */
+static int err_le(double a, double b) { return a <= b + 1e-9 * fabs(b); }
+static int err_lt(double a, double b) { return a < b - 1e-9 * fabs(b); }
+
 int gf_fig_pareto_front(int n, const double *cost, const double *error, unsigned char *on_front)
 {
     int count = 0;
@@ -28,7 +33,7 @@ int gf_fig_pareto_front(int n, const double *cost, const double *error, unsigned
         for (int j = 0; ok && j < n; ++j) {
             if (j == i || !isfinite(cost[j]) || !isfinite(error[j]))
                 continue;
-            if (cost[j] <= cost[i] && error[j] <= error[i] && (cost[j] < cost[i] || error[j] < error[i]))
+            if (cost[j] <= cost[i] && err_le(error[j], error[i]) && (cost[j] < cost[i] || err_lt(error[j], error[i])))
                 ok = 0;
         }
         if (on_front)

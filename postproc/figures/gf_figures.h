@@ -118,8 +118,9 @@ gf_status gf_fig_pareto(gf_ctx *ctx, const char *path, const gf_fig_opts *opt, i
                         const double *error, const char *const *labels, const char *time_label,
                         const char *error_label, double tolerance, int recommended, unsigned char *on_front);
 /* The Pareto front alone (minimise both cost and error): on_front[i] = 1 when
- * no j has cost_j <= cost_i and err_j <= err_i with one strict; points with a
- * non-finite value are never on it. Returns the number on the front. */
+ * no j has cost_j <= cost_i and err_j <= err_i with one strict (errors equal
+ * to 1e-9 relative count as equal); points with a non-finite value are never
+ * on it. Returns the number on the front. */
 int gf_fig_pareto_front(int n, const double *cost, const double *error, unsigned char *on_front);
 
 #endif

@@ -29,6 +29,7 @@
  *             arrests a 12 D bed: below h_stop.)
  *   length    (slow) theta = 25 deg, L = 5 D and 10 D: time-averaged Q_g
  *             agree within 5 % (Izard §4.1.2.2 domain tests, row 25 style).
+ * GF_TEST_TC overrides t_c sqrt(g/D); GF_TEST_VERBOSE prints the transient.
  */
 #include <stdlib.h>
 

@@ -20,7 +20,7 @@
  *   For a = 0.5 the deposit keeps the initial height (a trapezoid:
  *   H_inf = H0 below a ~ 0.7-1.15, Lube 2005, Lajeunesse 2005): H_inf/H0 within 10 %.
  * Arguments: the aspect ratios to run (default 0.5 1 2: the `slow` variant
- * adds 4 and 6 and fits lambda2).
+ * adds 4 and 6 and fits lambda2). GF_TEST_MU overrides mu_c (exploration).
  */
 #include <stdlib.h>
 
