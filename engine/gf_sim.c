@@ -97,6 +97,10 @@ gf_status gf_sim_set_gravity(gf_sim *s, const double g[3])
             return GF_FAIL(s->ctx, GF_ERR_CONFIG, "scene %s: gravity must be finite", s->spec.scene);
         s->gravity_m_s2[a] = g[a];
     }
+    /* a scene that tilts gravity in start() does so after the fluid exists:
+     * the hydrostatic reference, buoyancy and drag must follow */
+    if (s->coupling)
+        return gf_coupling_set_gravity(s->coupling, g);
     return GF_OK;
 }
 
