@@ -171,6 +171,7 @@ void gf_sim_reset_clock(gf_sim *s)
 {
     s->t_s = 0.0;
     s->step = 0;
+    s->next_fluid_step = 0;
 }
 
 /* ---- validation ---- */
@@ -262,6 +263,14 @@ static gf_status compute_scales(gf_sim *s)
     return gf_groups_compute(s->ctx, &in, &s->scales);
 }
 
+/* M = floor(dt_fluid_max / dt) DEM steps per fluid step, from the current state:
+ * the stable fluid step shrinks when grains speed up (CFL, drag relaxation). */
+static void choose_substeps(gf_sim *s)
+{
+    double m = floor(gf_coupling_dt_max_s(s->coupling, s->p) / s->dt_s);
+    s->n_substeps = m < 1.0 ? 1 : (m > 1e6 ? 1000000 : (int)m);
+}
+
 static gf_status setup_fluid(gf_sim *s)
 {
     const gf_fluid_spec *f = &s->spec.fluid;
@@ -304,9 +313,8 @@ static gf_status create_coupling(gf_sim *s)
                                                            : GF_BC_NO_SLIP;
     }
     GF_TRY(gf_coupling_create(s->ctx, &s->spec, &setup, &s->coupling));
-    double dt_f = gf_coupling_dt_max_s(s->coupling, s->p);
-    double m = floor(dt_f / s->dt_s);
-    s->n_substeps = m < 1.0 ? 1 : (m > 1e6 ? 1000000 : (int)m);
+    choose_substeps(s);
+    s->next_fluid_step = s->step;
     return GF_OK;
 }
 
@@ -454,6 +462,40 @@ static double drift(gf_sim *s)
     return mx;
 }
 
+/* Run-time guards, so that a run stops with the limit named instead of
+ * finishing with garbage (the checks at creation assume impacts of order
+ * sqrt(gD); a fast impact can break them):
+ *  - a grain moving more than half the Verlet skin in one step (the list was
+ *    valid for skin/2 at the last step) may cross a partner unseen;
+ *  - an overlap beyond GF_MAX_OVERLAP_OVER_D leaves the soft-sphere regime
+ *    (the contact model assumes delta << D);
+ *  - the Hertz secant stiffness grows as (delta/delta_ref)^(1/2), so the
+ *    t_c/5 bound shrinks by its square root at large overlaps. */
+#define GF_MAX_OVERLAP_OVER_D 0.1
+static gf_status check_run_limits(gf_sim *s, double d2_since_build)
+{
+    const double D = s->spec.grains.diameter_m, t_c = gf_run_spec_t_contact_s(&s->spec);
+    if (d2_since_build > s->skin_m * s->skin_m)
+        return GF_FAIL(s->ctx, GF_ERR_NUMERIC,
+                       "a grain moved %.3g D since the last neighbour-list build at t = %g s (limit: the skin, "
+                       "%.3g D): speed x dt too large for contact detection (lower contact.dt_over_tc)",
+                       sqrt(d2_since_build) / D, s->t_s, s->skin_m / D);
+    if (s->max_overlap_m > GF_MAX_OVERLAP_OVER_D * D)
+        return GF_FAIL(s->ctx, GF_ERR_NUMERIC,
+                       "overlap %.3g D at t = %g s exceeds the soft-sphere limit %.2g D: contacts too soft for the "
+                       "impact speed (lower contact.t_contact_nd)",
+                       s->max_overlap_m / D, s->t_s, GF_MAX_OVERLAP_OVER_D);
+    if (strcmp(s->spec.contact.law, "hertz") == 0 && s->cp.delta_ref_m > 0.0) {
+        double stiffening = sqrt(sqrt(s->max_overlap_m / s->cp.delta_ref_m));
+        if (s->dt_s > t_c / (5.0 * fmax(1.0, stiffening)))
+            return GF_FAIL(s->ctx, GF_ERR_NUMERIC,
+                           "dt = %.3g s exceeds the stability limit t_c/5 of the current Hertz stiffness at t = %g s "
+                           "(overlap %.3g D stiffens the contact %.2gx): lower contact.dt_over_tc",
+                           s->dt_s, s->t_s, s->max_overlap_m / D, stiffening * stiffening);
+    }
+    return GF_OK;
+}
+
 static gf_status dem_step(gf_sim *s)
 {
     const double h = 0.5 * s->dt_s;
@@ -472,6 +514,7 @@ static gf_status dem_step(gf_sim *s)
     gf_status st = gf_sim_compute_forces(s);
     gf_timer_stop(&s->timers, GF_T_FORCE);
     GF_TRY(st);
+    GF_TRY(check_run_limits(s, d2));
     if (s->coupling) {
         gf_timer_start(&s->timers, GF_T_COUPLING);
         st = gf_coupling_add_forces(s->coupling, s->p);
@@ -493,6 +536,8 @@ static gf_status dem_step(gf_sim *s)
 static gf_status fluid_step(gf_sim *s)
 {
     gf_timer_start(&s->timers, GF_T_FLUID);
+    choose_substeps(s);
+    s->next_fluid_step = s->step + s->n_substeps;
     gf_status st = gf_coupling_fluid_step(s->coupling, s->p, s->dt_s * s->n_substeps);
     gf_timer_stop(&s->timers, GF_T_FLUID);
     if (st != GF_OK) {
@@ -518,7 +563,7 @@ gf_status gf_sim_advance(gf_sim *s, long n_steps)
             st = GF_FAIL(s->ctx, GF_ERR_INTERRUPTED, "run interrupted at t = %g s (step %ld)", s->t_s, s->step);
             break;
         }
-        if (s->coupling && s->step % s->n_substeps == 0)
+        if (s->coupling && s->step >= s->next_fluid_step)
             st = fluid_step(s);
         if (st == GF_OK)
             st = dem_step(s);

@@ -84,7 +84,8 @@ struct gf_sim {
     /* fluid */
     int immersed;
     gf_coupling *coupling;
-    int n_substeps;             /* DEM steps per fluid step */
+    int n_substeps;             /* DEM steps per fluid step, re-chosen at every fluid step */
+    long next_fluid_step;       /* step index of the next fluid step */
     int lubrication;
     double lub_eta_Pa_s, lub_roughness_m, lub_cutoff_m;
     int in_build;
