@@ -232,16 +232,6 @@ static gf_status check_time_step(gf_sim *s)
                        "contact.dt_over_tc = %g: dt = %g s exceeds the stability limit t_c/5 = %g s "
                        "(velocity Verlet on the contact network; use <= 0.2, 0.02 recommended)",
                        c->dt_over_tc, s->dt_s, s->cp.t_contact_s * GF_DT_MAX_OVER_TC);
-    if (s->lubrication) {
-        double R = 0.5 * s->spec.grains.diameter_m;
-        double m_eff = s->cp.m_eff_mean_kg;
-        double rate = 6.0 * M_PI * s->lub_eta_Pa_s * (0.25 * R * R) / s->lub_roughness_m / m_eff;
-        if (rate * s->dt_s > 1.0)
-            return GF_FAIL(s->ctx, GF_ERR_NUMERIC,
-                           "lubrication damping c dt/m* = %g > 1 (eta_f %g Pa s, roughness %g m): explicit "
-                           "lubrication unstable; raise fluid.roughness_over_R or lower contact.dt_over_tc",
-                           rate * s->dt_s, s->lub_eta_Pa_s, s->lub_roughness_m);
-    }
     return GF_OK;
 }
 

@@ -178,9 +178,11 @@ static char *cf_canonical_units(const char *name)
 {
     static char *table = NULL;
     if (!table) {
-        const char *shared = getenv("GF_SHARED_DIR");
+        /* the CF table (version 80, as published by the CF conventions project)
+         * travels with the tests, so a clone checks names without anything beside it */
+        const char *src = getenv("GF_SOURCE_DIR");
         char path[1024];
-        snprintf(path, sizeof path, "%s/reference/cf-standard-name-table-v80.xml", shared ? shared : "../shared");
+        snprintf(path, sizeof path, "%s/tests/io/data/cf-standard-name-table-v80.xml", src ? src : ".");
         FILE *fp = fopen(path, "rb");
         if (!fp) {
             fprintf(stderr, "cannot read %s\n", path);
