@@ -25,6 +25,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "coupling/gf_tier.h"
 #ifdef _OPENMP
 #include <omp.h>
 #endif
@@ -261,16 +263,43 @@ static void choose_substeps(gf_sim *s)
     s->n_substeps = m < 1.0 ? 1 : (m > 1e6 ? 1000000 : (int)m);
 }
 
+/* fluid: auto — the tier from the regime (St, r) of the run (coupling/gf_tier.h):
+ * no fluid in the free-fall regime, the unresolved tier where pore pressure matters. */
+static gf_status choose_tier(gf_sim *s)
+{
+    gf_fluid_spec *f = &s->spec.fluid;
+    gf_scales sc;
+    gf_groups_input in = {.diameter_m = s->spec.grains.diameter_m,
+                          .grain_density_kg_m3 = s->spec.grains.density_kg_m3,
+                          .fluid_density_kg_m3 = f->density_kg_m3,
+                          .viscosity_Pa_s = f->viscosity_Pa_s,
+                          .gravity_m_s2 = s->spec.gravity_m_s2,
+                          .slope_sin = sin(gf_run_spec_param(&s->spec, "incline_deg", 90.0) * M_PI / 180.0)};
+    GF_TRY(gf_groups_compute(s->ctx, &in, &sc));
+    gf_tier_choice choice;
+    GF_TRY(gf_tier_from_scales(s->ctx, &sc, &choice));
+    snprintf(f->model, sizeof f->model, "%s", choice.model);
+    snprintf(s->fluid_reason, sizeof s->fluid_reason, "fluid: auto: %s", choice.reason);
+    return GF_OK;
+}
+
 static gf_status setup_fluid(gf_sim *s)
 {
-    const gf_fluid_spec *f = &s->spec.fluid;
+    gf_fluid_spec *f = &s->spec.fluid;
     s->immersed = 0;
-    if (!(s->scene->needs & GF_NEED_FLUID) || strcmp(f->model, "none") == 0)
+    if (!(s->scene->needs & GF_NEED_FLUID)) {
+        snprintf(s->fluid_reason, sizeof s->fluid_reason, "scene %s is dry", s->scene->name);
+        return GF_OK;
+    }
+    snprintf(s->fluid_reason, sizeof s->fluid_reason, "fluid.model = %s in the run spec", f->model);
+    if (strcmp(f->model, "auto") == 0)
+        GF_TRY(choose_tier(s));
+    if (strcmp(f->model, "none") == 0)
         return GF_OK;
     if (strcmp(f->model, "unresolved") != 0)
         return GF_FAIL(s->ctx, GF_ERR_UNSUPPORTED,
-                       "fluid.model '%s': the engine runs 'none' or 'unresolved' ('auto' is resolved by the pipeline)",
-                       f->model);
+                       "fluid.model '%s': this build runs 'none', 'unresolved' or 'auto' (the resolved tier is not "
+                       "available yet)", f->model);
     if (!(f->viscosity_Pa_s > 0.0) || !(f->density_kg_m3 > 0.0))
         return GF_FAIL(s->ctx, GF_ERR_CONFIG, "fluid: density and viscosity must be > 0 when immersed (got %g, %g)",
                        f->density_kg_m3, f->viscosity_Pa_s);
