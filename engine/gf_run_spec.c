@@ -18,7 +18,8 @@ void gf_run_spec_defaults(gf_run_spec *s)
      * 1e-2 keeps grains rigid (overlap << D at these pressures) at 4x fewer steps. */
     s->contact = (gf_contact_spec){.restitution = 0.87, .friction = 0.25, .wall_friction = 0.25,
                                    .kt_over_kn = 0.2, .allow_attraction = 0, .t_contact_nd = 1e-2,
-                                   .dt_over_tc = 0.02, .skin_over_D = 0.1};
+                                   .dt_over_tc = 0.02, .skin_over_D = 0.1,
+                                   .sleep_speed_nd = 0.0};
     snprintf(s->contact.law, sizeof s->contact.law, "linear");
     s->fluid = (gf_fluid_spec){.density_kg_m3 = 0.0, .viscosity_Pa_s = 0.0, .cell_over_D = 2.0, .cfl = 0.3,
                                .lubrication = 1, .roughness_over_R = 2e-4, .lub_cutoff_over_R = 0.5};

@@ -41,6 +41,7 @@ typedef struct gf_contact_spec {
     int allow_attraction;     /* 0: normal force clipped at 0 (Izard §3.1.2.2) */
     double dt_over_tc;        /* DEM step / t_c; 1/50 default (symplectic) */
     double skin_over_D;       /* Verlet skin in units of D */
+    double sleep_speed_nd;    /* grains slower than this x sqrt(gD) sleep (gf_sim_sleep.c); 0: off */
 } gf_contact_spec;
 
 typedef struct gf_fluid_spec {

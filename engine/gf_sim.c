@@ -367,6 +367,10 @@ static gf_status create_inner(gf_sim *s, const gf_run_spec *spec, const gf_sim_o
     if (!(s->spec.contact.skin_over_D > 0.0))
         return GF_FAIL(s->ctx, GF_ERR_CONFIG, "contact.skin_over_D: must be > 0 (got %g)", s->spec.contact.skin_over_D);
     s->skin_m = s->spec.contact.skin_over_D * s->spec.grains.diameter_m;
+    if (!(s->spec.contact.sleep_speed_nd >= 0.0 && s->spec.contact.sleep_speed_nd <= 0.05))
+        return GF_FAIL(s->ctx, GF_ERR_CONFIG,
+                       "contact.sleep_speed_nd: must be in [0, 0.05] (got %g; above 0.05 a grain at the top of a "
+                       "hop could be taken for one at rest)", s->spec.contact.sleep_speed_nd);
     s->n_threads = pick_threads(opt);
     s->gravity_m_s2[1] = -s->spec.gravity_m_s2; /* y is vertical (docs/output.md) unless the scene says */
     gf_rng_seed(&s->rng, s->spec.seed);
@@ -426,6 +430,7 @@ void gf_sim_destroy(gf_sim **ps)
     free(s->vx_pred), free(s->vy_pred), free(s->vz_pred);
     free(s->inv_mass), free(s->inv_inertia), free(s->mobile), free(s->contact_inv_mass);
     free(s->pair_meff), free(s->pair_sqrt_mk);
+    free(s->sleep_quiet_steps);
     for (int t = 0; t < GF_SIM_MAX_THREADS; ++t)
         for (int c = 0; c < 6; ++c)
             free(s->acc[t].f[c]);
@@ -549,6 +554,8 @@ static gf_status dem_step(gf_sim *s)
     gf_timer_stop(&s->timers, GF_T_INTEGRATE);
     s->step++;
     s->t_s += s->dt_s;
+    if (s->spec.contact.sleep_speed_nd > 0.0 && s->step % GF_SLEEP_EVERY == 0)
+        GF_TRY(gf_sim_sleep_update(s));
     return GF_OK;
 }
 

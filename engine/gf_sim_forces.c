@@ -190,9 +190,16 @@ static inline __attribute__((always_inline)) void pair_rows_impl(gf_sim *s, size
     for (size_t i = i0; i < i1; ++i) {
         const double xi = x[i], yi = y[i], zi = z[i], ri = R[i];
         const int glued_i = p->flags[i] & GF_P_GLUED;
+        const int frozen_i = p->flags[i] & (GF_P_GLUED | GF_P_SLEEPING);
         double fxi = 0.0, fyi = 0.0, fzi = 0.0, txi = 0.0, tyi = 0.0, tzi = 0.0; /* row sums, stored once */
         for (size_t k = nl->row_start[i]; k < nl->row_start[i + 1]; ++k) {
             const size_t j = (size_t)nl->j[k];
+            /* two grains that do not move (sleeping or glued, at least one
+             * sleeping): neither force is integrated; the pair keeps its
+             * history for when one of them wakes (gf_sim_sleep.c) */
+            if (frozen_i && (p->flags[j] & (GF_P_GLUED | GF_P_SLEEPING)) &&
+                ((p->flags[i] | p->flags[j]) & GF_P_SLEEPING))
+                continue;
             const double *sh = nl->shift_m[nl->image[k]];
             double d[3] = {xi - x[j] + sh[0], yi - y[j] + sh[1], zi - z[j] + sh[2]};
             double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];

@@ -90,6 +90,10 @@ struct gf_sim {
     int lubrication;
     double lub_eta_Pa_s, lub_roughness_m, lub_cutoff_m;
     int in_build;
+    /* sleeping grains (gf_sim_sleep.c; only with contact.sleep_speed_nd > 0) */
+    long *sleep_quiet_steps;    /* steps each grain has stayed below the sleep speed */
+    size_t sleep_cap;
+    long n_sleep_events, n_wake_events;
 };
 
 /* Evaluates contact (+ lubrication) forces and wall forces at the current
@@ -104,5 +108,11 @@ gf_status gf_sim_reserve(gf_sim *s, size_t n);
 gf_status gf_sim_relayout_walls(gf_sim *s, int n_walls_old);
 /* Builds the list from the saved reference positions (restart). */
 gf_status gf_sim_rebuild_from_ref(gf_sim *s);
+
+/* Puts quiet grains in contact to sleep and wakes sleeping grains touched by
+ * moving ones; called every GF_SLEEP_EVERY steps after the step's last kick
+ * when contact.sleep_speed_nd > 0. gf_sim_sleep.c. */
+#define GF_SLEEP_EVERY 10
+gf_status gf_sim_sleep_update(gf_sim *s);
 
 #endif

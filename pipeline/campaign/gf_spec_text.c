@@ -57,6 +57,10 @@ size_t gf_spec_text(const gf_run_spec *spec, char *buf, size_t n)
         put(&o, "%s:\n", sections[s]);
         for (int i = 0; i < nf; ++i)
             if (strcmp(f[i].section, sections[s]) == 0) {
+                /* an off sleep knob is left out, so the run ids of specs written
+                 * before it existed do not change */
+                if (strcmp(f[i].key, "sleep_speed_nd") == 0 && spec->contact.sleep_speed_nd == 0.0)
+                    continue;
                 gf_spec_field_format(&f[i], spec, value, sizeof value);
                 put(&o, "  %s: %s\n", f[i].key, value);
             }
