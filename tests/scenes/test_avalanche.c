@@ -6,30 +6,36 @@
  * eps = 0.5; t_c = 0.01 sqrt(D/g) (not stated for the chute; the thesis'
  * dry runs use 1e-4 s = 3.1e-3 sqrt(D/g); at 0.03 the fitted mu1 drops by
  * 0.015, so the stiffer value is kept). Bed 12 D deep on glued half-grains,
- * prepared at theta = 0 and tilted at t = 0.
+ * prepared at theta = 0 and tilted at t = 0. The unsteady fit is sensitive
+ * to t_c and to the packing (~500 grains): with P_G = tr/3, t_c = 0.01 gives
+ * (mu1, mu2) = (0.328, 0.616), (0.317, 0.632), (0.361, 0.559) for seeds
+ * 21, 5, 77; t_c = 0.003 gives (0.291, 0.799), (0.309, 0.735) for 21, 5.
  *
- * Stresses by the method of planes (gf_measure_stress_planes): the contact
- * force the material above a plane receives, plus the kinetic momentum flux,
- * i.e. the total stress sigma_G = sigma^p + sigma^k of (2.16)-(2.20) on
- * planes 1 D apart, averaged over windows of 2 sqrt(D/g) (4 snapshots);
- * P = sigma_yy rather than tr(sigma)/3 (normal-stress differences in dense
- * flows are ~10 %: a documented approximation). I = gamma_dot D/sqrt(P/rho_p),
- * mu = tau/P, with gamma_dot from the window-averaged velocity profile;
+ * Stresses as the seed defines them (digest §1.10, Izard (2.16)-(2.20)):
+ * the full tensor sigma_G = sigma^p + sigma^k (contact virial with the
+ * branch vector shared among the slabs it crosses, plus the kinetic stress
+ * about the slab mean velocity; gf_measure_stress_tensor_slabs) on slabs
+ * 1 D thick, averaged over windows of 2 sqrt(D/g) (4 snapshots);
+ * P_G = -tr(sigma_G)/3, tau = the x-y (flow-plane) shear component,
+ * mu = |tau|/P_G, I = |gamma_dot| D/sqrt(P_G/rho_p) with |gamma_dot| =
+ * |du/dy| (simple shear) from the window-averaged velocity profile;
  * mu(I) = mu1 + (mu2 - mu1)/(I0/I + 1) with I0 = 0.3 fixed, the thesis' fit.
  * Bulk = planes from 2 D above the glued layer to 3 D below the surface.
  *
  * Modes (argv[1]):
  *   unsteady  (default suite) theta = 40 deg, the accelerating transient
  *             sweeps I; fitted mu1, mu2 vs 0.34, 0.76 within +-0.03 (row 7).
- *   steady    (slow) theta = 22.5, 25, 27.5 deg after 150 sqrt(D/g), averaged
- *             over 50: bulk mu = tau/P (= tan(theta) once steady) vs bulk I
+ *   steady    (slow) theta = 22.5, 25, 27.5 deg after 400 sqrt(D/g), averaged
+ *             over 100: bulk mu = tau/P (= tan(theta) once steady) vs bulk I
  *             per angle; mu1, mu2 vs 0.29, 0.64 within +-0.02 (row 8);
  *             Bagnold profile (2.23) fits the velocity with rms < 10 % of
  *             the surface speed; slip length lambda/h reported. (20 deg
  *             arrests a 12 D bed: below h_stop.)
- *   length    (slow) theta = 25 deg, L = 5 D and 10 D: time-averaged Q_g
- *             agree within 5 % (Izard §4.1.2.2 domain tests, row 25 style).
- * GF_TEST_TC overrides t_c sqrt(g/D); GF_TEST_VERBOSE prints the transient.
+ *   length    (slow) theta = 25 deg, L = 5 D and 10 D after 400 sqrt(D/g),
+ *             averaged over 100: time-averaged Q_g agree within 5 % (Izard
+ *             §4.1.2.2 domain tests, row 25 style).
+ * GF_TEST_TC overrides t_c sqrt(g/D), GF_TEST_SEED the packing seed;
+ * GF_TEST_VERBOSE prints the transient, GF_TEST_DEBUG the stress components.
  */
 #include <stdlib.h>
 
@@ -49,7 +55,7 @@ static int flow_open(flow *f, double theta_deg, double length_over_D, double bed
     gf_ctx *ctx = calloc(1, sizeof *ctx);
     gf_run_spec spec;
     runner_dry_spec(&spec, "avalanche");
-    spec.seed = seed;
+    spec.seed = getenv("GF_TEST_SEED") ? (unsigned)atoi(getenv("GF_TEST_SEED")) : seed;
     spec.contact.restitution = 0.5;
     spec.contact.friction = 0.25;
     spec.contact.wall_friction = 0.25;
@@ -99,15 +105,26 @@ static int bed_top_slab(const double *phi)
 
 /* Window-averaged profiles: solid fraction, velocity, shear and normal stress on planes at slab centres. */
 typedef struct window {
-    double phi[NS], u[NS], tau[NS], sig[NS];
+    double phi[NS], u[NS], tau[NS], sig[NS]; /* sig: P_G */
     int n;
 } window;
 
 static void window_add(flow *f, window *w)
 {
-    double phi[NS], u[NS], tau[NS], sig[NS];
+    double phi[NS], u[NS], tau[NS], sig[NS], S[6 * NS];
     flow_profile(f, phi, u);
-    gf_measure_stress_planes(gf_sim_ctx(f->sim), gf_sim_particles(f->sim), &f->dom, 0.0, f->dy, NS, tau, sig);
+    GF_CHECK_OK(gf_measure_stress_tensor_slabs(gf_sim_ctx(f->sim), f->sim, 0.0, f->dy, NS, S), gf_sim_ctx(f->sim));
+    for (int k = 0; k < NS; ++k) { /* compression-positive S: P_G = tr(S)/3, tau = -S_xy */
+        sig[k] = (S[6 * k] + S[6 * k + 1] + S[6 * k + 2]) / 3.0;
+        tau[k] = -S[6 * k + 3];
+    }
+    if (getenv("GF_TEST_DEBUG")) { /* cross-check against the method of planes (same yy and xy rows) */
+        double tp[NS], sp[NS];
+        gf_measure_stress_planes(gf_sim_ctx(f->sim), gf_sim_particles(f->sim), &f->dom, 0.0, f->dy, NS, tp, sp);
+        for (int k = 1; k < 12; ++k)
+            printf("    k=%d planes: tau %.1f syy %.1f | tensor: sxx %.1f syy %.1f szz %.1f -sxy %.1f\n", k, tp[k],
+                   sp[k], S[6 * k], S[6 * k + 1], S[6 * k + 2], tau[k]);
+    }
     for (int k = 0; k < NS; ++k)
         w->phi[k] += phi[k], w->u[k] += u[k], w->tau[k] += tau[k], w->sig[k] += sig[k];
     w->n++;
@@ -123,8 +140,8 @@ static int window_points(const flow *f, window *w, double *I, double *mu, int ma
         if (w->sig[k] <= 0.0)
             continue;
         double gd = (w->u[k + 1] - w->u[k - 1]) / (2.0 * f->dy);
-        I[n] = gd * f->D / sqrt(w->sig[k] / f->rho);
-        mu[n] = w->tau[k] / w->sig[k];
+        I[n] = fabs(gd) * f->D / sqrt(w->sig[k] / f->rho);
+        mu[n] = fabs(w->tau[k]) / w->sig[k];
         ++n;
     }
     return n;
@@ -178,7 +195,18 @@ static void steady(double theta_deg, double length_over_D, double t_spin_nd, dou
     *I_bulk = *mu_bulk = *q_mean = *bagnold_rms = *slip_over_h = NAN;
     if (!flow_open(&f, theta_deg, length_over_D, 12.0, 31))
         return;
-    flow_advance(&f, t_spin_nd);
+    if (getenv("GF_TEST_SPIN"))
+        t_spin_nd = atof(getenv("GF_TEST_SPIN"));
+    if (getenv("GF_TEST_AVG"))
+        t_avg_nd = atof(getenv("GF_TEST_AVG"));
+    for (double t = 0.0; t < t_spin_nd - 1e-9; t += 25.0) { /* spin-up, Q_g(t) printed to judge steadiness */
+        flow_advance(&f, fmin(25.0, t_spin_nd - t));
+        if (getenv("GF_TEST_VERBOSE")) {
+            double v[4];
+            gf_scene_find("avalanche")->diagnose(f.sim, v);
+            printf("    t = %.0f sqrt(D/g): Q_g = %.4e m3/s\n", fmin(t + 25.0, t_spin_nd), v[0]);
+        }
+    }
     window w = {0};
     double q = 0.0;
     int samples = (int)(t_avg_nd / 1.0);
@@ -226,7 +254,7 @@ static void test_steady_mu_of_I(void)
     double th[3] = {22.5, 25.0, 27.5}, I[3], mu[3], Ik[3], muk[3], q, rms, slip;
     int n = 0;
     for (int k = 0; k < 3; ++k) {
-        steady(th[k], 6.0, 150.0, 50.0, &I[k], &mu[k], &q, &rms, &slip);
+        steady(th[k], 6.0, 400.0, 100.0, &I[k], &mu[k], &q, &rms, &slip); /* as the length test: past the overshoot */
         if (I[k] > 1e-3) { /* flowing: a mu(I) point (tau/P measured; tan(theta) once truly steady) */
             Ik[n] = I[k], muk[n] = mu[k], ++n;
             GF_CHECK(rms < 0.10);
@@ -243,8 +271,12 @@ static void test_steady_mu_of_I(void)
 static void test_flow_rate_independent_of_length(void)
 {
     double I5, I10, m5, m10, q5, q10, r, s;
-    steady(25.0, 5.0, 150.0, 50.0, &I5, &m5, &q5, &r, &s);
-    steady(25.0, 10.0, 150.0, 50.0, &I10, &m10, &q10, &r, &s);
+    /* 400 sqrt(D/g) of spin-up: at L = 5 D, Q_g(t) overshoots by ~12 % between
+     * t = 150 and 250 before settling (GF_TEST_VERBOSE prints it), so the
+     * former window [150, 200] compared a transient with a steady state;
+     * averaged over [400, 500] */
+    steady(25.0, 5.0, 400.0, 100.0, &I5, &m5, &q5, &r, &s);
+    steady(25.0, 10.0, 400.0, 100.0, &I10, &m10, &q10, &r, &s);
     printf("Q_g(L = 10 D) / Q_g(L = 5 D) = %.4f\n", q10 / q5);
     GF_CHECK_REL(q10, q5, 0.05);
 }
