@@ -11,27 +11,8 @@
 
 #include "gf_sim.h"
 #include "gf_test.h"
+#include "gf_test_sim.h"
 #include "scenes/gf_scene.h"
-
-/* Spec of scene name with the seeds' defaults; D = 3 mm acetate-like grains. */
-static inline gf_run_spec dem_spec(const char *scene)
-{
-    gf_run_spec s;
-    gf_run_spec_defaults(&s);
-    snprintf(s.scene, sizeof s.scene, "%s", scene);
-    s.grains.diameter_m = 3e-3;
-    s.grains.density_kg_m3 = 1319.0;
-    s.grains.polydispersity = 0.0;
-    return s;
-}
-
-static inline gf_status dem_sim(gf_ctx *ctx, const gf_run_spec *spec, int threads, gf_sim **out)
-{
-    gf_sim_options opt;
-    memset(&opt, 0, sizeof opt);
-    opt.n_threads = threads;
-    return gf_sim_create(ctx, spec, &opt, out);
-}
 
 /* Relative surface velocity of grain a w.r.t. b at their contact point, along
  * the x-normal geometry of the binary_collision scene (a left of b): returns

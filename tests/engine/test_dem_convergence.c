@@ -18,13 +18,13 @@
 static double separation_at_2tc(double steps_per_tc)
 {
     gf_ctx ctx = {0};
-    gf_run_spec spec = dem_spec("binary_collision");
+    gf_run_spec spec = gf_test_spec("binary_collision");
     spec.contact.restitution = 1.0;
     spec.contact.friction = 0.0;
     spec.contact.dt_over_tc = 1.0 / steps_per_tc;
     gf_run_spec_set_param(&ctx, &spec, "gap_over_D", 0.0);
     gf_sim *sim = NULL;
-    GF_CHECK_OK(dem_sim(&ctx, &spec, 1, &sim), &ctx);
+    GF_CHECK_OK(gf_test_sim(&ctx, &spec, 1, &sim), &ctx);
     if (!sim)
         return NAN;
     GF_CHECK_OK(gf_sim_advance(sim, (long)llround(2.0 * steps_per_tc)), &ctx);

@@ -50,7 +50,7 @@ static double elastic_energy(gf_sim *sim)
 int main(void)
 {
     gf_ctx ctx = {0};
-    gf_run_spec spec = dem_spec("elastic_gas");
+    gf_run_spec spec = gf_test_spec("elastic_gas");
     spec.contact.restitution = 1.0;
     spec.contact.friction = 0.0;
     spec.contact.dt_over_tc = DT_OVER_TC;
@@ -59,7 +59,7 @@ int main(void)
     gf_run_spec_set_param(&ctx, &spec, "box_over_D", 5.0);
     gf_run_spec_set_param(&ctx, &spec, "speed_nd", 2.0);
     gf_sim *sim = NULL;
-    GF_CHECK_OK(dem_sim(&ctx, &spec, 1, &sim), &ctx);
+    GF_CHECK_OK(gf_test_sim(&ctx, &spec, 1, &sim), &ctx);
     if (!sim)
         return gf_test_finish();
     gf_particles *p = gf_sim_particles(sim);

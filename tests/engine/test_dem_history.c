@@ -68,17 +68,17 @@ static double wrap(double d, double L) { return d - L * round(d / L); }
 
 static gf_sim *clamp(gf_ctx *ctx, double squeeze)
 {
-    gf_run_spec spec = dem_spec("friction_clamp");
+    gf_run_spec spec = gf_test_spec("friction_clamp");
     spec.contact.friction = 0.5;
     gf_run_spec_set_param(ctx, &spec, "squeeze_over_D", squeeze);
     gf_sim *s = NULL;
-    GF_CHECK_OK(dem_sim(ctx, &spec, 1, &s), ctx);
+    GF_CHECK_OK(gf_test_sim(ctx, &spec, 1, &s), ctx);
     return s;
 }
 
 static void identity_in_a_bed(gf_ctx *ctx)
 {
-    gf_run_spec spec = dem_spec("settled_bed");
+    gf_run_spec spec = gf_test_spec("settled_bed");
     spec.grains.polydispersity = 0.1;
     spec.contact.friction = 0.5;
     spec.contact.wall_friction = 0.5;
@@ -86,8 +86,8 @@ static void identity_in_a_bed(gf_ctx *ctx)
     gf_run_spec_set_param(ctx, &spec, "width_over_D", 12.0);
     gf_run_spec_set_param(ctx, &spec, "glue_base", 1.0);
     gf_sim *a = NULL, *b = NULL;
-    GF_CHECK_OK(dem_sim(ctx, &spec, 1, &a), ctx);
-    GF_CHECK_OK(dem_sim(ctx, &spec, 1, &b), ctx);
+    GF_CHECK_OK(gf_test_sim(ctx, &spec, 1, &a), ctx);
+    GF_CHECK_OK(gf_test_sim(ctx, &spec, 1, &b), ctx);
     if (!a || !b)
         return;
     double g = spec.gravity_m_s2, th = 10.0 * M_PI / 180.0, tilt[3] = {g * sin(th), -g * cos(th), 0.0};

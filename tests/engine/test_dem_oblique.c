@@ -21,7 +21,7 @@
 static double psi2_of(double psi1, double *psi1_measured)
 {
     gf_ctx ctx = {0};
-    gf_run_spec spec = dem_spec("binary_collision");
+    gf_run_spec spec = gf_test_spec("binary_collision");
     spec.grains.diameter_m = 3e-3;
     spec.contact.restitution = 0.87;
     spec.contact.friction = 0.25;
@@ -35,7 +35,7 @@ static double psi2_of(double psi1, double *psi1_measured)
     gf_run_spec_set_param(&ctx, &spec, "gap_over_D", 1e-4);
     gf_run_spec_set_param(&ctx, &spec, "psi1", psi1);
     gf_sim *sim = NULL;
-    GF_CHECK_OK(dem_sim(&ctx, &spec, 1, &sim), &ctx);
+    GF_CHECK_OK(gf_test_sim(&ctx, &spec, 1, &sim), &ctx);
     if (!sim)
         return NAN;
     gf_particles *p = gf_sim_particles(sim);

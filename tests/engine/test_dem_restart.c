@@ -76,7 +76,7 @@ static void check_threads(gf_ctx *ctx, gf_run_spec *spec, const char *bed, int t
 int main(void)
 {
     gf_ctx ctx = {0};
-    gf_run_spec bed = dem_spec("settled_bed");
+    gf_run_spec bed = gf_test_spec("settled_bed");
     bed.grains.polydispersity = 0.1;
     bed.contact.friction = 0.5;
     gf_run_spec_set_param(&ctx, &bed, "n_grains", 1200); /* above the serial threshold: threads really run */
@@ -85,7 +85,7 @@ int main(void)
     snprintf(path, sizeof path, "%s/dem_restart_bed_%d.h5", getenv("GF_BINARY_DIR") ? getenv("GF_BINARY_DIR") : "/tmp",
              (int)getpid());
     gf_sim *s0 = NULL;
-    GF_CHECK_OK(dem_sim(&ctx, &bed, 1, &s0), &ctx);
+    GF_CHECK_OK(gf_test_sim(&ctx, &bed, 1, &s0), &ctx);
     if (s0)
         GF_CHECK_OK(gf_sim_checkpoint(s0, path), &ctx);
     gf_sim_destroy(&s0);
@@ -94,7 +94,7 @@ int main(void)
     check_threads(&ctx, &bed, path, 2);
     remove(path);
     /* a missing checkpoint is an I/O error naming the file */
-    gf_run_spec spec = dem_spec("binary_collision");
+    gf_run_spec spec = gf_test_spec("binary_collision");
     gf_sim_options opt;
     memset(&opt, 0, sizeof opt);
     opt.restart_path = "/nonexistent/checkpoint.h5";

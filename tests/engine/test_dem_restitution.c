@@ -40,7 +40,7 @@ static double impact_nd = 1.0;
 static collision_result run_collision(double eps, double steps_per_tc, int attraction, double phase)
 {
     gf_ctx ctx = {0};
-    gf_run_spec spec = dem_spec("binary_collision");
+    gf_run_spec spec = gf_test_spec("binary_collision");
     snprintf(spec.contact.law, sizeof spec.contact.law, "%s", law);
     gf_run_spec_set_param(&ctx, &spec, "impact_speed_nd", impact_nd);
     spec.contact.restitution = eps;
@@ -54,7 +54,7 @@ static collision_result run_collision(double eps, double steps_per_tc, int attra
     gf_run_spec_set_param(&ctx, &spec, "gap_over_D", gap_over_D);
     gf_sim *sim = NULL;
     collision_result r = {NAN, NAN};
-    GF_CHECK_OK(dem_sim(&ctx, &spec, 1, &sim), &ctx);
+    GF_CHECK_OK(gf_test_sim(&ctx, &spec, 1, &sim), &ctx);
     if (!sim)
         return r;
     gf_particles *p = gf_sim_particles(sim);

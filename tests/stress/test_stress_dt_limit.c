@@ -54,7 +54,7 @@ static void check_refused(const char *what, double dt_over_tc, gf_status st, con
 static double collision(const char *law, double eps, double dt_over_tc, double speed_nd)
 {
     gf_ctx ctx = {0};
-    gf_run_spec s = stress_spec("binary_collision");
+    gf_run_spec s = gf_test_spec("binary_collision");
     snprintf(s.contact.law, sizeof s.contact.law, "%s", law);
     s.contact.restitution = eps;
     s.contact.friction = 0.0;
@@ -62,7 +62,7 @@ static double collision(const char *law, double eps, double dt_over_tc, double s
     gf_run_spec_set_param(&ctx, &s, "impact_speed_nd", speed_nd);
     gf_run_spec_set_param(&ctx, &s, "gap_over_D", 0.001);
     gf_sim *sim = NULL;
-    gf_status st = stress_sim(&ctx, &s, &sim);
+    gf_status st = gf_test_sim(&ctx, &s, 1, &sim);
     if (dt_over_tc > DT_LIMIT) {
         check_refused(law, dt_over_tc, st, sim, &ctx);
         gf_sim_destroy(&sim);
@@ -101,7 +101,7 @@ static double collision(const char *law, double eps, double dt_over_tc, double s
 static void elastic_gas(double dt_over_tc)
 {
     gf_ctx ctx = {0};
-    gf_run_spec s = stress_spec("elastic_gas");
+    gf_run_spec s = gf_test_spec("elastic_gas");
     s.contact.restitution = 1.0;
     s.contact.friction = 0.0;
     s.contact.dt_over_tc = dt_over_tc;
@@ -109,7 +109,7 @@ static void elastic_gas(double dt_over_tc)
     gf_run_spec_set_param(&ctx, &s, "box_over_D", 5.5);
     gf_run_spec_set_param(&ctx, &s, "speed_nd", 2.0);
     gf_sim *sim = NULL;
-    gf_status st = stress_sim(&ctx, &s, &sim);
+    gf_status st = gf_test_sim(&ctx, &s, 1, &sim);
     if (dt_over_tc > DT_LIMIT) {
         check_refused("elastic_gas", dt_over_tc, st, sim, &ctx);
         gf_sim_destroy(&sim);
@@ -140,7 +140,7 @@ static void elastic_gas(double dt_over_tc)
 static void settled_bed(double dt_over_tc)
 {
     gf_ctx ctx = {0};
-    gf_run_spec s = stress_spec("settled_bed");
+    gf_run_spec s = gf_test_spec("settled_bed");
     s.grains.polydispersity = 0.1;
     s.contact.restitution = 0.5;
     s.contact.friction = 0.5;
@@ -149,7 +149,7 @@ static void settled_bed(double dt_over_tc)
     gf_run_spec_set_param(&ctx, &s, "n_grains", 500);
     gf_run_spec_set_param(&ctx, &s, "settle_time_nd", 4.0);
     gf_sim *sim = NULL;
-    gf_status st = stress_sim(&ctx, &s, &sim);
+    gf_status st = gf_test_sim(&ctx, &s, 1, &sim);
     if (dt_over_tc > DT_LIMIT) {
         check_refused("settled_bed", dt_over_tc, st, sim, &ctx);
         gf_sim_destroy(&sim);

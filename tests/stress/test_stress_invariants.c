@@ -23,7 +23,7 @@
 
 static gf_run_spec dense_gas(gf_ctx *ctx, double eps, double mu)
 {
-    gf_run_spec s = stress_spec("elastic_gas");
+    gf_run_spec s = gf_test_spec("elastic_gas");
     s.grains.polydispersity = 0.1;
     s.contact.restitution = eps;
     s.contact.friction = mu;
@@ -42,7 +42,7 @@ int main(void)
     /* 1. frictional dissipative gas */
     gf_run_spec s = dense_gas(&ctx, 0.5, 0.5);
     gf_sim *sim = NULL;
-    GF_CHECK_OK(stress_sim(&ctx, &s, &sim), &ctx);
+    GF_CHECK_OK(gf_test_sim(&ctx, &s, 1, &sim), &ctx);
     if (sim) {
         gf_particles *p = gf_sim_particles(sim);
         size_t n0 = p->n_local;
@@ -75,7 +75,7 @@ int main(void)
 
     /* 2. elastic frictionless gas */
     s = dense_gas(&ctx, 1.0, 0.0);
-    GF_CHECK_OK(stress_sim(&ctx, &s, &sim), &ctx);
+    GF_CHECK_OK(gf_test_sim(&ctx, &s, 1, &sim), &ctx);
     if (sim) {
         gf_particles *p = gf_sim_particles(sim);
         double e0 = gf_particles_kinetic_energy(p) + stress_spring_energy(sim), worst = 0.0;

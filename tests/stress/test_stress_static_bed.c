@@ -34,7 +34,7 @@ int main(int argc, char **argv)
     double budget_s = argc > 1 ? atof(argv[1]) : 25.0;
     long max_steps = argc > 2 ? atol(argv[2]) : 10000000L;
     gf_ctx ctx = {0};
-    gf_run_spec s = stress_spec("settled_bed");
+    gf_run_spec s = gf_test_spec("settled_bed");
     s.grains.polydispersity = 0.1;
     s.contact.restitution = 0.5;
     s.contact.friction = 0.5;
@@ -44,7 +44,7 @@ int main(int argc, char **argv)
     gf_run_spec_set_param(&ctx, &s, "width_over_D", 5.15);
     gf_run_spec_set_param(&ctx, &s, "settle_time_nd", 8.0);
     gf_sim *sim = NULL;
-    GF_CHECK_OK(stress_sim(&ctx, &s, &sim), &ctx);
+    GF_CHECK_OK(gf_test_sim(&ctx, &s, 1, &sim), &ctx);
     if (!sim)
         return gf_test_finish();
     gf_particles *p = gf_sim_particles(sim);
