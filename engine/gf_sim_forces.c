@@ -36,6 +36,7 @@
 #endif
 
 #include "contact/gf_contact_kernels.h"
+#include "contact/gf_lubrication.h"
 #include "gf_sim_internal.h"
 #include "integrate/gf_integrate.h"
 
@@ -78,25 +79,6 @@ gf_status gf_sim_relayout_walls(gf_sim *s, int n_walls_old)
 }
 
 
-/* Lubrication damping coefficient used over one step (Brenner 1961 with the
- * roughness eta_e, Izard 2014 §2.3.2): c = 6 pi eta R_eff^2 / (gap + eta_e).
- * For smooth grains c dt/m* reaches 10-100 at the seed's eta_e/R = 1e-4, where
- * an explicit force would overshoot and reverse the approach. The pair's
- * damping alone gives v_n(t+dt) = v_n exp(-c dt/m*); the coefficient that
- * produces this decay over one step is c_eff = m* (1 - exp(-c dt/m*)) / dt
- * (= c when c dt/m* << 1). It is capped at m* / (4 dt) so that a grain with up
- * to ~6 lubricated neighbours stays inside the explicit stability bound
- * (Gershgorin on the pair-damping matrix); the cap only acts where the
- * approach is stopped within a few steps anyway (the overdamped limit). */
-static double lub_damping(const gf_sim *s, double c_N_s_m, double m_eff_kg)
-{
-    if (!(m_eff_kg > 0.0) || !isfinite(m_eff_kg))
-        return c_N_s_m;
-    double x = c_N_s_m * s->dt_s / m_eff_kg;
-    double c_eff = x < 1e-6 ? c_N_s_m : m_eff_kg * (1.0 - exp(-x)) / s->dt_s;
-    double cap = 0.25 * m_eff_kg / s->dt_s;
-    return c_eff < cap ? c_eff : cap;
-}
 
 static gf_nlist_geom list_geom(const gf_sim *s)
 {
@@ -251,7 +233,7 @@ static inline __attribute__((always_inline)) void pair_rows_impl(gf_sim *s, size
                 double gap = g.overlap_m > 0.0 ? 0.0 : -g.overlap_m;
                 if (gap <= lub_cut) {
                     double reff = ri * R[j] / rsum;
-                    double c = -lub_damping(s, 6.0 * M_PI * s->lub_eta_Pa_s * reff * reff / (gap + s->lub_roughness_m),
+                    double c = -gf_lubrication_damping(s->dt_s, 6.0 * M_PI * s->lub_eta_Pa_s * reff * reff / (gap + s->lub_roughness_m),
                                             pair_meff[k]) * g.v_n_m_s;
                     F[0] += c * g.n[0], F[1] += c * g.n[1], F[2] += c * g.n[2];
                 }
@@ -322,7 +304,7 @@ static void wall_rows(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_si
             }
             if (lub_cut > 0.0) {
                 double gap = overlap > 0.0 ? 0.0 : -overlap;
-                double c = -lub_damping(s, 6.0 * M_PI * s->lub_eta_Pa_s * ri * ri / (gap + s->lub_roughness_m),
+                double c = -gf_lubrication_damping(s->dt_s, 6.0 * M_PI * s->lub_eta_Pa_s * ri * ri / (gap + s->lub_roughness_m),
                                         p->mass_kg[i]) * vn;
                 F[0] += c * nw[0], F[1] += c * nw[1], F[2] += c * nw[2];
             }
