@@ -223,7 +223,10 @@ gf_status gf_sim_run(gf_sim *s)
         scene_geometry(s, &R0_m, &H0_m, &incline_deg);
         if (s->scene->initial_packing && s->step == 0)
             GF_TRY(s->scene->initial_packing(s, &phi_measured, &phi_local));
+        char skipped[256];
+        gf_sim_skips(s, skipped, sizeof skipped);
         gf_nc_meta meta = {
+            .skipped_work = skipped,
             .spec = &s->spec,
             .scales = &s->scales,
             .resolved_yaml = s->opt.resolved_yaml,
@@ -231,7 +234,7 @@ gf_status gf_sim_run(gf_sim *s)
             .fluid_model_reason = s->fluid_reason,
             .stages = s->immersed ? (s->lubrication ? "fluid,contacts,lubrication,coupling,integrate"
                                                     : "fluid,contacts,coupling,integrate")
-                                  : "contacts,integrate",
+                                  : (s->lubrication ? "contacts,lubrication,integrate" : "contacts,integrate"),
             .column_length_m = R0_m,
             .column_height_m = H0_m,
             .incline_deg = incline_deg,
