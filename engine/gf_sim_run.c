@@ -181,7 +181,12 @@ static gf_status run_loop(gf_sim *s, run_out *o)
         }
         GF_TRY(st);
         double w1 = gf_wtime(), took = w1 - w0;
-        chunk = took < 0.05 ? chunk * 2 : (took > 0.2 && chunk > 1 ? chunk / 2 : chunk); /* ~0.1 s per chunk */
+        /* ~0.1 s per chunk; grown only when a whole chunk ran (a chunk cut short by
+         * frequent output instants must not double without bound and overflow) */
+        if (took < 0.05 && n == chunk)
+            chunk *= 2;
+        else if (took > 0.2 && chunk > 1)
+            chunk /= 2;
         if (s->t_s >= next_out - 0.5 * s->dt_s) {
             GF_TRY(write_record(s, o));
             written_step = s->step;
