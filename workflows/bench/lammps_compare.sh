@@ -64,30 +64,19 @@ write_dump      all custom $3 x y z radius modify sort id
 EOS
 }
 lammps_input "$WORK/bed.data" "$STEPS" "$WORK/lmp_bed.dump" > "$WORK/in.bed"
-units           si
-atom_style      sphere
-atom_modify     map array
-boundary        p f p
-comm_modify     vel yes
-read_data       $WORK/bed.data
-neighbor        $SKIN bin
-neigh_modify    delay 0 every 1 check yes
-pair_style      gran/hooke/history $KN $KT $GAMMAN $GAMMAT $MU 0
-pair_coeff      * *
-fix             floor all wall/gran hooke/history $KN $KT $GAMMAN $GAMMAT $MU 0 yplane 0.0 NULL
-fix             grav all gravity $G vector 0 -1 0
-fix             int all nve/sphere
-timestep        $DT
-thermo          1000
-run             $STEPS
-EOS
 echo "== LAMMPS ($LMP): same bed, same law, 1 core"
 OMP_NUM_THREADS=1 nice "$LMP" -in "$WORK/in.bed" -log "$WORK/log.lammps" -screen none
 grep -E "Loop time|CPU use|Pair  |Neigh |Modify|Comm  " "$WORK/log.lammps" || true
+# particle-steps per CPU-second of a LAMMPS log ($1) for $2 grains and $3 steps
+lmp_rate() {
+    loop=$(sed -n 's/^Loop time of \([0-9.e+-]*\) on.*/\1/p' "$1")
+    cpu=$(sed -n 's/^\([0-9.]*\)% CPU use.*/\1/p' "$1")
+    awk -v n="$2" -v s="$3" -v t="$loop" -v c="${cpu:-100}" 'BEGIN { printf "%.4e", n * s / (t * c / 100) }'
+}
 LOOP=$(sed -n 's/^Loop time of \([0-9.e+-]*\) on.*/\1/p' "$WORK/log.lammps")
 CPU=$(sed -n 's/^\([0-9.]*\)% CPU use.*/\1/p' "$WORK/log.lammps")
 [ -n "$CPU" ] || CPU=100
-LMP_RATE=$(awk -v n="$N" -v s="$STEPS" -v t="$LOOP" -v c="$CPU" 'BEGIN { printf "%.4e", n * s / (t * c / 100) }')
+LMP_RATE=$(lmp_rate "$WORK/log.lammps" "$N" "$STEPS")
 LMP_WALL=$(awk -v n="$N" -v s="$STEPS" -v t="$LOOP" 'BEGIN { printf "%.4e", n * s / t }')
 echo "== throughput per CPU-second: grainflow $GF_RATE, LAMMPS $LMP_RATE (LAMMPS wall: $LMP_WALL, CPU use $CPU %)"
 awk -v a="$GF_RATE" -v b="$LMP_RATE" 'BEGIN { printf "== ratio grainflow / LAMMPS = %.2f (target >= 2)\n", a / b }'
@@ -106,11 +95,15 @@ observe() {
 }
 echo "== observables: N = $N_SETTLE grains settle from the same unsettled stack for $SETTLE_STEPS steps in both codes"
 OMP_NUM_THREADS=1 nice "$BENCH" --n "$N_SETTLE" --steps "$SETTLE_STEPS" --settle 0 --threads 1 \
-    --lammps-data "$WORK/stack.data" --dump "$WORK/gf_settled.txt" | grep "thread(s)"
+    --lammps-data "$WORK/stack.data" --dump "$WORK/gf_settled.txt" | grep "thread(s)" | tee "$WORK/gf_settle.out"
+GF_SETTLE_RATE=$(sed -n 's/.*s wall (speed-up [0-9.]*), \([0-9.e+]*\) per CPU-second.*/\1/p' "$WORK/gf_settle.out")
 . "$WORK/stack.data.params"
 lammps_input "$WORK/stack.data" "$SETTLE_STEPS" "$WORK/lmp_settled.dump" > "$WORK/in.settle"
 OMP_NUM_THREADS=1 nice "$LMP" -in "$WORK/in.settle" -log "$WORK/log.settle" -screen none
-grep -E "Loop time" "$WORK/log.settle" || true
+grep -E "Loop time|CPU use" "$WORK/log.settle" || true
+LMP_SETTLE_RATE=$(lmp_rate "$WORK/log.settle" "$N_SETTLE" "$SETTLE_STEPS")
+awk -v a="$GF_SETTLE_RATE" -v b="$LMP_SETTLE_RATE" 'BEGIN {
+    printf "== settling, per CPU-second: grainflow %.4e, LAMMPS %.4e, ratio %.2f\n", a, b, a / b }'
 set -- $(observe "$WORK/gf_settled.txt") $(observe "$WORK/lmp_settled.dump")
 echo "== bed height h/D: grainflow $1, LAMMPS $3; bulk packing fraction: grainflow $2, LAMMPS $4"
 awk -v h1="$1" -v p1="$2" -v h2="$3" -v p2="$4" 'BEGIN {
