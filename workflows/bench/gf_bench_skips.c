@@ -22,6 +22,10 @@
  *                (off) against contact.overlap_target_over_D = 0.01 (on);
  *                also the largest overlap seen during the run.
  *
+ *   fluid_share  (not a pair) the wall-time share of the fluid step in an
+ *                immersed collapse (glass in water, R0 = 16 D, a = 1): the
+ *                most that skipping fluid work in idle cells could save.
+ *
  *   gf-bench-skips [--case NAME]... [--repeat R]      (default: all, R = 2)
  * A case runs R x (its seeds) off/on pairs; the cost of a side is the sum over
  * the seeds of one repeat, best repeat; the observables are means over all.
@@ -219,6 +223,32 @@ static int run_collapse(collapse_kind kind, int on, unsigned seed, result *r)
     return 1;
 }
 
+/* ---- the fluid's share of an immersed collapse (what an idle-cell skip could save) ---- */
+static int fluid_share(void)
+{
+    gf_ctx ctx = {0};
+    gf_run_spec s;
+    collapse_spec(&ctx, &s, 1);
+    gf_run_spec_set_param(&ctx, &s, "column_length_over_D", 16.0);
+    gf_run_spec_set_param(&ctx, &s, "aspect_ratio", 1.0);
+    snprintf(s.fluid.model, sizeof s.fluid.model, "unresolved");
+    s.fluid.density_kg_m3 = 1000.0, s.fluid.viscosity_Pa_s = 1e-3; /* glass in water */
+    gf_sim_options o = {.n_threads = 1};
+    gf_sim *sim = NULL;
+    if (gf_sim_create(&ctx, &s, &o, &sim) != GF_OK)
+        return fail(&ctx);
+    const double tg = sqrt(s.grains.diameter_m / s.gravity_m_s2);
+    if (gf_sim_advance(sim, (long)ceil(5.0 * tg / gf_sim_dt_s(sim))) != GF_OK)
+        return fail(&ctx);
+    const double *e = gf_sim_timers(sim)->elapsed_s, tot = e[GF_T_TOTAL];
+    printf("| fluid_share | immersed collapse R0 = 16 D, a = 1, water, 5 sqrt(D/g), %zu grains | total %.2f s: "
+           "fluid step %.2f s (%.1f %%), fluid forces %.2f s (%.1f %%), contacts %.2f s (%.1f %%) |\n",
+           gf_sim_particles(sim)->n_local, tot, e[GF_T_FLUID], 100 * e[GF_T_FLUID] / tot, e[GF_T_COUPLING],
+           100 * e[GF_T_COUPLING] / tot, e[GF_T_FORCE], 100 * e[GF_T_FORCE] / tot);
+    gf_sim_destroy(&sim);
+    return 1;
+}
+
 /* ---- the side-by-side driver ---- */
 typedef struct bench_case {
     const char *name, *obs_names[MAX_OBS];
@@ -294,6 +324,13 @@ int main(int argc, char **argv)
             repeat = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--case") && i + 1 < argc && n_want < 8) {
             const char *v = argv[++i];
+            if (!strcmp(v, "fluid_share")) {
+                if (!fluid_share())
+                    return 1;
+                if (i + 1 == argc && n_want == 0)
+                    return 0;
+                continue;
+            }
             int f = -1;
             for (int k = 0; k < (int)(sizeof cases / sizeof cases[0]); ++k)
                 if (!strcmp(cases[k].name, v))
