@@ -32,7 +32,7 @@
 
 #include "gf_run_spec.h"
 
-/* The largest contact force of a static pack / p D^2: measured 2.8-4.6 in
+/* The largest contact force of a static pack / p D^2: measured 2.1-4.6 in
  * the settled columns of tests/stress/test_stiffness_rule.c (docs/benchmarks.md). */
 #define GF_STIFFNESS_CHAIN_FACTOR 6.0
 
