@@ -32,6 +32,7 @@
 #endif
 
 #include "gf_sim_internal.h"
+#include "gf_stiffness_rule.h"
 #include "integrate/gf_integrate.h"
 
 #define GF_DT_MAX_OVER_TC 0.2     /* see the opening comment */
@@ -122,6 +123,7 @@ gf_status gf_sim_add_wall(gf_sim *s, const double point[3], const double normal[
         w->point_m[a] = point[a], w->normal[a] = normal[a] / len;
     w->friction = friction;
     w->active = 1;
+    gf_sim_skips_wall_added(s, friction);
     if (wall_id)
         *wall_id = s->n_walls;
     s->n_walls++;
@@ -304,18 +306,22 @@ static gf_status setup_fluid(gf_sim *s)
         return GF_FAIL(s->ctx, GF_ERR_CONFIG, "fluid: density and viscosity must be > 0 when immersed (got %g, %g)",
                        f->density_kg_m3, f->viscosity_Pa_s);
     s->immersed = 1;
+    return f->lubrication ? gf_sim_setup_lubrication(s) : GF_OK;
+}
+
+gf_status gf_sim_setup_lubrication(gf_sim *s)
+{
+    const gf_fluid_spec *f = &s->spec.fluid;
     double R = 0.5 * s->spec.grains.diameter_m;
-    s->lubrication = f->lubrication != 0;
-    if (s->lubrication) {
-        if (!(f->roughness_over_R > 0.0) || !(f->lub_cutoff_over_R >= 0.0))
-            return GF_FAIL(s->ctx, GF_ERR_CONFIG,
-                           "fluid: roughness_over_R must be > 0 and lub_cutoff_over_R >= 0 (got %g, %g)",
-                           f->roughness_over_R, f->lub_cutoff_over_R);
-        s->lub_eta_Pa_s = f->viscosity_Pa_s;
-        s->lub_roughness_m = f->roughness_over_R * R;
-        s->lub_cutoff_m = f->lub_cutoff_over_R * R;
-        s->extra_m = s->lub_cutoff_m; /* the neighbour reach covers the lubrication range */
-    }
+    if (!(f->roughness_over_R > 0.0) || !(f->lub_cutoff_over_R >= 0.0))
+        return GF_FAIL(s->ctx, GF_ERR_CONFIG,
+                       "fluid: roughness_over_R must be > 0 and lub_cutoff_over_R >= 0 (got %g, %g)",
+                       f->roughness_over_R, f->lub_cutoff_over_R);
+    s->lubrication = 1;
+    s->lub_eta_Pa_s = f->viscosity_Pa_s;
+    s->lub_roughness_m = f->roughness_over_R * R;
+    s->lub_cutoff_m = f->lub_cutoff_over_R * R;
+    s->extra_m = s->lub_cutoff_m; /* the neighbour reach covers the lubrication range */
     return GF_OK;
 }
 
@@ -334,6 +340,30 @@ static gf_status create_coupling(gf_sim *s)
     GF_TRY(gf_coupling_create(s->ctx, &s->spec, &setup, &s->coupling));
     choose_substeps(s);
     s->next_fluid_step = s->step;
+    return GF_OK;
+}
+
+/* contact.overlap_target_over_D > 0: t_c from the scene's largest static
+ * pressure (gf_stiffness_rule.h), written back into the spec so that every
+ * output records the t_c that ran. */
+static gf_status apply_stiffness_rule(gf_sim *s)
+{
+    gf_run_spec *sp = &s->spec;
+    double x = sp->contact.overlap_target_over_D;
+    if (x == 0.0)
+        return GF_OK;
+    if (!(x > 0.0 && x <= 0.05))
+        return GF_FAIL(s->ctx, GF_ERR_CONFIG, "contact.overlap_target_over_D: must be in (0, 0.05] or 0 (got %g)", x);
+    double R0_m = 0.0, H0_m = 0.0;
+    if (s->scene->column_geometry)
+        s->scene->column_geometry(sp, &R0_m, &H0_m);
+    if (!(H0_m > 0.0))
+        return GF_FAIL(s->ctx, GF_ERR_CONFIG,
+                       "contact.overlap_target_over_D: scene %s states no pressure scale (column height); set "
+                       "contact.t_contact_nd instead", sp->scene);
+    double phi = isnan(sp->phi_initial) ? gf_run_spec_param(sp, "phi_target", 0.6) : sp->phi_initial;
+    double p_Pa = gf_stiffness_column_pressure_Pa(sp, phi, H0_m);
+    sp->contact.t_contact_nd = gf_stiffness_t_contact_nd(sp, gf_stiffness_k_n(sp, p_Pa, x));
     return GF_OK;
 }
 
@@ -358,10 +388,12 @@ static gf_status create_inner(gf_sim *s, const gf_run_spec *spec, const gf_sim_o
     if (!s->scene)
         return GF_FAIL(s->ctx, GF_ERR_CONFIG, "scene: unknown scene '%s'", spec->scene);
     GF_TRY(gf_scene_resolve_params(s->ctx, &s->spec));
+    GF_TRY(apply_stiffness_rule(s));
     GF_TRY(gf_contact_params_from_spec(s->ctx, &s->spec, &s->cp));
     s->law = gf_contact_find(s->spec.contact.law);
     s->dt_s = gf_run_spec_dt_s(&s->spec);
     GF_TRY(setup_fluid(s));
+    GF_TRY(gf_sim_decide_skips(s));
     GF_TRY(check_time_step(s));
     GF_TRY(compute_scales(s));
     if (!(s->spec.contact.skin_over_D > 0.0))
@@ -453,7 +485,8 @@ static void kick(gf_sim *s, double h)
         int t = 0, m = 1;
 #endif
         size_t i0 = (size_t)(n * (long)t / m), i1 = (size_t)(n * (long)(t + 1) / m);
-        gf_integrate_factors k = {s->inv_mass, s->inv_inertia, s->mobile};
+        /* no inverse inertia: translation only (no torque ever, GF_SKIP_TANGENTIAL) */
+        gf_integrate_factors k = {s->inv_mass, (s->skips & GF_SKIP_TANGENTIAL) ? NULL : s->inv_inertia, s->mobile};
         gf_integrate_kick(p, i0, i1, h, s->gravity_m_s2, &k);
     }
 }

@@ -32,7 +32,17 @@ typedef struct gf_sim_options {
     void (*progress)(void *user, double t_s, double t_end_s, double steps_per_s);
     void *progress_user;
     volatile int *interrupt;    /* non-zero: stop at the next step, checkpoint, return GF_ERR_INTERRUPTED */
+    int keep_all_work;          /* 1: skip nothing (gf_sim_skips; benchmarks measure what each skip saves) */
 } gf_sim_options;
+
+/* Work a run leaves out because its spec and scene do not need it (issue #6),
+ * decided once at gf_sim_create (engine/gf_sim_skips.c; docs/benchmarks.md):
+ *   GF_SKIP_TANGENTIAL   mu_c = 0 on grains and walls: no tangential force or
+ *                        history, no torque, no rotation (exact);
+ *   GF_SKIP_LUBRICATION  the spec names a viscous fluid and asks for
+ *                        lubrication but the run's tier is dry (scene without
+ *                        fluid, fluid.model none, or `auto` chose none). */
+enum { GF_SKIP_TANGENTIAL = 1u, GF_SKIP_LUBRICATION = 2u };
 
 /* Builds the scene of spec (packing preparation included). Returns owned sim.
  * Errors: unknown scene, invalid/impossible parameters (GF_ERR_CONFIG,
@@ -62,6 +72,8 @@ long gf_sim_step_count(const gf_sim *sim);
 void gf_sim_box(const gf_sim *sim, double lo[3], double hi[3], int periodic[3]);
 /* Number of grain-grain and grain-wall contacts, and the largest overlap / D. */
 void gf_sim_contact_stats(const gf_sim *sim, size_t *n_contacts, double *max_overlap_over_D);
+/* GF_SKIP_* bits of the run; text (may be NULL) gets their names, comma-separated, "" when none. */
+unsigned gf_sim_skips(const gf_sim *sim, char *text, size_t n);
 /* Total force the grains exert on wall w (N), accumulated at the last force evaluation. */
 void gf_sim_wall_force(const gf_sim *sim, int wall_id, double f_N[3]);
 

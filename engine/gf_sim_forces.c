@@ -149,10 +149,11 @@ static inline void cross(const double a[3], const double b[3], double c[3])
 }
 
 /* Grain-grain pairs of rows [i0, i1) into the accumulators f[0..5] (fx..tz).
- * Specialised on the law: linear (the seeds' law, inlined) or any table row. */
+ * Specialised on the law: linear (the seeds' law, inlined) or any table row;
+ * normal_only: the linear normal law alone (mu_c = 0, GF_SKIP_TANGENTIAL). */
 static inline __attribute__((always_inline)) void pair_rows_impl(gf_sim *s, size_t i0, size_t i1,
                                                                  double *const f[6], gf_sim_accum *acc,
-                                                                 const int linear)
+                                                                 const int linear, const int normal_only)
 {
     const gf_particles *p = s->p;
     const gf_nlist *nl = s->nl;
@@ -201,7 +202,13 @@ static inline __attribute__((always_inline)) void pair_rows_impl(gf_sim *s, size
             double F[3] = {0.0, 0.0, 0.0};
             double vp[3] = {vpx[i] - vpx[j], vpy[i] - vpy[j], vpz[i] - vpz[j]};
             g.v_n_m_s = vp[0] * g.n[0] + vp[1] * g.n[1] + vp[2] * g.n[2];
-            if (g.overlap_m > 0.0) {
+            if (normal_only && g.overlap_m > 0.0) {
+                const double f_n = gf_contact_linear_normal_inline(&cp, &g, pair_sqrt_mk[k]);
+                F[0] = f_n * g.n[0], F[1] = f_n * g.n[1], F[2] = f_n * g.n[2];
+                touching[k] = 1;
+                n_contacts++;
+                max_overlap = g.overlap_m > max_overlap ? g.overlap_m : max_overlap;
+            } else if (g.overlap_m > 0.0) {
                 double vt[3] = {p->vx_m_s[i] - p->vx_m_s[j], p->vy_m_s[i] - p->vy_m_s[j], p->vz_m_s[i] - p->vz_m_s[j]};
                 double rw[3] = {ri * p->wx_rad_s[i] + R[j] * p->wx_rad_s[j], ri * p->wy_rad_s[i] + R[j] * p->wy_rad_s[j],
                                 ri * p->wz_rad_s[i] + R[j] * p->wz_rad_s[j]};
@@ -250,12 +257,17 @@ static inline __attribute__((always_inline)) void pair_rows_impl(gf_sim *s, size
 
 static void pair_rows_linear(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_sim_accum *acc)
 {
-    pair_rows_impl(s, i0, i1, f, acc, 1);
+    pair_rows_impl(s, i0, i1, f, acc, 1, 0);
+}
+
+static void pair_rows_linear_normal(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_sim_accum *acc)
+{
+    pair_rows_impl(s, i0, i1, f, acc, 1, 1);
 }
 
 static void pair_rows_table(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_sim_accum *acc)
 {
-    pair_rows_impl(s, i0, i1, f, acc, 0);
+    pair_rows_impl(s, i0, i1, f, acc, 0, 0);
 }
 
 /* Grain-wall contacts of grains [i0, i1). */
@@ -372,7 +384,9 @@ gf_status gf_sim_compute_forces(gf_sim *s)
                 for (int q = 0; q < 6; ++q)
                     memset(a->f[q], 0, n * sizeof(double));
             size_t i0 = s->nl->chunk_row[c], i1 = s->nl->chunk_row[c + 1];
-            if (s->law->kernel == gf_contact_linear)
+            if (s->law->kernel == gf_contact_linear && (s->skips & GF_SKIP_TANGENTIAL))
+                pair_rows_linear_normal(s, i0, i1, f, a);
+            else if (s->law->kernel == gf_contact_linear)
                 pair_rows_linear(s, i0, i1, f, a);
             else
                 pair_rows_table(s, i0, i1, f, a);

@@ -94,6 +94,8 @@ struct gf_sim {
     long *sleep_quiet_steps;    /* steps each grain has stayed below the sleep speed */
     size_t sleep_cap;
     long n_sleep_events, n_wake_events;
+    /* work this run does not need (gf_sim_skips.c): GF_SKIP_* bits, decided once at creation */
+    unsigned skips;
 };
 
 /* Evaluates contact (+ lubrication) forces and wall forces at the current
@@ -114,5 +116,14 @@ gf_status gf_sim_rebuild_from_ref(gf_sim *s);
  * when contact.sleep_speed_nd > 0. gf_sim_sleep.c. */
 #define GF_SLEEP_EVERY 10
 gf_status gf_sim_sleep_update(gf_sim *s);
+
+/* Skips (gf_sim_skips.c). Decided from the spec and the scene before build()
+ * (gf_sim_decide_skips) and dropped when a scene adds what defeats one (a
+ * frictional wall: gf_sim_skips_wall_added); nothing is decided when
+ * gf_sim_options.keep_all_work is set. */
+gf_status gf_sim_decide_skips(gf_sim *s);
+void gf_sim_skips_wall_added(gf_sim *s, double friction);
+/* Brenner lubrication from spec.fluid (roughness, cut-off, viscosity). gf_sim.c. */
+gf_status gf_sim_setup_lubrication(gf_sim *s);
 
 #endif

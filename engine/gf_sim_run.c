@@ -181,7 +181,12 @@ static gf_status run_loop(gf_sim *s, run_out *o)
         }
         GF_TRY(st);
         double w1 = gf_wtime(), took = w1 - w0;
-        chunk = took < 0.05 ? chunk * 2 : (took > 0.2 && chunk > 1 ? chunk / 2 : chunk); /* ~0.1 s per chunk */
+        /* ~0.1 s per chunk; grown only when a whole chunk ran (a chunk cut short by
+         * frequent output instants must not double without bound and overflow) */
+        if (took < 0.05 && n == chunk)
+            chunk *= 2;
+        else if (took > 0.2 && chunk > 1)
+            chunk /= 2;
         if (s->t_s >= next_out - 0.5 * s->dt_s) {
             GF_TRY(write_record(s, o));
             written_step = s->step;
@@ -223,7 +228,10 @@ gf_status gf_sim_run(gf_sim *s)
         scene_geometry(s, &R0_m, &H0_m, &incline_deg);
         if (s->scene->initial_packing && s->step == 0)
             GF_TRY(s->scene->initial_packing(s, &phi_measured, &phi_local));
+        char skipped[256];
+        gf_sim_skips(s, skipped, sizeof skipped);
         gf_nc_meta meta = {
+            .skipped_work = skipped,
             .spec = &s->spec,
             .scales = &s->scales,
             .resolved_yaml = s->opt.resolved_yaml,
@@ -231,7 +239,7 @@ gf_status gf_sim_run(gf_sim *s)
             .fluid_model_reason = s->fluid_reason,
             .stages = s->immersed ? (s->lubrication ? "fluid,contacts,lubrication,coupling,integrate"
                                                     : "fluid,contacts,coupling,integrate")
-                                  : "contacts,integrate",
+                                  : (s->lubrication ? "contacts,lubrication,integrate" : "contacts,integrate"),
             .column_length_m = R0_m,
             .column_height_m = H0_m,
             .incline_deg = incline_deg,

@@ -45,6 +45,14 @@ static inline void gf_contact_tangential_inline(const gf_contact_geom *g, double
     }
 }
 
+/* Normal force of the linear law alone (a frictionless run: F_t = 0, gf_sim_skips.c). */
+static inline double gf_contact_linear_normal_inline(const gf_contact_params *p, const gf_contact_geom *g,
+                                                     double sqrt_mk)
+{
+    double f_n = p->k_n_N_m * g->overlap_m - 2.0 * p->zeta * sqrt_mk * g->v_n_m_s;
+    return (f_n < 0.0 && !p->allow_attraction) ? 0.0 : f_n;
+}
+
 static inline void gf_contact_linear_inline(const gf_contact_params *p, const gf_contact_geom *g, double dt_s,
                                             double *hist, double *f_n_out, double f_t_out[3])
 {

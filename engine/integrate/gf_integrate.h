@@ -36,7 +36,8 @@ typedef struct gf_integrate_factors {
 /* Fills the factors of grains [0, n) from the flags, masses and inertias. */
 void gf_integrate_factors_fill(const gf_particles *p, size_t n, double *inv_mass, double *inv_inertia, double *mobile);
 
-/* v += (F/m + g) dt_half, w += T/I dt_half, for mobile grains in [i0, i1). */
+/* v += (F/m + g) dt_half, w += T/I dt_half, for mobile grains in [i0, i1);
+ * k->inv_inertia NULL: translation only (a run without torques). */
 void gf_integrate_kick(gf_particles *p, size_t i0, size_t i1, double dt_half_s, const double g_m_s2[3],
                        const gf_integrate_factors *k);
 /* x += v dt for mobile grains in [i0, i1), and the predicted velocities

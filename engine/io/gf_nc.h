@@ -34,6 +34,7 @@ typedef struct gf_nc_meta {
     const char *fluid_model;         /* "none", "unresolved", ... as run */
     const char *fluid_model_reason;  /* why this tier (fluid: auto) */
     const char *stages;              /* stages that ran, e.g. "contacts,integrate" */
+    const char *skipped_work;        /* work left out as not needed (gf_sim_skips), may be NULL */
     double column_length_m;          /* R0 (0 if not a collapse) */
     double column_height_m;          /* H0 */
     double incline_deg;              /* theta */

@@ -169,12 +169,14 @@ static int put_run_globals(int ncid, const gf_nc_meta *m)
     NC_SEQ(rc, put_double(ncid, "phi_initial_measured", m->phi_initial_measured));
     NC_SEQ(rc, put_double(ncid, "phi_initial_local", m->phi_initial_local));
     NC_SEQ(rc, put_text(ncid, "stages", m->stages ? m->stages : ""));
+    NC_SEQ(rc, put_text(ncid, "skipped_work", m->skipped_work ? m->skipped_work : ""));
     /* further inputs (additive to docs/output.md): enough to rerun without run.yaml */
     unsigned long long seed = s->seed;
     NC_SEQ(rc, nc_put_att_ulonglong(ncid, NC_GLOBAL, "seed", NC_UINT64, 1, &seed));
     NC_SEQ(rc, put_double(ncid, "end_time_nd", s->end_time_nd));
     NC_SEQ(rc, put_double(ncid, "output_interval_nd", s->output.interval_nd));
     NC_SEQ(rc, put_double(ncid, "t_contact_nd", s->contact.t_contact_nd));
+    NC_SEQ(rc, put_double(ncid, "overlap_target_over_D", s->contact.overlap_target_over_D));
     NC_SEQ(rc, put_double(ncid, "dt_over_tc", s->contact.dt_over_tc));
     NC_SEQ(rc, put_int(ncid, "lubrication", s->fluid.lubrication));
     NC_SEQ(rc, put_double(ncid, "roughness_over_R", s->fluid.roughness_over_R));

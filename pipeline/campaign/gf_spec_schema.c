@@ -44,6 +44,8 @@ static const gf_spec_field fields[] = {
     D("contact", "dt_over_tc", contact.dt_over_tc, 0, 0.5, 1, "1", "DEM time step / t_c"),
     D("contact", "skin_over_D", contact.skin_over_D, 0, 5.0, 0, "1", "Verlet skin / D"),
     D("contact", "sleep_speed_nd", contact.sleep_speed_nd, 0, 0.05, 0, "1", "sleep below this speed / sqrt(gD); 0: off"),
+    D("contact", "overlap_target_over_D", contact.overlap_target_over_D, 0, 0.05, 0, "1",
+      "t_c from the scene's pressure: static overlaps below this x D (replaces t_contact_nd); 0: off"),
     N("fluid", "model", fluid.model, fluid_models, "fluid tier"),
     D("fluid", "density_kg_m3", fluid.density_kg_m3, 0, 1e5, 0, "kg m-3", "fluid density rho_f (0: dry)"),
     D("fluid", "viscosity_Pa_s", fluid.viscosity_Pa_s, 0, 1e6, 0, "Pa s", "dynamic viscosity eta_f (0: dry)"),

@@ -10,11 +10,14 @@
  * core, and the split neighbour / force / integrate from the step-loop timers.
  *
  *   gf-bench-dem [--n N]... [--threads T]... [--steps S] [--settle T_nd]
- *                [--lammps-data PATH] [--friction MU]
+ *                [--lammps-data PATH] [--friction MU] [--dump PATH]
  *
  * --lammps-data writes the settled bed of the LAST N as a LAMMPS data file
  * (atom_style sphere) plus PATH.params (k_n, gamma_n, k_t, mu, dt, box),
- * for workflows/bench/lammps_compare.sh.
+ * for workflows/bench/lammps_compare.sh. --dump writes the grains after the
+ * first timed run (one line "x y z radius" per grain, SI), the same columns
+ * as the LAMMPS dump of lammps_compare.sh, for the observable comparison
+ * (bed height, packing fraction: --settle 0 times the settling itself).
  */
 #include <math.h>
 #include <stdio.h>
@@ -40,7 +43,7 @@ typedef struct bench_args {
     int n_threads;
     long steps;
     double settle_nd, friction;
-    const char *lammps;
+    const char *lammps, *dump;
 } bench_args;
 
 static void spec_for(gf_ctx *ctx, gf_run_spec *s, const bench_args *a, long n, double settle_nd)
@@ -100,8 +103,21 @@ static int write_lammps(gf_sim *sim, const char *path)
     fprintf(f, "KN=%.17g\nGAMMAN=%.17g\nKT=%.17g\nGAMMAT=0\nMU=%.17g\nDT=%.17g\nSKIN=%.17g\nG=%.17g\nN=%zu\n",
             cp.k_n_N_m, gamma_n / cp.m_eff_mean_kg, cp.kt_over_kn * cp.k_n_N_m, cp.mu_grain, gf_sim_dt_s(sim),
             s->contact.skin_over_D * s->grains.diameter_m, s->gravity_m_s2, p->n_local);
+    fprintf(f, "LX=%.17g\nLZ=%.17g\nD=%.17g\n", hi[0] - lo[0], hi[2] - lo[2], s->grains.diameter_m);
     fclose(f);
     return 1;
+}
+
+/* One line "x y z radius" per grain (SI). */
+static int write_dump(gf_sim *sim, const char *path)
+{
+    const gf_particles *p = gf_sim_particles(sim);
+    FILE *f = fopen(path, "w");
+    if (!f)
+        return 0;
+    for (size_t i = 0; i < p->n_local; ++i)
+        fprintf(f, "%.17g %.17g %.17g %.17g\n", p->x_m[i], p->y_m[i], p->z_m[i], p->radius_m[i]);
+    return fclose(f) == 0;
 }
 
 static int parse(int argc, char **argv, bench_args *a)
@@ -126,6 +142,8 @@ static int parse(int argc, char **argv, bench_args *a)
             a->friction = atof(v);
         else if (!strcmp(argv[i], "--lammps-data"))
             a->lammps = v;
+        else if (!strcmp(argv[i], "--dump"))
+            a->dump = v;
         else
             return 0;
         ++i;
@@ -142,7 +160,7 @@ int main(int argc, char **argv)
     bench_args a;
     if (!parse(argc, argv, &a)) {
         fprintf(stderr, "usage: gf-bench-dem [--n N]... [--threads T]... [--steps S] [--settle T_nd] "
-                        "[--friction MU] [--lammps-data PATH]\n");
+                        "[--friction MU] [--lammps-data PATH] [--dump PATH]\n");
         return 2;
     }
     gf_ctx ctx = {0};
@@ -203,6 +221,10 @@ int main(int argc, char **argv)
                    a.n[k], a.threads[q], a.steps, wall, cpu, rate, rate / rate1, (double)a.n[k] * a.steps / cpu,
                    100 * tn / wall, 100 * tf / wall, 100 * ti / wall, 100 * (wall - tn - tf - ti) / wall);
             fflush(stdout);
+            if (q == 0 && a.dump && !write_dump(sim, a.dump)) {
+                fprintf(stderr, "gf-bench-dem: cannot write %s\n", a.dump);
+                return 1;
+            }
             gf_sim_destroy(&sim);
         }
         remove(ck);

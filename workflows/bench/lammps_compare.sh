@@ -13,13 +13,22 @@
 # grainflow from CLOCK_PROCESS_CPUTIME_ID around gf_sim_advance, LAMMPS from
 # its "Loop time" x its reported CPU use.
 #
-# usage: lammps_compare.sh [N] [STEPS] [BUILD_DIR]    (defaults 10000 3000 build-dem)
+# Observables (second part): both codes settle the SAME unsettled stack (the
+# settled_bed scene's jittered body-centred stack before any step, no
+# quench) for SETTLE_STEPS steps; the script then prints, for each code, the
+# bed height h = 2 <y> (centre of mass) and the packing fraction of the bulk
+# (grains centred in 3 D <= y <= h - 3 D over that slab), and their difference.
+#
+# usage: lammps_compare.sh [N] [STEPS] [BUILD_DIR] [N_SETTLE] [SETTLE_STEPS]
+#        (defaults 10000 3000 build-dem 2000 20000; N_SETTLE = 0 skips the observables)
 # needs: apt-get install -y lammps  (binary `lmp`)
 set -eu
 N=${1:-10000}
 STEPS=${2:-3000}
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${3:-$ROOT/build-dem}
+N_SETTLE=${4:-2000}
+SETTLE_STEPS=${5:-20000}
 LMP=$(command -v lmp || command -v lmp_serial || true)
 [ -n "$LMP" ] || { echo "lammps_compare: no LAMMPS binary (apt-get install -y lammps)" >&2; exit 1; }
 BENCH=$BUILD/workflows/bench/gf-bench-dem
@@ -32,13 +41,15 @@ OMP_NUM_THREADS=1 nice "$BENCH" --n "$N" --steps "$STEPS" --threads 1 --lammps-d
 GF_RATE=$(sed -n 's/.*s wall (speed-up [0-9.]*), \([0-9.e+]*\) per CPU-second.*/\1/p' "$WORK/gf.out" | tail -1)
 . "$WORK/bed.data.params"
 
-cat > "$WORK/in.bed" <<EOS
+# LAMMPS input: data file $1, $2 steps, final positions to $3 (x y z radius)
+lammps_input() {
+    cat <<EOS
 units           si
 atom_style      sphere
 atom_modify     map array
 boundary        p f p
 comm_modify     vel yes
-read_data       $WORK/bed.data
+read_data       $1
 neighbor        $SKIN bin
 neigh_modify    delay 0 every 1 check yes
 pair_style      gran/hooke/history $KN $KT $GAMMAN $GAMMAT $MU 0
@@ -48,15 +59,53 @@ fix             grav all gravity $G vector 0 -1 0
 fix             int all nve/sphere
 timestep        $DT
 thermo          1000
-run             $STEPS
+run             $2
+write_dump      all custom $3 x y z radius modify sort id
 EOS
+}
+lammps_input "$WORK/bed.data" "$STEPS" "$WORK/lmp_bed.dump" > "$WORK/in.bed"
 echo "== LAMMPS ($LMP): same bed, same law, 1 core"
 OMP_NUM_THREADS=1 nice "$LMP" -in "$WORK/in.bed" -log "$WORK/log.lammps" -screen none
 grep -E "Loop time|CPU use|Pair  |Neigh |Modify|Comm  " "$WORK/log.lammps" || true
+# particle-steps per CPU-second of a LAMMPS log ($1) for $2 grains and $3 steps
+lmp_rate() {
+    loop=$(sed -n 's/^Loop time of \([0-9.e+-]*\) on.*/\1/p' "$1")
+    cpu=$(sed -n 's/^\([0-9.]*\)% CPU use.*/\1/p' "$1")
+    awk -v n="$2" -v s="$3" -v t="$loop" -v c="${cpu:-100}" 'BEGIN { printf "%.4e", n * s / (t * c / 100) }'
+}
 LOOP=$(sed -n 's/^Loop time of \([0-9.e+-]*\) on.*/\1/p' "$WORK/log.lammps")
 CPU=$(sed -n 's/^\([0-9.]*\)% CPU use.*/\1/p' "$WORK/log.lammps")
 [ -n "$CPU" ] || CPU=100
-LMP_RATE=$(awk -v n="$N" -v s="$STEPS" -v t="$LOOP" -v c="$CPU" 'BEGIN { printf "%.4e", n * s / (t * c / 100) }')
+LMP_RATE=$(lmp_rate "$WORK/log.lammps" "$N" "$STEPS")
 LMP_WALL=$(awk -v n="$N" -v s="$STEPS" -v t="$LOOP" 'BEGIN { printf "%.4e", n * s / t }')
 echo "== throughput per CPU-second: grainflow $GF_RATE, LAMMPS $LMP_RATE (LAMMPS wall: $LMP_WALL, CPU use $CPU %)"
 awk -v a="$GF_RATE" -v b="$LMP_RATE" 'BEGIN { printf "== ratio grainflow / LAMMPS = %.2f (target >= 2)\n", a / b }'
+
+[ "$N_SETTLE" -gt 0 ] || exit 0
+# bed height h = 2 <y> and bulk packing fraction (centres in [3 D, h - 3 D]) of
+# a file of "x y z radius" lines (LAMMPS dump headers skipped)
+observe() {
+    awk -v lx="$LX" -v lz="$LZ" -v d="$D" '
+        NF == 4 && $1 + 0 == $1 { n++; y[n] = $2; r[n] = $4; sy += $2 }
+        END {
+            h = 2 * sy / n; lo = 3 * d; hi = h - 3 * d; v = 0
+            for (i = 1; i <= n; i++) if (y[i] >= lo && y[i] <= hi) v += 4.18879020478639 * r[i] ^ 3
+            printf "%.6f %.6f\n", h / d, v / (lx * lz * (hi - lo))
+        }' "$1"
+}
+echo "== observables: N = $N_SETTLE grains settle from the same unsettled stack for $SETTLE_STEPS steps in both codes"
+OMP_NUM_THREADS=1 nice "$BENCH" --n "$N_SETTLE" --steps "$SETTLE_STEPS" --settle 0 --threads 1 \
+    --lammps-data "$WORK/stack.data" --dump "$WORK/gf_settled.txt" | grep "thread(s)" | tee "$WORK/gf_settle.out"
+GF_SETTLE_RATE=$(sed -n 's/.*s wall (speed-up [0-9.]*), \([0-9.e+]*\) per CPU-second.*/\1/p' "$WORK/gf_settle.out")
+. "$WORK/stack.data.params"
+lammps_input "$WORK/stack.data" "$SETTLE_STEPS" "$WORK/lmp_settled.dump" > "$WORK/in.settle"
+OMP_NUM_THREADS=1 nice "$LMP" -in "$WORK/in.settle" -log "$WORK/log.settle" -screen none
+grep -E "Loop time|CPU use" "$WORK/log.settle" || true
+LMP_SETTLE_RATE=$(lmp_rate "$WORK/log.settle" "$N_SETTLE" "$SETTLE_STEPS")
+awk -v a="$GF_SETTLE_RATE" -v b="$LMP_SETTLE_RATE" 'BEGIN {
+    printf "== settling, per CPU-second: grainflow %.4e, LAMMPS %.4e, ratio %.2f\n", a, b, a / b }'
+set -- $(observe "$WORK/gf_settled.txt") $(observe "$WORK/lmp_settled.dump")
+echo "== bed height h/D: grainflow $1, LAMMPS $3; bulk packing fraction: grainflow $2, LAMMPS $4"
+awk -v h1="$1" -v p1="$2" -v h2="$3" -v p2="$4" 'BEGIN {
+    printf "== difference grainflow - LAMMPS: h %+.4f D (%+.2f %%), packing fraction %+.4f (%+.2f %%)\n",
+           h1 - h2, 100 * (h1 - h2) / h2, p1 - p2, 100 * (p1 - p2) / p2 }'
