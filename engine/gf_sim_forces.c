@@ -372,7 +372,9 @@ gf_status gf_sim_compute_forces(gf_sim *s)
                 for (int q = 0; q < 6; ++q)
                     memset(a->f[q], 0, n * sizeof(double));
             size_t i0 = s->nl->chunk_row[c], i1 = s->nl->chunk_row[c + 1];
-            if (s->law->kernel == gf_contact_linear)
+            if (s->law->kernel == gf_contact_linear && !s->lubrication)
+                gf_sim_pair_rows_dry_linear(s, i0, i1, f, a);
+            else if (s->law->kernel == gf_contact_linear)
                 pair_rows_linear(s, i0, i1, f, a);
             else
                 pair_rows_table(s, i0, i1, f, a);

@@ -10,11 +10,14 @@
  * core, and the split neighbour / force / integrate from the step-loop timers.
  *
  *   gf-bench-dem [--n N]... [--threads T]... [--steps S] [--settle T_nd]
- *                [--lammps-data PATH] [--friction MU]
+ *                [--lammps-data PATH] [--friction MU] [--bed PREFIX]
  *
  * --lammps-data writes the settled bed of the LAST N as a LAMMPS data file
  * (atom_style sphere) plus PATH.params (k_n, gamma_n, k_t, mu, dt, box),
- * for workflows/bench/lammps_compare.sh.
+ * for workflows/bench/lammps_compare.sh. --bed keeps the settled bed as the
+ * checkpoint PREFIX_<N>.h5 and reuses it when it exists (settling 1e5 grains
+ * costs far more than timing them; the same file also lets two builds be
+ * timed on the same state).
  */
 #include <math.h>
 #include <stdio.h>
@@ -41,6 +44,7 @@ typedef struct bench_args {
     long steps;
     double settle_nd, friction;
     const char *lammps;
+    const char *bed; /* reuse (or keep) the settled bed: PATH_<N>.h5 */
 } bench_args;
 
 static void spec_for(gf_ctx *ctx, gf_run_spec *s, const bench_args *a, long n, double settle_nd)
@@ -57,6 +61,38 @@ static void spec_for(gf_ctx *ctx, gf_run_spec *s, const bench_args *a, long n, d
     s->contact.dt_over_tc = 0.02;
     gf_run_spec_set_param(ctx, s, "n_grains", (double)n);
     gf_run_spec_set_param(ctx, s, "settle_time_nd", settle_nd);
+}
+
+/* FNV-1a hash of the grain state in id order: two builds that claim the same
+ * arithmetic must print the same hash after the same steps. */
+static unsigned long long state_hash(gf_sim *sim)
+{
+    const gf_particles *p = gf_sim_particles(sim);
+    const double *f[9] = {p->x_m, p->y_m, p->z_m, p->vx_m_s, p->vy_m_s, p->vz_m_s, p->wx_rad_s, p->wy_rad_s, p->wz_rad_s};
+    int64_t max_id = 0;
+    for (size_t i = 0; i < p->n_local; ++i)
+        max_id = p->id[i] > max_id ? p->id[i] : max_id;
+    size_t *slot = malloc(((size_t)max_id + 1) * sizeof(size_t));
+    unsigned long long h = 1469598103934665603ULL;
+    if (!slot)
+        return 0;
+    for (int64_t q = 0; q <= max_id; ++q)
+        slot[q] = (size_t)-1;
+    for (size_t i = 0; i < p->n_local; ++i)
+        slot[p->id[i]] = i;
+    for (int64_t q = 0; q <= max_id; ++q) {
+        if (slot[q] == (size_t)-1)
+            continue;
+        for (int c = 0; c < 9; ++c) {
+            unsigned long long b;
+            double v = f[c][slot[q]] + 0.0; /* +0.0: -0 and +0 hash alike */
+            memcpy(&b, &v, sizeof b);
+            for (int k = 0; k < 8; ++k)
+                h = (h ^ ((b >> (8 * k)) & 0xff)) * 1099511628211ULL;
+        }
+    }
+    free(slot);
+    return h;
 }
 
 static int write_lammps(gf_sim *sim, const char *path)
@@ -104,6 +140,31 @@ static int write_lammps(gf_sim *sim, const char *path)
     return 1;
 }
 
+/* Builds and settles the bed of n grains, and checkpoints it to ck. */
+static int settle_bed(gf_ctx *ctx, const bench_args *a, long n, const char *ck)
+{
+    gf_run_spec spec;
+    spec_for(ctx, &spec, a, n, a->settle_nd);
+    gf_sim *sim = NULL;
+    double w0 = gf_wtime();
+    gf_sim_options opt = {.n_threads = 1};
+    if (gf_sim_create(ctx, &spec, &opt, &sim) != GF_OK) {
+        fprintf(stderr, "gf-bench-dem: %s\n", ctx->last_msg);
+        return 0;
+    }
+    size_t nc;
+    double ov;
+    gf_sim_contact_stats(sim, &nc, &ov);
+    printf("N = %ld: settled in %.1f s wall (%.1f sqrt(D/g)); %zu contacts (%.2f per grain), max overlap %.4f D, "
+           "KE %.3g J\n",
+           n, gf_wtime() - w0, a->settle_nd, nc, 2.0 * nc / n, ov, gf_particles_kinetic_energy(gf_sim_particles(sim)));
+    gf_status st = gf_sim_checkpoint(sim, ck);
+    if (st != GF_OK)
+        fprintf(stderr, "gf-bench-dem: %s\n", ctx->last_msg);
+    gf_sim_destroy(&sim);
+    return st == GF_OK;
+}
+
 static int parse(int argc, char **argv, bench_args *a)
 {
     memset(a, 0, sizeof *a);
@@ -126,6 +187,8 @@ static int parse(int argc, char **argv, bench_args *a)
             a->friction = atof(v);
         else if (!strcmp(argv[i], "--lammps-data"))
             a->lammps = v;
+        else if (!strcmp(argv[i], "--bed"))
+            a->bed = v;
         else
             return 0;
         ++i;
@@ -142,38 +205,19 @@ int main(int argc, char **argv)
     bench_args a;
     if (!parse(argc, argv, &a)) {
         fprintf(stderr, "usage: gf-bench-dem [--n N]... [--threads T]... [--steps S] [--settle T_nd] "
-                        "[--friction MU] [--lammps-data PATH]\n");
+                        "[--friction MU] [--lammps-data PATH] [--bed PREFIX]\n");
         return 2;
     }
     gf_ctx ctx = {0};
     for (int k = 0; k < a.n_n; ++k) {
-        gf_run_spec spec;
-        spec_for(&ctx, &spec, &a, a.n[k], a.settle_nd);
         gf_sim *sim = NULL;
-        double w0 = gf_wtime();
-        gf_sim_options opt = {.n_threads = 1};
-        if (gf_sim_create(&ctx, &spec, &opt, &sim) != GF_OK) {
-            fprintf(stderr, "gf-bench-dem: %s\n", ctx.last_msg);
-            return 1;
-        }
-        size_t nc;
-        double ov;
-        gf_sim_contact_stats(sim, &nc, &ov);
-        printf("N = %ld: settled in %.1f s wall (%.1f sqrt(D/g)); %zu contacts (%.2f per grain), max overlap %.4f D, "
-               "KE %.3g J\n",
-               a.n[k], gf_wtime() - w0, a.settle_nd, nc, 2.0 * nc / a.n[k], ov,
-               gf_particles_kinetic_energy(gf_sim_particles(sim)));
         char ck[256];
-        snprintf(ck, sizeof ck, "/tmp/gf_bench_dem_%d.h5", (int)getpid());
-        if (gf_sim_checkpoint(sim, ck) != GF_OK) {
-            fprintf(stderr, "gf-bench-dem: %s\n", ctx.last_msg);
+        if (a.bed)
+            snprintf(ck, sizeof ck, "%s_%ld.h5", a.bed, a.n[k]);
+        else
+            snprintf(ck, sizeof ck, "/tmp/gf_bench_dem_%d.h5", (int)getpid());
+        if ((!a.bed || access(ck, R_OK) != 0) && !settle_bed(&ctx, &a, a.n[k], ck))
             return 1;
-        }
-        if (a.lammps && k == a.n_n - 1 && !write_lammps(sim, a.lammps)) {
-            fprintf(stderr, "gf-bench-dem: cannot write %s\n", a.lammps);
-            return 1;
-        }
-        gf_sim_destroy(&sim);
         gf_run_spec again;
         spec_for(&ctx, &again, &a, a.n[k], 0.0); /* no second settling: the checkpoint holds the bed */
         double rate1 = 0.0;
@@ -181,6 +225,10 @@ int main(int argc, char **argv)
             gf_sim_options o = {.n_threads = a.threads[q], .restart_path = ck};
             if (gf_sim_create(&ctx, &again, &o, &sim) != GF_OK) {
                 fprintf(stderr, "gf-bench-dem: %s\n", ctx.last_msg);
+                return 1;
+            }
+            if (q == 0 && a.lammps && k == a.n_n - 1 && !write_lammps(sim, a.lammps)) {
+                fprintf(stderr, "gf-bench-dem: cannot write %s\n", a.lammps);
                 return 1;
             }
             const gf_timers *t = gf_sim_timers(sim);
@@ -199,13 +247,15 @@ int main(int argc, char **argv)
                    ti = t->elapsed_s[GF_T_INTEGRATE] - e0[GF_T_INTEGRATE];
             printf("N = %ld, %d thread(s): %ld steps in %.3f s wall, %.3f s CPU: %.3e particle-steps/s wall "
                    "(speed-up %.2f), %.3e per CPU-second; neighbour %.1f %%, force %.1f %%, integrate %.1f %%, "
-                   "other %.1f %%\n",
+                   "other %.1f %%; state hash %016llx\n",
                    a.n[k], a.threads[q], a.steps, wall, cpu, rate, rate / rate1, (double)a.n[k] * a.steps / cpu,
-                   100 * tn / wall, 100 * tf / wall, 100 * ti / wall, 100 * (wall - tn - tf - ti) / wall);
+                   100 * tn / wall, 100 * tf / wall, 100 * ti / wall, 100 * (wall - tn - tf - ti) / wall,
+                   state_hash(sim));
             fflush(stdout);
             gf_sim_destroy(&sim);
         }
-        remove(ck);
+        if (!a.bed)
+            remove(ck);
     }
     return 0;
 }
