@@ -11,10 +11,14 @@
  *
  *   gf-bench-dem [--n N]... [--threads T]... [--steps S] [--settle T_nd]
  *                [--lammps-data PATH] [--friction MU] [--bed PREFIX]
+ *                [--scene settled_bed|column_collapse]
  *
  * --lammps-data writes the settled bed of the LAST N as a LAMMPS data file
  * (atom_style sphere) plus PATH.params (k_n, gamma_n, k_t, mu, dt, box),
- * for workflows/bench/lammps_compare.sh. --bed keeps the settled bed as the
+ * for workflows/bench/lammps_compare.sh. --scene column_collapse times the
+ * dry collapse at a = 1 (R0 = 16 D, W = 3 D, rough base of glued grains, the
+ * bed's material) from its release instead: the grain count is the scene's
+ * (glued grains included), --n is ignored. --bed keeps the settled bed as the
  * checkpoint PREFIX_<N>.h5 and reuses it when it exists (settling 1e5 grains
  * costs far more than timing them; the same file also lets two builds be
  * timed on the same state).
@@ -44,13 +48,14 @@ typedef struct bench_args {
     long steps;
     double settle_nd, friction;
     const char *lammps;
+    int collapse; /* --scene column_collapse: the dry collapse at a = 1 instead of the bed */
     const char *bed; /* reuse (or keep) the settled bed: PATH_<N>.h5 */
 } bench_args;
 
 static void spec_for(gf_ctx *ctx, gf_run_spec *s, const bench_args *a, long n, double settle_nd)
 {
     gf_run_spec_defaults(s);
-    snprintf(s->scene, sizeof s->scene, "settled_bed");
+    snprintf(s->scene, sizeof s->scene, a->collapse ? "column_collapse" : "settled_bed");
     s->grains.diameter_m = 1e-3;
     s->grains.density_kg_m3 = 2500.0;
     s->grains.polydispersity = 0.1;
@@ -59,7 +64,13 @@ static void spec_for(gf_ctx *ctx, gf_run_spec *s, const bench_args *a, long n, d
     s->contact.wall_friction = a->friction;
     s->contact.t_contact_nd = 1e-2;
     s->contact.dt_over_tc = 0.02;
-    gf_run_spec_set_param(ctx, s, "n_grains", (double)n);
+    if (a->collapse) { /* R0 = 16 D, a = 1, W = 3 D, rough base (docs/benchmarks.md, sleeping grains) */
+        gf_run_spec_set_param(ctx, s, "aspect_ratio", 1.0);
+        gf_run_spec_set_param(ctx, s, "column_length_over_D", 16.0);
+        gf_run_spec_set_param(ctx, s, "width_over_D", 3.0);
+    } else {
+        gf_run_spec_set_param(ctx, s, "n_grains", (double)n);
+    }
     gf_run_spec_set_param(ctx, s, "settle_time_nd", settle_nd);
 }
 
@@ -157,7 +168,8 @@ static int settle_bed(gf_ctx *ctx, const bench_args *a, long n, const char *ck)
     gf_sim_contact_stats(sim, &nc, &ov);
     printf("N = %ld: settled in %.1f s wall (%.1f sqrt(D/g)); %zu contacts (%.2f per grain), max overlap %.4f D, "
            "KE %.3g J\n",
-           n, gf_wtime() - w0, a->settle_nd, nc, 2.0 * nc / n, ov, gf_particles_kinetic_energy(gf_sim_particles(sim)));
+           (long)gf_sim_particles(sim)->n_local, gf_wtime() - w0, a->settle_nd, nc,
+           2.0 * nc / (double)gf_sim_particles(sim)->n_local, ov, gf_particles_kinetic_energy(gf_sim_particles(sim)));
     gf_status st = gf_sim_checkpoint(sim, ck);
     if (st != GF_OK)
         fprintf(stderr, "gf-bench-dem: %s\n", ctx->last_msg);
@@ -189,6 +201,8 @@ static int parse(int argc, char **argv, bench_args *a)
             a->lammps = v;
         else if (!strcmp(argv[i], "--bed"))
             a->bed = v;
+        else if (!strcmp(argv[i], "--scene") && (!strcmp(v, "column_collapse") || !strcmp(v, "settled_bed")))
+            a->collapse = !strcmp(v, "column_collapse");
         else
             return 0;
         ++i;
@@ -205,7 +219,7 @@ int main(int argc, char **argv)
     bench_args a;
     if (!parse(argc, argv, &a)) {
         fprintf(stderr, "usage: gf-bench-dem [--n N]... [--threads T]... [--steps S] [--settle T_nd] "
-                        "[--friction MU] [--lammps-data PATH] [--bed PREFIX]\n");
+                        "[--friction MU] [--lammps-data PATH] [--bed PREFIX] [--scene settled_bed|column_collapse]\n");
         return 2;
     }
     gf_ctx ctx = {0};
@@ -213,7 +227,7 @@ int main(int argc, char **argv)
         gf_sim *sim = NULL;
         char ck[256];
         if (a.bed)
-            snprintf(ck, sizeof ck, "%s_%ld.h5", a.bed, a.n[k]);
+            snprintf(ck, sizeof ck, "%s_%s%ld.h5", a.bed, a.collapse ? "collapse_" : "", a.collapse ? 1L : a.n[k]);
         else
             snprintf(ck, sizeof ck, "/tmp/gf_bench_dem_%d.h5", (int)getpid());
         if ((!a.bed || access(ck, R_OK) != 0) && !settle_bed(&ctx, &a, a.n[k], ck))
@@ -240,7 +254,8 @@ int main(int argc, char **argv)
                 return 1;
             }
             double wall = gf_wtime() - t0, cpu = cpu_time_s() - c0;
-            double rate = (double)a.n[k] * a.steps / wall;
+            const long ng = (long)gf_sim_particles(sim)->n_local; /* the collapse sets its own count */
+            double rate = (double)ng * a.steps / wall;
             if (q == 0)
                 rate1 = rate;
             double tn = t->elapsed_s[GF_T_NEIGHBOUR] - e0[GF_T_NEIGHBOUR], tf = t->elapsed_s[GF_T_FORCE] - e0[GF_T_FORCE],
@@ -248,7 +263,7 @@ int main(int argc, char **argv)
             printf("N = %ld, %d thread(s): %ld steps in %.3f s wall, %.3f s CPU: %.3e particle-steps/s wall "
                    "(speed-up %.2f), %.3e per CPU-second; neighbour %.1f %%, force %.1f %%, integrate %.1f %%, "
                    "other %.1f %%; state hash %016llx\n",
-                   a.n[k], a.threads[q], a.steps, wall, cpu, rate, rate / rate1, (double)a.n[k] * a.steps / cpu,
+                   ng, a.threads[q], a.steps, wall, cpu, rate, rate / rate1, (double)ng * a.steps / cpu,
                    100 * tn / wall, 100 * tf / wall, 100 * ti / wall, 100 * (wall - tn - tf - ti) / wall,
                    state_hash(sim));
             fflush(stdout);
