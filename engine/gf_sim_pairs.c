@@ -61,8 +61,11 @@ typedef struct row_sums {
     double base[6], f[6];
 } row_sums;
 
-/* Pass 1, pairs [*pk, k1): appends up to GF_PAIR_BLOCK candidates. */
-static size_t scan(const gf_sim *s, size_t *pk, size_t k1, pair_block *b)
+/* Pass 1, pairs [*pk, k1): appends up to GF_PAIR_BLOCK candidates.
+ * flagged = 0: no grain the rows reach is glued or sleeping (the common
+ * case), so the flag tests are compiled out. */
+static inline __attribute__((always_inline)) size_t scan_impl(const gf_sim *s, size_t *pk, size_t k1, pair_block *b,
+                                                              const int flagged)
 {
     const gf_particles *p = s->p;
     const gf_nlist *nl = s->nl;
@@ -78,7 +81,7 @@ static size_t scan(const gf_sim *s, size_t *pk, size_t k1, pair_block *b)
         double dx = x[i] - x[j] + sh[0], dy = y[i] - y[j] + sh[1], dz = z[i] - z[j] + sh[2];
         double r2 = dx * dx + dy * dy + dz * dz, rsum = R[i] + R[j];
         int in = r2 < rsum * rsum;
-        const uint8_t fi = flags[i], fl = fi | flags[j];
+        const uint8_t fi = flagged ? flags[i] : 0, fl = flagged ? fi | flags[j] : 0;
         if (fl) { /* glued or sleeping: the generic loop's decisions */
             const uint8_t frozen = GF_P_GLUED | GF_P_SLEEPING;
             if ((fi & frozen) && (flags[j] & frozen) && (fl & GF_P_SLEEPING))
@@ -95,6 +98,16 @@ static size_t scan(const gf_sim *s, size_t *pk, size_t k1, pair_block *b)
     }
     *pk = k;
     return nc;
+}
+
+static size_t scan_plain(const gf_sim *s, size_t *pk, size_t k1, pair_block *b)
+{
+    return scan_impl(s, pk, k1, b, 0);
+}
+
+static size_t scan_flagged(const gf_sim *s, size_t *pk, size_t k1, pair_block *b)
+{
+    return scan_impl(s, pk, k1, b, 1);
 }
 
 /* Pass 2: the force of each candidate (gf_contact_linear_inline and
@@ -196,8 +209,11 @@ void gf_sim_pair_rows_dry_linear(gf_sim *s, size_t i0, size_t i1, double *const 
     pair_block b;
     row_sums rs = {.i = -1};
     size_t k = s->nl->row_start[i0], k1 = s->nl->row_start[i1];
+    uint8_t any = 0; /* the rows reach grains >= i0 only (j > i) */
+    for (size_t g = i0; g < s->nl->n; ++g)
+        any |= s->p->flags[g];
     while (k < k1) {
-        size_t nc = scan(s, &k, k1, &b);
+        size_t nc = any ? scan_flagged(s, &k, k1, &b) : scan_plain(s, &k, k1, &b);
         compute(s, &b, nc);
         scatter(s, &b, nc, f, &rs, acc);
     }
