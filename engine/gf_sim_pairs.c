@@ -35,7 +35,7 @@
  * selects: GCC vectorises the loop there and not for AVX2, which lacks
  * masked stores), chosen at load time. -ffp-contract=off (ISO C mode) keeps
  * both clones free of fused multiply-adds: they give the same bits. */
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__GLIBC__) /* ifunc */
 #define GF_PAIR_CLONES __attribute__((target_clones("arch=x86-64-v4", "default")))
 #else
 #define GF_PAIR_CLONES
