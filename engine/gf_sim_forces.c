@@ -380,12 +380,14 @@ gf_status gf_sim_compute_forces(gf_sim *s)
             a->max_overlap_m = 0.0;
             memset(a->wall_force_N, 0, sizeof a->wall_force_N);
             double *const *f = c == 0 ? store : a->f;
-            if (c > 0)
-                for (int q = 0; q < 6; ++q)
-                    memset(a->f[q], 0, n * sizeof(double));
             size_t i0 = s->nl->chunk_row[c], i1 = s->nl->chunk_row[c + 1];
+            if (c > 0) /* a chunk's rows i >= i0 only reach grains >= i0 (half list: j > i) */
+                for (int q = 0; q < 6; ++q)
+                    memset(a->f[q] + i0, 0, (n - i0) * sizeof(double));
             if (s->law->kernel == gf_contact_linear && (s->skips & GF_SKIP_TANGENTIAL))
                 pair_rows_linear_normal(s, i0, i1, f, a);
+            else if (s->law->kernel == gf_contact_linear && !s->lubrication)
+                gf_sim_pair_rows_dry_linear(s, i0, i1, f, a);
             else if (s->law->kernel == gf_contact_linear)
                 pair_rows_linear(s, i0, i1, f, a);
             else
@@ -398,7 +400,7 @@ gf_status gf_sim_compute_forces(gf_sim *s)
 #pragma omp for schedule(static)
 #endif
             for (size_t i = 0; i < n; ++i)
-                for (int u = 1; u < nc; ++u)
+                for (int u = 1; u < nc && s->nl->chunk_row[u] <= i; ++u)
                     for (int q = 0; q < 6; ++q)
                         store[q][i] += s->acc[u].f[q][i];
         }

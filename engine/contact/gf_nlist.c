@@ -20,7 +20,7 @@ void gf_nlist_destroy(gf_nlist **pnl)
     if (!pnl || !*pnl)
         return;
     gf_nlist *nl = *pnl;
-    free(nl->row_start), free(nl->j), free(nl->image), free(nl->hist), free(nl->touching);
+    free(nl->row_start), free(nl->i), free(nl->j), free(nl->image), free(nl->hist), free(nl->touching);
     free(nl->cell_start), free(nl->cell_grains), free(nl->grain_cell);
     free(nl->old_row_start), free(nl->old_j), free(nl->old_hist), free(nl->old_row_id), free(nl->row_id);
     free(nl->id_to_index);
@@ -182,15 +182,17 @@ static int neighbour_cells(const gf_nlist *nl, int cx, int cy, int cz, int out[2
     return m;
 }
 
-static gf_status push_pair(gf_ctx *ctx, gf_nlist *nl, int32_t j, uint8_t image)
+static gf_status push_pair(gf_ctx *ctx, gf_nlist *nl, int32_t i, int32_t j, uint8_t image)
 {
     if (nl->n_pairs == nl->cap_pairs) {
         size_t cap = nl->cap_pairs ? 2 * nl->cap_pairs : 1024;
-        if (!grow((void **)&nl->j, sizeof(int32_t), cap) || !grow((void **)&nl->image, 1, cap) ||
+        if (!grow((void **)&nl->i, sizeof(int32_t), cap) || !grow((void **)&nl->j, sizeof(int32_t), cap) ||
+            !grow((void **)&nl->image, 1, cap) ||
             !grow((void **)&nl->hist, 3 * sizeof(double), cap) || !grow((void **)&nl->touching, 1, cap))
             return GF_FAIL(ctx, GF_ERR_NOMEM, "nlist: cannot grow to %zu pairs", cap);
         nl->cap_pairs = cap;
     }
+    nl->i[nl->n_pairs] = i;
     nl->j[nl->n_pairs] = j;
     nl->image[nl->n_pairs] = image;
     memset(&nl->hist[3 * nl->n_pairs], 0, 3 * sizeof(double));
@@ -234,7 +236,7 @@ static gf_status fill_rows(gf_ctx *ctx, gf_nlist *nl, const gf_nlist_geom *g, si
                 min_image(nl, d, s);
                 double reach = r[i] + r[j] + g->extra_m + g->skin_m;
                 if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < reach * reach)
-                    GF_TRY(push_pair(ctx, nl, j, (uint8_t)((s[0] + 1) * 9 + (s[1] + 1) * 3 + (s[2] + 1))));
+                    GF_TRY(push_pair(ctx, nl, (int32_t)i, j, (uint8_t)((s[0] + 1) * 9 + (s[1] + 1) * 3 + (s[2] + 1))));
             }
     }
     nl->row_start[n] = nl->n_pairs;

@@ -34,6 +34,7 @@ typedef struct gf_nlist {
     size_t n;                /* grains the list was built for */
     size_t n_pairs, cap_pairs;
     size_t *row_start;       /* n + 1 */
+    int32_t *i;              /* row of each pair (lets the force loop run flat over pairs) */
     int32_t *j;              /* partner index */
     uint8_t *image;          /* index into shift_m */
     double *hist;            /* 3 per pair */
