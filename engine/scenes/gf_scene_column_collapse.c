@@ -166,10 +166,12 @@ static gf_status column_build(gf_sim *sim, const gf_run_spec *spec)
     double t_settle = gf_run_spec_param(spec, "settle_time_nd", 5.0) * sqrt(g.D / spec->gravity_m_s2);
     long steps = (long)ceil(t_settle / gf_run_spec_dt_s(spec));
     int locked = gf_run_spec_param(spec, "settle_rotation_locked", 0.0) > 0.5;
-    GF_TRY(gf_sim_set_rotation_locked(sim, locked));
+    if (locked)
+        GF_TRY(gf_sim_set_rotation_locked(sim, 1));
     if (steps > 0)
         GF_TRY(gf_sim_advance(sim, steps));
-    GF_TRY(gf_sim_set_rotation_locked(sim, 0)); /* free from t = 0 on (and on a restart) */
+    if (locked)
+        GF_TRY(gf_sim_set_rotation_locked(sim, 0)); /* free from t = 0 on (and on a restart) */
     gf_sim_reset_clock(sim);
     /* fluid: free-slip top, no-slip floor and walls (default), periodic z */
     GF_TRY(gf_sim_set_fluid_bc(sim, 1, 1, GF_BC_FREE_SLIP));
