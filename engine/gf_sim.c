@@ -136,6 +136,8 @@ gf_status gf_sim_set_wall_active(gf_sim *s, int w, int active)
 {
     if (w < 0 || w >= s->n_walls)
         return GF_FAIL(s->ctx, GF_ERR_ARG, "scene %s: no wall %d (have %d)", s->spec.scene, w, s->n_walls);
+    if (s->walls[w].active && !active)
+        gf_sim_sleep_wake_all(s); /* a removed gate or lid: what rested on it must move again */
     s->walls[w].active = active != 0;
     s->forces_valid = 0;
     return GF_OK;
@@ -168,6 +170,18 @@ gf_status gf_sim_set_fluid_bc(gf_sim *s, int axis, int side, int bc)
                        axis, side, bc);
     s->fluid_bc[axis][side] = bc;
     s->fluid_bc_set[axis][side] = 1;
+    return GF_OK;
+}
+
+gf_status gf_sim_set_rotation_locked(gf_sim *s, int locked)
+{
+    s->rotation_locked = locked != 0;
+    gf_particles *p = s->p;
+    if (s->rotation_locked)
+        for (size_t i = 0; i < p->n_local; ++i)
+            p->wx_rad_s[i] = p->wy_rad_s[i] = p->wz_rad_s[i] = 0.0;
+    s->need_build = 1; /* the integrator factors are refreshed at the next build */
+    s->forces_valid = 0;
     return GF_OK;
 }
 

@@ -94,6 +94,11 @@ gf_status gf_sim_add_gauge(gf_sim *sim, const char *name, const double x_m[3]);
 /* Fluid boundary condition of a box face (axis 0..2, side 0 = low, 1 = high);
  * the default is no-slip on non-periodic faces. Ignored by dry runs. */
 gf_status gf_sim_set_fluid_bc(gf_sim *sim, int axis, int side, int bc /* gf_fluid_bc */);
+/* Blocks (1) or frees (0) the rotation of every grain (infinite rolling
+ * resistance), for a preparation phase inside build that must keep a packing
+ * made with rotations blocked (gf_packing.h); locking also zeroes the spins.
+ * A scene frees the rotations again before build returns. */
+gf_status gf_sim_set_rotation_locked(gf_sim *sim, int locked);
 /* Resets the clock to 0 (after a preparation phase run inside build). */
 void gf_sim_reset_clock(gf_sim *sim);
 /* Particle and fluid state consistency check: positions inside the box,

@@ -102,6 +102,8 @@ gf_status gf_sim_rebuild_from_ref(gf_sim *s)
                           s->n_threads));
     /* flags (glued, sleeping) and masses are read here, at every build */
     gf_integrate_factors_fill(p, p->n_local, s->inv_mass, s->inv_inertia, s->mobile);
+    if (s->rotation_locked)
+        memset(s->inv_inertia, 0, p->n_local * sizeof *s->inv_inertia);
     for (size_t i = 0; i < p->n_local; ++i)
         s->contact_inv_mass[i] = (p->flags[i] & GF_P_GLUED) ? 0.0 : 1.0 / p->mass_kg[i];
     /* per-pair effective mass and damping scale sqrt(m* k_n): constant between

@@ -90,6 +90,7 @@ struct gf_sim {
     int lubrication;
     double lub_eta_Pa_s, lub_roughness_m, lub_cutoff_m;
     int in_build;
+    int rotation_locked;        /* gf_sim_set_rotation_locked: inverse inertias held at 0 */
     /* sleeping grains (gf_sim_sleep.c; only with contact.sleep_speed_nd > 0) */
     long *sleep_quiet_steps;    /* steps each grain has stayed below the sleep speed */
     size_t sleep_cap;
@@ -120,6 +121,9 @@ gf_status gf_sim_rebuild_from_ref(gf_sim *s);
  * when contact.sleep_speed_nd > 0. gf_sim_sleep.c. */
 #define GF_SLEEP_EVERY 10
 gf_status gf_sim_sleep_update(gf_sim *s);
+/* Wakes every sleeping grain and restarts the quiet counters (a wall was
+ * removed: grains asleep against it cannot see that their support left). */
+void gf_sim_sleep_wake_all(gf_sim *s);
 
 /* Skips (gf_sim_skips.c). Decided from the spec and the scene before build()
  * (gf_sim_decide_skips) and dropped when a scene adds what defeats one (a

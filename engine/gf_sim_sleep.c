@@ -59,8 +59,22 @@ static void set_factors(gf_sim *s, size_t i, int moves)
 {
     const gf_particles *p = s->p;
     s->inv_mass[i] = moves ? 1.0 / p->mass_kg[i] : 0.0;
-    s->inv_inertia[i] = moves ? 1.0 / p->inertia_kg_m2[i] : 0.0;
+    s->inv_inertia[i] = moves && !s->rotation_locked ? 1.0 / p->inertia_kg_m2[i] : 0.0;
     s->mobile[i] = moves ? 1.0 : 0.0;
+}
+
+void gf_sim_sleep_wake_all(gf_sim *s)
+{
+    gf_particles *p = s->p;
+    for (size_t i = 0; i < p->n_local; ++i)
+        if ((p->flags[i] & GF_P_SLEEPING) && !(p->flags[i] & GF_P_GLUED)) {
+            p->flags[i] &= (uint8_t)~GF_P_SLEEPING;
+            if (s->inv_mass && i < s->ref_cap)
+                set_factors(s, i, 1);
+            s->n_wake_events++;
+        }
+    if (s->sleep_quiet_steps)
+        memset(s->sleep_quiet_steps, 0, s->sleep_cap * sizeof *s->sleep_quiet_steps);
 }
 
 gf_status gf_sim_sleep_update(gf_sim *s)

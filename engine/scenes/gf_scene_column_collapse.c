@@ -12,8 +12,21 @@
  * centred on it at random (gf_packing_rough_base; Izard §5.2 "fixed grains
  * on the floor for roughness"). The
  * column is prepared at the requested Phi_i by gf_packing (deposition with a
- * tuned preparation friction, trimmed to H0), then re-equilibrated with the
- * run's own contacts and gravity for settle_time_nd, and the clock is reset.
+ * tuned preparation friction and rotations blocked, trimmed to H0), then
+ * re-equilibrated with the run's own contacts and gravity for settle_time_nd,
+ * dry, and the clock is reset. With settle_rotation_locked = 1 (the immersed
+ * dense/loose comparison, configs/column_collapse_immersed.yaml) the
+ * rotations stay blocked during that re-equilibration and are free from
+ * t = 0; with 0 (default, the dry runs) they are free throughout. With free rotations the
+ * re-equilibration would undo a loose preparation: at the run's mu_c = 0.25
+ * (Izard §5.2) rolling grains hold no packing looser than ~0.59 (measured:
+ * 0.563 prepared for a 0.56 request became 0.588 in 5 sqrt(D/g); free-rolling
+ * deposits stay above ~0.59 even at mu = 1, gf_packing.h). A column looser
+ * than that is therefore metastable from t = 0 and contracts once its grains
+ * may roll, as a loose column does once disturbed (Rondon et al. 2011: the
+ * contraction expels pore fluid, positive basal excess pressure);
+ * validate_collapse's mode "held" measures how far it contracts behind a
+ * closed gate.
  *
  * The domain length follows the published run-out laws with a 30 % margin:
  *     (R_inf - R0)/R0 = lambda1 a (a small),  lambda2 a^(2/3) (a large),
@@ -56,6 +69,8 @@ static const gf_param_info column_params[] = {
     {"phi_target", "1", 0.60, 0.50, 0.645, "requested interior Phi_i (the campaign's phi_initial wins when set)"},
     {"domain_length_over_R0", "1", 0.0, 0.0, 100.0, "domain length / R0; 0: from the published run-out law"},
     {"settle_time_nd", "1", 5.0, 0.0, 1e4, "re-equilibration with the run's contacts before t = 0, sqrt(D/g)"},
+    {"settle_rotation_locked", "1", 0.0, 0.0, 1.0,
+     "1: rotations blocked during the re-equilibration, as in the preparation (keeps loose packings); 0: free"},
     {"rest_energy", "1", 1e-4, 0.0, 1.0, "done() when kinetic energy per grain < rest_energy m g D"},
 };
 
@@ -150,8 +165,13 @@ static gf_status column_build(gf_sim *sim, const gf_run_spec *spec)
     /* re-equilibrate with the run's contacts behind the closed gate */
     double t_settle = gf_run_spec_param(spec, "settle_time_nd", 5.0) * sqrt(g.D / spec->gravity_m_s2);
     long steps = (long)ceil(t_settle / gf_run_spec_dt_s(spec));
+    int locked = gf_run_spec_param(spec, "settle_rotation_locked", 0.0) > 0.5;
+    if (locked)
+        GF_TRY(gf_sim_set_rotation_locked(sim, 1));
     if (steps > 0)
         GF_TRY(gf_sim_advance(sim, steps));
+    if (locked)
+        GF_TRY(gf_sim_set_rotation_locked(sim, 0)); /* free from t = 0 on (and on a restart) */
     gf_sim_reset_clock(sim);
     /* fluid: free-slip top, no-slip floor and walls (default), periodic z */
     GF_TRY(gf_sim_set_fluid_bc(sim, 1, 1, GF_BC_FREE_SLIP));

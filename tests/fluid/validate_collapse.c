@@ -1,23 +1,38 @@
 /*
  * Immersed column collapse, dense vs loose (Rondon, Pouliquen & Aussillous,
- * PoF 23, 2011; Izard 2014 ch. 5, spec §7 and §8 rows 35-41), through the full
- * step loop with the unresolved tier. Not a ctest test (minutes): run by
- * tests/fluid/validate_fluid.sh, which writes docs/validation.md.
+ * PoF 23, 2011; Izard 2014 ch. 5, spec §7 and §8 rows 35-42), through the full
+ * step loop with the unresolved tier. Run by tests/fluid/validate_fluid.sh,
+ * which writes docs/validation.md; mode "check" is the ctest test
+ * collapse_dense_loose (labels slow, open).
  *
  * Set-up: the column_collapse scene at a = 0.5, R0 = 16 D, W = 3 D, the seed's
  * fluid and grains (D = 7.6 mm, rho_p/rho_f = 8, eta_f = 1 Pa s: Ar ~ 30,
  * viscous regime). Prints one summary line per run:
- *   phi_i, start time (front past R0 + D/2) in T_visq, run-out R_inf/R0,
- *   H_inf/R0, deposit type (trapezoid when the back keeps >= 90 % of H0),
- *   basal excess pore pressure at x = 13/16 R0: extremum (Pa and / drho g H0)
- *   and its time, E_cx^max / (m g D), wall time split fluid / DEM.
- * Usage: validate_collapse PHI [END_T_VISQ] [LUBRICATION 0|1] [MODE]
- * MODE "dry": the same scene with fluid.model = none; "thin": the unresolved
- * tier with a fluid of negligible density and viscosity (rho_f = 1e-3 kg/m3,
- * eta_f = 1e-7 Pa s). Both run for END_T_VISQ x T_visq of the viscous case
- * and must give the same run-out within 5 % (issue #4's dry limit).
+ *   phi_i (interior and solid volume / R0 H0 W), start time (front past
+ *   R0 + D/2) and half time (front past R0 + (R_inf - R0)/2) in T_visq,
+ *   run-out R_inf/R0, H_inf/R0, deposit type (trapezoid when the back keeps
+ *   >= 90 % of H0), basal excess pore pressure at x = 13/16 R0 (the seed's
+ *   x = 13 D): dominant extremum (Pa and / drho g H0) and its time, the two
+ *   gauges under the column, E_cx^max / (m g D), the largest grain Reynolds
+ *   number |v| D rho_f / eta_f (spec row 42 bounds the slip Re by 2.5; the
+ *   grain speed bounds the slip), wall time split fluid / DEM.
+ * Usage: validate_collapse PHI [END_T_VISQ] [LUBRICATION 0|1] [MODE] [KEY=VALUE...]
+ * KEY=VALUE sets a scene parameter, fluid.cell_over_D as cell_over_D=X, the
+ * random seed as seed=N.
+ * MODE "viscous" (default); "held": the gate is put back after start(), to
+ * measure how far the column compacts by itself in the fluid (interior Phi at
+ * the end is printed); "dry": fluid.model = none; "thin": the unresolved tier
+ * with a fluid of negligible density and viscosity (rho_f = 1e-3 kg/m3,
+ * eta_f = 1e-7 Pa s). dry and thin run for END_T_VISQ x T_visq of the viscous
+ * case and must give the same run-out within 5 % (issue #4's dry limit).
  * "dry_perturbed": the dry run with g changed by 1e-7, to measure how far a
  * perturbation of that size moves the run-out (granular collapses amplify it).
+ * "check" (PHI is the dense value, the loose one is 0.55): runs both (their
+ * series one after the other, then the two summaries "dense" and "loose") and
+ * asserts the issue's criteria with the spec §8 tolerances (rows 39-41):
+ * P_b at 13/16 R0 negative for dense and positive for loose, the dense column
+ * lags the loose one by 1000 T_visq +-50 %, loose run-out +5 to +15 %, dense
+ * deposit a trapezoid and loose a triangle. Exit status 1 when one fails.
  */
 #include <math.h>
 #include <stdio.h>
@@ -29,36 +44,143 @@
 #include "gf_sim_internal.h" /* the coupling handle, for the gauge reading */
 #include "scenes/gf_scene.h"
 
-int main(int argc, char **argv)
+enum { N_GAUGE = 3, MAX_REC = 4096, WALL_GATE = 2 };
+static const double GAUGE_X[N_GAUGE] = {13.0 / 16.0, 8.0 / 16.0, 4.0 / 16.0}; /* x / R0 */
+static const double D = 7.6e-3, RHO_P = 8000, RHO_F = 1000, ETA = 1.0, G = 9.81;
+
+typedef struct collapse_run {
+    double phi_l, phi_m, phi_end, t_start, t_half, runout, h_inf, h_back;
+    double pb_min[N_GAUGE], pb_max[N_GAUGE], t_min[N_GAUGE], t_max[N_GAUGE];
+    double ecx_max, re_max, wall, t_build, t_fluid, t_coupling, t_dem;
+    long steps;
+    int substeps;
+    size_t n_grains;
+} collapse_run;
+
+typedef struct run_args {
+    double phi, end_tv;
+    int lub;
+    const char *mode;
+    int argc;          /* KEY=VALUE arguments */
+    char **argv;
+} run_args;
+
+static double t_visq_s(void) { return ETA / ((RHO_P - RHO_F) * G * 8.0 * D); } /* H0 = 8 D */
+
+static int apply_keys(gf_ctx *ctx, gf_run_spec *spec, int argc, char **argv)
 {
-    double phi = argc > 1 ? atof(argv[1]) : 0.6;
-    double end_tv = argc > 2 ? atof(argv[2]) : 1.2e4;
-    int lub = argc > 3 ? atoi(argv[3]) : 0;
-    const char *mode = argc > 4 ? argv[4] : "viscous";
-    gf_ctx ctx = {0};
-    gf_run_spec spec;
-    gf_run_spec_defaults(&spec);
-    snprintf(spec.scene, sizeof spec.scene, "column_collapse");
-    double D = 7.6e-3, rp = 8000, rf = 1000, eta = 1.0, g = 9.81;
-    spec.grains.density_kg_m3 = rp;
-    spec.grains.diameter_m = D;
-    snprintf(spec.fluid.model, sizeof spec.fluid.model, "unresolved");
-    spec.fluid.density_kg_m3 = rf;
-    spec.fluid.viscosity_Pa_s = eta;
-    spec.fluid.lubrication = lub;
-    if (strcmp(mode, "dry") == 0 || strcmp(mode, "dry_perturbed") == 0) {
-        if (mode[3] == '_')  /* chaos check: the dry run with g changed by 1e-7 */
-            spec.gravity_m_s2 *= 1.0 + 1e-7;
-        snprintf(spec.fluid.model, sizeof spec.fluid.model, "none");
-        spec.fluid.density_kg_m3 = spec.fluid.viscosity_Pa_s = 0.0;
-    } else if (strcmp(mode, "thin") == 0) {
-        spec.fluid.density_kg_m3 = 1e-3;
-        spec.fluid.viscosity_Pa_s = 1e-7;
+    for (int a = 0; a < argc; ++a) {
+        const char *eq = strchr(argv[a], '=');
+        char key[64];
+        if (!eq || eq - argv[a] >= (long)sizeof key) {
+            fprintf(stderr, "validate_collapse: expected KEY=VALUE, got '%s'\n", argv[a]);
+            return 1;
+        }
+        snprintf(key, sizeof key, "%.*s", (int)(eq - argv[a]), argv[a]);
+        if (strcmp(key, "cell_over_D") == 0)
+            spec->fluid.cell_over_D = atof(eq + 1);
+        else if (strcmp(key, "seed") == 0)
+            spec->seed = (uint64_t)strtoull(eq + 1, NULL, 10);
+        else if (gf_run_spec_set_param(ctx, spec, key, atof(eq + 1)) != GF_OK) {
+            fprintf(stderr, "validate_collapse: %s\n", ctx->last_msg);
+            return 1;
+        }
     }
-    spec.phi_initial = phi;
-    spec.aspect_ratio_a = 0.5;
-    double R0 = 16 * D, H0 = 0.5 * R0;
-    double t_visq = eta / ((rp - rf) * g * H0);
+    return 0;
+}
+
+static int make_spec(gf_ctx *ctx, const run_args *a, gf_run_spec *spec)
+{
+    gf_run_spec_defaults(spec);
+    snprintf(spec->scene, sizeof spec->scene, "column_collapse");
+    spec->grains.density_kg_m3 = RHO_P;
+    spec->grains.diameter_m = D;
+    snprintf(spec->fluid.model, sizeof spec->fluid.model, "unresolved");
+    spec->fluid.density_kg_m3 = RHO_F;
+    spec->fluid.viscosity_Pa_s = ETA;
+    spec->fluid.lubrication = a->lub;
+    if (strcmp(a->mode, "dry") == 0 || strcmp(a->mode, "dry_perturbed") == 0) {
+        if (a->mode[3] == '_') /* chaos check: the dry run with g changed by 1e-7 */
+            spec->gravity_m_s2 *= 1.0 + 1e-7;
+        snprintf(spec->fluid.model, sizeof spec->fluid.model, "none");
+        spec->fluid.density_kg_m3 = spec->fluid.viscosity_Pa_s = 0.0;
+    } else if (strcmp(a->mode, "thin") == 0) {
+        spec->fluid.density_kg_m3 = 1e-3;
+        spec->fluid.viscosity_Pa_s = 1e-7;
+    }
+    spec->phi_initial = a->phi;
+    spec->aspect_ratio_a = 0.5;
+    /* the preparation's blocked rotations are kept until t = 0, so a loose column stays loose (scene notes) */
+    if (gf_run_spec_set_param(ctx, spec, "settle_rotation_locked", 1.0) != GF_OK)
+        return 1;
+    return apply_keys(ctx, spec, a->argc, a->argv);
+}
+
+static double mean_mobile_mass(const gf_particles *p, size_t *n_mob)
+{
+    double m = 0.0;
+    *n_mob = 0;
+    for (size_t i = 0; i < p->n_local; ++i)
+        if (!(p->flags[i] & GF_P_GLUED))
+            m += p->mass_kg[i], ++*n_mob;
+    return m / (double)*n_mob;
+}
+
+/* E_cx per grain (spec §7.4) and the largest grain Reynolds number |v| D rho_f / eta_f. */
+static void kinetics(const gf_particles *p, size_t n_mob, double *ecx, double *re)
+{
+    double e = 0.0, v2 = 0.0;
+    for (size_t i = 0; i < p->n_local; ++i)
+        if (!(p->flags[i] & GF_P_GLUED)) {
+            e += 0.5 * p->mass_kg[i] * p->vx_m_s[i] * p->vx_m_s[i];
+            v2 = fmax(v2, p->vx_m_s[i] * p->vx_m_s[i] + p->vy_m_s[i] * p->vy_m_s[i] + p->vz_m_s[i] * p->vz_m_s[i]);
+        }
+    *ecx = e / (double)n_mob;
+    *re = sqrt(v2) * D * RHO_F / ETA;
+}
+
+static void record_gauges(gf_sim *sim, double R0, double t, collapse_run *r, double pb[N_GAUGE])
+{
+    for (int k = 0; k < N_GAUGE; ++k) {
+        double xg[3] = {GAUGE_X[k] * R0, 0.0, 1.5 * D};
+        pb[k] = sim->coupling ? gf_coupling_excess_pressure_Pa(sim->coupling, xg) : 0.0;
+        if (pb[k] < r->pb_min[k])
+            r->pb_min[k] = pb[k], r->t_min[k] = t;
+        if (pb[k] > r->pb_max[k])
+            r->pb_max[k] = pb[k], r->t_max[k] = t;
+    }
+}
+
+/* Half time: first record where the front passed R0 + (R_inf - R0)/2. */
+static double half_time(const double *t, const double *front, int n, double R0, double runout)
+{
+    double target = R0 + 0.5 * (runout - R0);
+    for (int k = 0; k < n; ++k)
+        if (front[k] >= target && runout > R0)
+            return t[k];
+    return NAN;
+}
+
+static double back_height(const gf_particles *p)
+{
+    double h = 0.0;
+    for (size_t i = 0; i < p->n_local; ++i)
+        if (!(p->flags[i] & GF_P_GLUED) && p->x_m[i] < 2 * D && p->y_m[i] + p->radius_m[i] > h)
+            h = p->y_m[i] + p->radius_m[i];
+    return h;
+}
+
+/* One collapse; prints the series every 500 T_visq when verbose. Returns 0 on success. */
+static int run_collapse(const run_args *a, int verbose, collapse_run *r)
+{
+    gf_ctx ctx = {0};
+    if (getenv("GF_LOG"))
+        ctx.log_level = GF_LOG_INFO;
+    gf_run_spec spec;
+    if (make_spec(&ctx, a, &spec))
+        return 1;
+    memset(r, 0, sizeof *r);
+    double R0 = 16 * D, t_visq = t_visq_s(), scale = (RHO_P - RHO_F) * G * 8.0 * D;
     gf_sim_options opt = {0};
     gf_sim *sim = NULL;
     double t0 = gf_wtime();
@@ -66,76 +188,134 @@ int main(int argc, char **argv)
         fprintf(stderr, "validate_collapse: %s\n", ctx.last_msg);
         return 1;
     }
-    double t_build = gf_wtime() - t0;
+    r->t_build = gf_wtime() - t0;
+    int held = strcmp(a->mode, "held") == 0;
+    if (held && gf_sim_set_wall_active(sim, WALL_GATE, 1) != GF_OK) {
+        fprintf(stderr, "validate_collapse: %s\n", ctx.last_msg);
+        return 1;
+    }
     const gf_scene_desc *sc = gf_scene_find("column_collapse");
-    double phm = NAN, phl = NAN;
-    if (sc->initial_packing)
-        sc->initial_packing(sim, &phm, &phl);
+    sc->initial_packing(sim, &r->phi_m, &r->phi_l);
     gf_particles *p = gf_sim_particles(sim);
-    double xg[3] = {13.0 / 16.0 * R0, 0.0, 1.5 * D}, xg8[3] = {0.5 * R0, 0.0, 1.5 * D}, xg4[3] = {0.25 * R0, 0.0, 1.5 * D};
-    double pb8_min = 0, pb8_max = 0, pb4_min = 0, pb4_max = 0;
-    double t_end = end_tv * t_visq, dt = gf_sim_dt_s(sim);
+    double m_mean = mean_mobile_mass(p, &r->n_grains), v[3], pb[N_GAUGE];
+    double t_end = a->end_tv * t_visq, dt = gf_sim_dt_s(sim);
     long n_chunk = (long)ceil(50.0 * t_visq / dt);
-    double t_start = NAN, pb_min = 0, pb_max = 0, t_pbmin = 0, t_pbmax = 0, ecx_max = 0, m_mean = 0;
-    size_t n_mob = 0;
-    for (size_t i = 0; i < p->n_local; ++i)
-        if (!(p->flags[i] & GF_P_GLUED))
-            m_mean += p->mass_kg[i], ++n_mob;
-    m_mean /= (double)n_mob;
-    double v[3];
+    static double t_rec[MAX_REC], f_rec[MAX_REC];
+    int n_rec = 0;
+    r->t_start = NAN;
     t0 = gf_wtime();
-    printf("# t/T_visq  front/R0  Pb/(drho g H0) at x = 13/16 R0, 8/16 R0, 4/16 R0\n");
-    int k = 0;
-    while (gf_sim_time_s(sim) < t_end) {
+    if (verbose)
+        printf("# t/T_visq  front/R0  Pb/(drho g H0) at x = 13/16 R0, 8/16 R0, 4/16 R0\n");
+    for (int k = 0; gf_sim_time_s(sim) < t_end; ++k) {
         if (gf_sim_advance(sim, n_chunk) != GF_OK) {
             fprintf(stderr, "validate_collapse: %s\n", ctx.last_msg);
+            gf_sim_destroy(&sim);
             return 1;
         }
-        double t = gf_sim_time_s(sim);
+        double t = gf_sim_time_s(sim), ecx, re;
         sc->diagnose(sim, v);
-        double pb = sim->coupling ? gf_coupling_excess_pressure_Pa(sim->coupling, xg) : 0.0;
-        double pb8 = sim->coupling ? gf_coupling_excess_pressure_Pa(sim->coupling, xg8) : 0.0;
-        double pb4 = sim->coupling ? gf_coupling_excess_pressure_Pa(sim->coupling, xg4) : 0.0;
-        pb8_min = fmin(pb8_min, pb8), pb8_max = fmax(pb8_max, pb8);
-        pb4_min = fmin(pb4_min, pb4), pb4_max = fmax(pb4_max, pb4);
-        if (pb < pb_min)
-            pb_min = pb, t_pbmin = t;
-        if (pb > pb_max)
-            pb_max = pb, t_pbmax = t;
-        if (isnan(t_start) && v[0] > R0 + 0.5 * D)
-            t_start = t;
-        double ecx = 0.0;
-        for (size_t i = 0; i < p->n_local; ++i)
-            if (!(p->flags[i] & GF_P_GLUED))
-                ecx += 0.5 * p->mass_kg[i] * p->vx_m_s[i] * p->vx_m_s[i];
-        ecx /= (double)n_mob;
-        if (ecx > ecx_max)
-            ecx_max = ecx;
-        if (k++ % 10 == 0)
-            printf("%8.0f %7.3f %+8.4f %+8.4f %+8.4f\n", t / t_visq, v[0] / R0, pb / ((rp - rf) * g * H0),
-                   pb8 / ((rp - rf) * g * H0), pb4 / ((rp - rf) * g * H0));
+        record_gauges(sim, R0, t, r, pb);
+        if (isnan(r->t_start) && v[0] > R0 + 0.5 * D)
+            r->t_start = t;
+        if (n_rec < MAX_REC)
+            t_rec[n_rec] = t, f_rec[n_rec++] = v[0];
+        kinetics(p, r->n_grains, &ecx, &re);
+        r->ecx_max = fmax(r->ecx_max, ecx);
+        r->re_max = fmax(r->re_max, re);
+        if (verbose && k % 10 == 0)
+            printf("%8.0f %7.3f %+8.4f %+8.4f %+8.4f\n", t / t_visq, v[0] / R0, pb[0] / scale, pb[1] / scale,
+                   pb[2] / scale);
     }
-    double wall = gf_wtime() - t0;
+    r->wall = gf_wtime() - t0;
     sc->diagnose(sim, v);
-    double h_back = 0.0;
-    for (size_t i = 0; i < p->n_local; ++i)
-        if (!(p->flags[i] & GF_P_GLUED) && p->x_m[i] < 2 * D && p->y_m[i] + p->radius_m[i] > h_back)
-            h_back = p->y_m[i] + p->radius_m[i];
+    r->runout = v[0] / R0, r->h_inf = v[1] / R0, r->phi_end = v[2];
+    r->t_half = half_time(t_rec, f_rec, n_rec, R0, v[0]) / t_visq;
+    r->t_start /= t_visq;
+    r->h_back = back_height(p) / (8.0 * D);
+    for (int k = 0; k < N_GAUGE; ++k) {
+        r->pb_min[k] /= scale, r->pb_max[k] /= scale;
+        r->t_min[k] /= t_visq, r->t_max[k] /= t_visq;
+    }
+    r->ecx_max /= m_mean * G * D;
     const gf_timers *tm = gf_sim_timers(sim);
-    double scale = (rp - rf) * g * H0;
-    int dense_sign = fabs(pb_min) > fabs(pb_max) ? -1 : +1;
-    printf("SUMMARY [%s] phi_i %.3f (requested %.2f, solid volume/R0 H0 W %.3f) | start %.0f T_visq | R_inf/R0 %.2f | "
-           "H_inf/R0 %.3f | back height/H0 %.2f -> %s | Pb extremum %+.0f Pa = %+.3f drho g H0 at %.0f T_visq "
-           "(min %+.3f at %.0f, max %+.3f at %.0f) | Pb at 8/16 R0 min %+.3f max %+.3f, at 4/16 R0 min %+.3f max %+.3f | Ecx_max/(mgD) %.4f | grains %zu | wall %.0f s (build %.0f s): "
-           "fluid %.1f s, coupling %.1f s, DEM %.1f s, %ld DEM steps, %d per fluid step\n",
-           mode, phl, phi, phm, t_start / t_visq, v[0] / R0, v[1] / R0, h_back / H0,
-           h_back > 0.9 * H0 ? "trapezoid" : "triangle", dense_sign < 0 ? pb_min : pb_max,
-           (dense_sign < 0 ? pb_min : pb_max) / scale, (dense_sign < 0 ? t_pbmin : t_pbmax) / t_visq,
-           pb_min / scale, t_pbmin / t_visq, pb_max / scale, t_pbmax / t_visq, pb8_min / scale, pb8_max / scale,
-           pb4_min / scale, pb4_max / scale, ecx_max / (m_mean * g * D), n_mob,
-           wall, t_build, tm->elapsed_s[GF_T_FLUID], tm->elapsed_s[GF_T_COUPLING],
-           tm->elapsed_s[GF_T_FORCE] + tm->elapsed_s[GF_T_NEIGHBOUR] + tm->elapsed_s[GF_T_INTEGRATE],
-           gf_sim_step_count(sim), sim->n_substeps);
+    r->t_fluid = tm->elapsed_s[GF_T_FLUID], r->t_coupling = tm->elapsed_s[GF_T_COUPLING];
+    r->t_dem = tm->elapsed_s[GF_T_FORCE] + tm->elapsed_s[GF_T_NEIGHBOUR] + tm->elapsed_s[GF_T_INTEGRATE];
+    r->steps = gf_sim_step_count(sim), r->substeps = sim->n_substeps;
     gf_sim_destroy(&sim);
     return 0;
+}
+
+/* The dominant basal extremum of gauge k: the larger in magnitude of min and max. */
+static double pb_dominant(const collapse_run *r, int k, double *t)
+{
+    int neg = fabs(r->pb_min[k]) > fabs(r->pb_max[k]);
+    if (t)
+        *t = neg ? r->t_min[k] : r->t_max[k];
+    return neg ? r->pb_min[k] : r->pb_max[k];
+}
+
+static void print_summary(const char *mode, double phi_req, const collapse_run *r)
+{
+    double scale = (RHO_P - RHO_F) * G * 8.0 * D, tpb;
+    double pb = pb_dominant(r, 0, &tpb);
+    printf("SUMMARY [%s] phi_i %.3f (requested %.2f, solid volume/R0 H0 W %.3f; interior at the end %.3f) | "
+           "start %.0f T_visq (half run-out at %.0f) | R_inf/R0 %.2f | H_inf/R0 %.3f | back height/H0 %.2f -> %s | "
+           "Pb extremum %+.0f Pa = %+.3f drho g H0 at %.0f T_visq (min %+.3f at %.0f, max %+.3f at %.0f) | "
+           "Pb at 8/16 R0 min %+.3f max %+.3f, at 4/16 R0 min %+.3f max %+.3f | Ecx_max/(mgD) %.4f | "
+           "max grain Re %.2f | grains %zu | wall %.0f s (build %.0f s): fluid %.1f s, coupling %.1f s, DEM %.1f s, "
+           "%ld DEM steps, %d per fluid step\n",
+           mode, r->phi_l, phi_req, r->phi_m, r->phi_end, r->t_start, r->t_half, r->runout, r->h_inf, r->h_back,
+           r->h_back > 0.9 ? "trapezoid" : "triangle", pb * scale, pb, tpb, r->pb_min[0], r->t_min[0],
+           r->pb_max[0], r->t_max[0], r->pb_min[1], r->pb_max[1], r->pb_min[2], r->pb_max[2], r->ecx_max,
+           r->re_max, r->n_grains, r->wall, r->t_build, r->t_fluid, r->t_coupling, r->t_dem, r->steps, r->substeps);
+}
+
+static int verdict(const char *what, int ok, const char *fmt, double a, double b)
+{
+    printf("%s %s: ", ok ? "PASS" : "FAIL", what);
+    printf(fmt, a, b);
+    printf("\n");
+    return ok ? 0 : 1;
+}
+
+/* The issue's criteria with the spec §8 tolerances (rows 39-41). */
+static int check_pair(const collapse_run *d, const collapse_run *l)
+{
+    int fails = 0;
+    double pd = pb_dominant(d, 0, NULL), pl = pb_dominant(l, 0, NULL);
+    fails += verdict("P_b sign at 13/16 R0 (row 41: dense < 0, loose > 0)", pd < 0.0 && pl > 0.0,
+                     "dense %+.3f, loose %+.3f drho g H0", pd, pl);
+    double lag = d->t_start - l->t_start;
+    fails += verdict("dense lags loose (row 40: 1000 T_visq +-50 %)", lag >= 500.0 && lag <= 1500.0,
+                     "start lag %.0f T_visq (half run-out lag %.0f)", lag, d->t_half - l->t_half);
+    double gain = l->runout / d->runout - 1.0;
+    fails += verdict("loose runs out farther (row 40: +5 to +15 %)", gain >= 0.05 && gain <= 0.15,
+                     "loose/dense - 1 = %+.3f (R_inf/R0 dense %.2f)", gain, d->runout);
+    fails += verdict("deposits (row 39: dense trapezoid, loose triangle)", d->h_back > 0.9 && l->h_back <= 0.9,
+                     "back height/H0 dense %.2f, loose %.2f", d->h_back, l->h_back);
+    return fails;
+}
+
+int main(int argc, char **argv)
+{
+    run_args a = {argc > 1 ? atof(argv[1]) : 0.6, argc > 2 ? atof(argv[2]) : 1.2e4, argc > 3 ? atoi(argv[3]) : 0,
+                  argc > 4 ? argv[4] : "viscous", argc > 5 ? argc - 5 : 0, argv + 5};
+    collapse_run r;
+    if (strcmp(a.mode, "check") != 0) {
+        if (run_collapse(&a, 1, &r))
+            return 1;
+        print_summary(a.mode, a.phi, &r);
+        return 0;
+    }
+    collapse_run loose;
+    run_args al = a;
+    a.mode = al.mode = "viscous";
+    al.phi = 0.55;
+    if (run_collapse(&a, 1, &r) || run_collapse(&al, 1, &loose))
+        return 1;
+    print_summary("dense", a.phi, &r);
+    print_summary("loose", al.phi, &loose);
+    int fails = check_pair(&r, &loose);
+    printf("%s: %d of 4 criteria failed\n", fails ? "FAILED" : "passed", fails);
+    return fails ? 1 : 0;
 }
