@@ -224,6 +224,10 @@ cat <<'TXT'
 
 ## Notes and known limits
 
+- The dense viscous avalanche of the fast tier (regime map, docs/postprocessing.md) creeps
+  about 10x slower than mu(I_v) predicts; measurements and what was ruled out:
+  docs/validation-avalanche.md.
+
 - Column collapse geometry: at cells of 2 D the column (16 D x 8 D) spans 8 x 4 cells and
   the kernel (sigma = 2 D) smooths the pressure over +-4 D, so the gauge at 13/16 R0 also
   sees the front's over-pressure; the gauges at 8/16 and 4/16 R0 read the column interior.
