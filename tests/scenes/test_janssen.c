@@ -33,6 +33,9 @@
  * 0.18-0.28 across floor drops 0.05-0.6 D and packing seeds 1, 7, 31 (no
  * trend with the drop: the scatter of a 6 D section dominates); the profile
  * turns from hydrostatic to flat over ~4 D, sharper than the exponential.
+ * At the seed's t_c = 1e-4 s: f_p 0.253, K 0.893, f_p K 0.226 (local). The
+ * seed's plateau is P_G = tr/3 = sigma_v (1 + 2K)/3 under Janssen's
+ * redirection; (2.13) with it is printed beside the vertical-stress value.
  * GF_TEST_TC, GF_TEST_DROP (floor_drop_over_D) and GF_TEST_SEED override the
  * set-up (exploration).
  */
@@ -127,13 +130,18 @@ int main(int argc, char **argv)
     s_low /= n_low, d_low /= n_low;
     fp /= kk, kk /= perim * D * sk;
     double loc = fp * kk;
+    /* the seed's plateau is the mean pressure P_G = tr(sigma^p)/3; with Janssen's redirection
+     * (horizontal = K vertical) P_G = sigma_v (1 + 2K)/3, and (2.13) with it reads */
+    double fpk_inv_pg = rho_e * g * A / (s_inf * (1.0 + 2.0 * kk) / 3.0 * perim);
     printf("Janssen %.0f D x %.0f D: %zu grains, C_tot %.4f (of the free box), interior Phi %.4f, top %.2f D, "
            "effective side %.2f D, rho_e %.1f kg/m3\n",
            side, fill, p->n_local, c_tot, phi_int, top / D, side_eff / D, rho_e);
     printf("  fit: sigma_inf = %.1f Pa (rho_e g lambda = %.1f Pa), lambda = %.2f D, f_p K = %.3f "
            "(with the free box side: %.3f), rms %.1f Pa\n",
            s_inf, rho_e * g * lambda, lambda / D, fpk, S / (4.0 * lambda), rms);
-    printf("  inverse (2.13), rho_e g S / (P_inf P_m) with the fitted plateau: f_p K = %.3f\n", fpk_inv);
+    printf("  inverse (2.13), rho_e g S / (P_inf P_m) with the fitted plateau: f_p K = %.3f (vertical stress), "
+           "%.3f (P_G = sigma_v (1 + 2K)/3, the seed's pressure)\n",
+           fpk_inv, fpk_inv_pg);
     printf("  local (2.14)-(2.15), lower half: f_p = wall shear / normal = %.3f (mu_c %.2f), K = wall normal / "
            "vertical = %.3f, f_p K = %.3f; seed 0.30 +- 0.06\n",
            fp, spec.contact.friction, kk, loc);
