@@ -204,8 +204,9 @@ static void test_unsteady_40deg(void)
     flow_close(&f);
 }
 
-/* Steady flow at theta: returns bulk I (mean over the bulk slabs and the
- * averaging window), the time-averaged Q_g, and prints the Bagnold fit. */
+/* Steady flow at theta: returns bulk I and tau/P_G (means over the bulk slabs
+ * and the averaging window), the seed's I from the Bagnold amplitude, the
+ * time-averaged Q_g, and prints the Bagnold fit. */
 static void steady(double theta_deg, double length_over_D, double tc_nd, double t_spin_nd, double t_avg_nd,
                    double *I_bulk, double *mu_bulk, double *I_profile, double *q_mean, double *bagnold_rms,
                    double *slip_over_h)
@@ -264,11 +265,12 @@ static void steady(double theta_deg, double length_over_D, double tc_nd, double 
         for (int k = 2; k <= top - 3 && k < NS; ++k)
             phib += phi_s[k], ++nb;
         if (nb > 0)
-            *I_profile = 1.5 * A * f.D / sqrt(phib / nb * 9.81 * cos(f.theta));
+            *I_profile = 1.5 * A * f.D / sqrt(phib / nb * (f.D / (f.tg * f.tg)) * cos(f.theta));
     }
-    printf("steady %.1f deg, L = %.0f D: I_bulk = %.4f (%d slabs), I from the Bagnold fit = %.4f, Q_g = %.4e m3/s, h = %.2f D, Bagnold rms %.3f, "
-           "lambda/h = %.3f, %.1f s\n",
-           theta_deg, length_over_D, *I_bulk, m, *I_profile, q, h / f.D, *bagnold_rms, *slip_over_h, runner_now_s() - t0);
+    printf("steady %.1f deg, L = %.0f D: I_bulk = %.4f (%d slabs), I from the Bagnold fit = %.4f, "
+           "Q_g = %.4e m3/s, h = %.2f D, Bagnold rms %.3f, lambda/h = %.3f, %.1f s\n",
+           theta_deg, length_over_D, *I_bulk, m, *I_profile, q, h / f.D, *bagnold_rms, *slip_over_h,
+           runner_now_s() - t0);
     printf("  u/sqrt(gD) by slab:");
     for (int k = 0; k <= top && k < NS; ++k)
         printf(" %.2f", u_s[k] / sqrt(9.81 * f.D));
