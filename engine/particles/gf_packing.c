@@ -425,13 +425,14 @@ static gf_status prep_setup(gf_ctx *ctx, const gf_packing_spec *sp, double mu_pr
     }
     /* walls: floor, and x / z planes where asked */
     s->wall[s->n_walls++] = (prep_wall){{0, sp->lo_m[1], 0}, {0, 1, 0}};
+    const double back = sp->wall_setback_m;
     if (sp->walls_x && !s->per[0]) {
-        s->wall[s->n_walls++] = (prep_wall){{sp->lo_m[0], 0, 0}, {1, 0, 0}};
-        s->wall[s->n_walls++] = (prep_wall){{sp->hi_m[0], 0, 0}, {-1, 0, 0}};
+        s->wall[s->n_walls++] = (prep_wall){{sp->lo_m[0] - back, 0, 0}, {1, 0, 0}};
+        s->wall[s->n_walls++] = (prep_wall){{sp->hi_m[0] + back, 0, 0}, {-1, 0, 0}};
     }
     if (sp->walls_z && !s->per[2]) {
-        s->wall[s->n_walls++] = (prep_wall){{0, 0, sp->lo_m[2]}, {0, 0, 1}};
-        s->wall[s->n_walls++] = (prep_wall){{0, 0, sp->hi_m[2]}, {0, 0, -1}};
+        s->wall[s->n_walls++] = (prep_wall){{0, 0, sp->lo_m[2] - back}, {0, 0, 1}};
+        s->wall[s->n_walls++] = (prep_wall){{0, 0, sp->hi_m[2] + back}, {0, 0, -1}};
     }
     /* stiffness of the mean pair for t_c (unclipped law, Schäfer et al. 1996); damping ratio for eps */
     double m_mean = sp->density_kg_m3 * M_PI * D * D * D / 6.0, t_c = PREP_TC_ND * sqrt(D / g);

@@ -64,6 +64,8 @@ typedef struct gf_packing_spec {
     double lo_m[3], hi_m[3];      /* container; hi_m[1] is the target height H (top of the column) */
     int periodic[3];              /* x and z may be periodic; y never */
     int walls_x, walls_z;         /* plane walls at lo/hi on non-periodic x / z (1) or none (0: obstacles close it) */
+    double wall_setback_m;        /* those planes sit this far outside lo/hi (behind a wall of glued obstacles,
+                                     so that no grain squeezed through the obstacles' gaps leaves the box) */
     double phi_target;            /* requested interior Phi; NaN: one deposit at mu_prep = mu_natural */
     double mu_natural;            /* friction used when phi_target is NaN (the run's mu_c) */
     double tolerance;             /* |phi_local - target| accepted; 0: 0.005 */

@@ -128,7 +128,8 @@ static gf_status janssen_build(gf_sim *sim, const gf_run_spec *spec)
     for (size_t i = 0; st == GF_OK && i < walls->n_local; ++i)
         st = gf_particles_add(ctx, p, walls->x_m[i], walls->y_m[i], walls->z_m[i], walls->radius_m[i],
                               spec->grains.density_kg_m3, GF_P_GLUED, NULL);
-    gf_packing_spec ps = {.lo_m = {0, 0, 0}, .hi_m = {S, h, S}, .periodic = {0, 0, 0}, .walls_x = 0, .walls_z = 0,
+    gf_packing_spec ps = {.lo_m = {0, 0, 0}, .hi_m = {S, h, S}, .periodic = {0, 0, 0}, .walls_x = 1, .walls_z = 1,
+                          .wall_setback_m = rw, /* the run's frictionless safety planes, behind the glued walls */
                           .phi_target = isnan(spec->phi_initial) ? gf_run_spec_param(spec, "phi_target", 0.59)
                                                                  : spec->phi_initial,
                           .tolerance = gf_run_spec_param(spec, "phi_tolerance", 0.01),

@@ -31,7 +31,9 @@
  * Measured (6 D x 30 D): the glued square-lattice wall mobilises an
  * effective wall friction f_p ~ mu_c (0.22-0.30), K = 0.78-1.02, so f_p K =
  * 0.18-0.28 across floor drops 0.05-0.6 D and packing seeds 1, 7, 31 (no
- * trend with the drop: the scatter of a 6 D section dominates); the profile
+ * trend with the drop: the scatter of a 6 D section dominates; measured
+ * before the preparation got its safety planes behind the glued walls, after
+ * which the default gives 0.248 fit, 0.150 local); the profile
  * turns from hydrostatic to flat over ~4 D, sharper than the exponential.
  * At the seed's t_c = 1e-4 s: f_p 0.253, K 0.893, f_p K 0.226 (local). The
  * seed's plateau is P_G = tr/3 = sigma_v (1 + 2K)/3 under Janssen's
