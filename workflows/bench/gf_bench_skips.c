@@ -85,20 +85,32 @@ static void keep_positions(gf_sim *sim, result *r)
 }
 
 /* ---- tangential: elastic gas and frictionless bed ---- */
+/* A frictionless spec of `scene` (grains and walls mu = 0: the tangential skip applies). */
+static void frictionless_spec(gf_run_spec *s, const char *scene, double D, double rho, double poly, double eps)
+{
+    gf_run_spec_defaults(s);
+    snprintf(s->scene, sizeof s->scene, "%s", scene);
+    s->grains.diameter_m = D, s->grains.density_kg_m3 = rho, s->grains.polydispersity = poly;
+    s->contact.restitution = eps, s->contact.friction = s->contact.wall_friction = 0.0;
+}
+
+/* Creates the run with the skips on (or all work kept) and starts the CPU clock. */
+static int create_timed(gf_ctx *ctx, const gf_run_spec *s, int on, gf_sim **sim, double *c0)
+{
+    gf_sim_options o = {.n_threads = 1, .keep_all_work = !on};
+    *c0 = cpu_s();
+    return gf_sim_create(ctx, s, &o, sim) == GF_OK;
+}
 static int run_gas(int on, result *r)
 {
     gf_ctx ctx = {0};
     gf_run_spec s;
-    gf_run_spec_defaults(&s);
-    snprintf(s.scene, sizeof s.scene, "elastic_gas");
-    s.grains.diameter_m = 3e-3, s.grains.density_kg_m3 = 1319.0, s.grains.polydispersity = 0.0;
-    s.contact.restitution = 1.0, s.contact.friction = s.contact.wall_friction = 0.0;
+    frictionless_spec(&s, "elastic_gas", 3e-3, 1319.0, 0.0, 1.0);
     gf_run_spec_set_param(&ctx, &s, "n_grains", 1000);
     gf_run_spec_set_param(&ctx, &s, "box_over_D", 12.05); /* phi = 0.30 */
-    gf_sim_options o = {.n_threads = 1, .keep_all_work = !on};
     gf_sim *sim = NULL;
-    double c0 = cpu_s();
-    if (gf_sim_create(&ctx, &s, &o, &sim) != GF_OK)
+    double c0;
+    if (!create_timed(&ctx, &s, on, &sim, &c0))
         return fail(&ctx);
     const double tg = sqrt(s.grains.diameter_m / s.gravity_m_s2);
     const long n = (long)ceil(8.0 * tg / gf_sim_dt_s(sim)), chunk = n / 100;
@@ -119,16 +131,12 @@ static int run_bed(int on, result *r)
 {
     gf_ctx ctx = {0};
     gf_run_spec s;
-    gf_run_spec_defaults(&s);
-    snprintf(s.scene, sizeof s.scene, "settled_bed");
-    s.grains.diameter_m = 1e-3, s.grains.density_kg_m3 = 2500.0, s.grains.polydispersity = 0.1;
-    s.contact.restitution = 0.5, s.contact.friction = s.contact.wall_friction = 0.0;
+    frictionless_spec(&s, "settled_bed", 1e-3, 2500.0, 0.1, 0.5);
     gf_run_spec_set_param(&ctx, &s, "n_grains", 4000);
     gf_run_spec_set_param(&ctx, &s, "settle_time_nd", 2.0);
-    gf_sim_options o = {.n_threads = 1, .keep_all_work = !on};
     gf_sim *sim = NULL;
-    double c0 = cpu_s();
-    if (gf_sim_create(&ctx, &s, &o, &sim) != GF_OK || gf_sim_advance(sim, 5000) != GF_OK)
+    double c0;
+    if (!create_timed(&ctx, &s, on, &sim, &c0) || gf_sim_advance(sim, 5000) != GF_OK)
         return fail(&ctx);
     r->cpu_s = cpu_s() - c0;
     const gf_particles *p = gf_sim_particles(sim);
