@@ -79,6 +79,8 @@ static int apply_keys(gf_ctx *ctx, gf_run_spec *spec, int argc, char **argv)
         snprintf(key, sizeof key, "%.*s", (int)(eq - argv[a]), argv[a]);
         if (strcmp(key, "cell_over_D") == 0)
             spec->fluid.cell_over_D = atof(eq + 1);
+        else if (strcmp(key, "drag") == 0)
+            snprintf(spec->fluid.drag, sizeof spec->fluid.drag, "%s", eq + 1);
         else if (strcmp(key, "seed") == 0)
             spec->seed = (uint64_t)strtoull(eq + 1, NULL, 10);
         else if (gf_run_spec_set_param(ctx, spec, key, atof(eq + 1)) != GF_OK) {
