@@ -26,6 +26,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "coupling/gf_coupling.h"
 #include "coupling/gf_tier.h"
 #ifdef _OPENMP
 #include <omp.h>
@@ -77,6 +78,11 @@ void gf_sim_wall_force(const gf_sim *s, int w, double f[3])
 {
     for (int c = 0; c < 3; ++c)
         f[c] = (w >= 0 && w < s->n_walls) ? s->walls[w].force_N[c] : 0.0;
+}
+
+double gf_sim_excess_pressure_Pa(const gf_sim *s, const double x_m[3])
+{
+    return s->coupling ? gf_coupling_excess_pressure_Pa(s->coupling, x_m) : NAN;
 }
 
 /* ---- builder calls ---- */

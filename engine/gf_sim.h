@@ -77,6 +77,10 @@ unsigned gf_sim_skips(const gf_sim *sim, char *text, size_t n);
 /* Total force the grains exert on wall w (N), accumulated at the last force evaluation. */
 void gf_sim_wall_force(const gf_sim *sim, int wall_id, double f_N[3]);
 
+/* Excess pore pressure (relative to hydrostatic) at x, Pa, as the gauges read
+ * it; NAN on a dry run (no fluid tier). */
+double gf_sim_excess_pressure_Pa(const gf_sim *sim, const double x_m[3]);
+
 /* --- builder calls, for scenes --- */
 /* Domain box; periodic axes wrap, others must be closed by walls. */
 gf_status gf_sim_set_box(gf_sim *sim, const double lo_m[3], const double hi_m[3], const int periodic[3]);

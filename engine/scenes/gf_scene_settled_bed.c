@@ -15,9 +15,15 @@
  * measures cost per contact and per neighbour, which the coordination and
  * the neighbour count set, not the disorder.
  * width_over_D = 0 picks a square footprint for a bed ~ 20 D deep.
+ * Immersed (fluid.model unresolved): the bed is settled dry inside build (the
+ * coupling starts at t = 0, fluid at rest and hydrostatic), the top of the
+ * box is a free-slip lid, and a basal gauge "base_centre" sits on the floor
+ * at the centre of the footprint: a bed at rest must read zero excess pore
+ * pressure there (tests/stress/test_stress_static_bed.c, immersed mode).
  */
 #include <math.h>
 
+#include "coupling/gf_coupling.h" /* gf_fluid_bc */
 #include "scenes/gf_scene.h"
 
 static const gf_param_info bed_params[] = {
@@ -99,7 +105,9 @@ static gf_status bed_build(gf_sim *sim, const gf_run_spec *spec)
                 p->vx_m_s[i] = p->vy_m_s[i] = p->vz_m_s[i] = p->wx_rad_s[i] = p->wy_rad_s[i] = p->wz_rad_s[i] = 0.0;
             }
     gf_sim_reset_clock(sim);
-    return GF_OK;
+    GF_TRY(gf_sim_set_fluid_bc(sim, 1, 1, GF_BC_FREE_SLIP)); /* ignored when dry */
+    double gauge[3] = {0.5 * L, 0.0, 0.5 * L};
+    return gf_sim_add_gauge(sim, "base_centre", gauge);
 }
 
 static int bed_done(gf_sim *sim) { return 0; }
@@ -107,7 +115,7 @@ static int bed_done(gf_sim *sim) { return 0; }
 const gf_scene_desc gf_scene_settled_bed = {
     .name = "settled_bed",
     .caption = "dense bed at rest on a floor, periodic x and z: the DEM benchmark",
-    .needs = GF_NEED_CONTACTS,
+    .needs = GF_NEED_CONTACTS | GF_NEED_FLUID | GF_NEED_PROBES,
     .params = bed_params,
     .n_params = (int)(sizeof bed_params / sizeof bed_params[0]),
     .default_end_time_nd = 1.0,

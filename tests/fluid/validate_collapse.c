@@ -41,7 +41,7 @@
 
 #include "coupling/gf_coupling.h"
 #include "gf_sim.h"
-#include "gf_sim_internal.h" /* the coupling handle, for the gauge reading */
+#include "gf_sim_internal.h" /* DEM substeps per fluid step, for the cost line */
 #include "scenes/gf_scene.h"
 
 enum { N_GAUGE = 3, MAX_REC = 4096, WALL_GATE = 2 };
@@ -145,7 +145,8 @@ static void record_gauges(gf_sim *sim, double R0, double t, collapse_run *r, dou
 {
     for (int k = 0; k < N_GAUGE; ++k) {
         double xg[3] = {GAUGE_X[k] * R0, 0.0, 1.5 * D};
-        pb[k] = sim->coupling ? gf_coupling_excess_pressure_Pa(sim->coupling, xg) : 0.0;
+        double v = gf_sim_excess_pressure_Pa(sim, xg); /* NAN when dry */
+        pb[k] = isnan(v) ? 0.0 : v;
         if (pb[k] < r->pb_min[k])
             r->pb_min[k] = pb[k], r->t_min[k] = t;
         if (pb[k] > r->pb_max[k])

@@ -20,21 +20,62 @@
  *  - no creep: the bed's centre of mass moves by less than 1e-4 D, and the
  *    grain count and the largest overlap (below 1 % of D: the weight of 20
  *    layers on the stiffness of t_c = 1e-2 sqrt(D/g)) do not change.
- * Usage: test_stress_static_bed [BUDGET_S [MAX_STEPS]]: runs until MAX_STEPS
- * (default 1e7) or BUDGET_S seconds of wall time (0: no limit). The default
- * suite runs 25 s; the `slow` run does the full 1e7 steps.
+ * Immersed mode (third argument "immersed"): the same bed in the seed's
+ * viscous fluid of the immersed collapse (D = 7.6 mm, rho_p/rho_f = 8,
+ * eta_f = 1 Pa s, Ar ~ 30; Izard 2014 §5.2) through the unresolved tier. The
+ * fluid starts at rest and hydrostatic; a bed at rest drives no flow, so the
+ * excess pore pressure at the basal gauge must stay near zero. Bound: after
+ * the relaxation, |P_b| < 1e-3 of the bed's buoyant weight per unit area,
+ * drho g sum(V_i)/A (a tenth of a percent of the pressure the grains would
+ * put on the fluid if the bed liquefied). The bed stays at rest in the
+ * same sense as the dry one (every grain slower than 1e-2 sqrt(gD), overlaps
+ * unchanged), but its centre of mass is only held to 1e-3 D and the speed
+ * and kinetic energy are not required to decay: in this very viscous fluid
+ * the bed creeps in bursts (measured: the fastest grain grows exponentially
+ * at ~0.05 per sqrt(D/g) from 1e-4 to 4e-3 sqrt(gD), the bed then sinks by
+ * ~1e-5 D and falls quiet; in water (eta_f = 1e-3 Pa s) or a thin fluid it
+ * decays as in the dry bed). docs/benchmarks.md records the measurement;
+ * the cause (a metastable contact structure slowly released under viscous
+ * damping, or the coupling) is not settled.
+ * Usage: test_stress_static_bed [BUDGET_S [MAX_STEPS [immersed]]]: runs until
+ * MAX_STEPS (default 1e7) or BUDGET_S seconds of wall time (0: no limit). The
+ * default suite runs 25 s of each mode; the `slow` runs do the full 1e7 steps.
  */
 #include <stdlib.h>
+#include <string.h>
 
 #include "core/gf_timer.h"
 #include "stress_util.h"
+
+/* The seed's grains and fluid of the immersed collapse (Izard 2014 §5.2). */
+static void immersed_spec(gf_run_spec *s)
+{
+    s->grains.diameter_m = 7.6e-3;
+    s->grains.density_kg_m3 = 8000.0;
+    snprintf(s->fluid.model, sizeof s->fluid.model, "unresolved");
+    s->fluid.density_kg_m3 = 1000.0;
+    s->fluid.viscosity_Pa_s = 1.0;
+}
+
+/* Excess pore pressure at the floor gauge of the settled_bed scene, Pa. */
+static double basal_pressure(gf_sim *sim)
+{
+    double lo[3], hi[3];
+    int per[3];
+    gf_sim_box(sim, lo, hi, per);
+    double x[3] = {0.5 * (lo[0] + hi[0]), lo[1], 0.5 * (lo[2] + hi[2])};
+    return gf_sim_excess_pressure_Pa(sim, x);
+}
 
 int main(int argc, char **argv)
 {
     double budget_s = argc > 1 ? atof(argv[1]) : 25.0;
     long max_steps = argc > 2 ? atol(argv[2]) : 10000000L;
+    int immersed = argc > 3 && strcmp(argv[3], "immersed") == 0;
     gf_ctx ctx = {0};
     gf_run_spec s = gf_test_spec("settled_bed");
+    if (immersed)
+        immersed_spec(&s);
     s.grains.polydispersity = 0.1;
     s.contact.restitution = 0.5;
     s.contact.friction = 0.5;
@@ -62,13 +103,21 @@ int main(int argc, char **argv)
     ycm0 /= mass;
     double ov0;
     gf_sim_contact_stats(sim, NULL, &ov0);
+    double lo[3], hi[3], vol = 0.0;
+    int per[3];
+    gf_sim_box(sim, lo, hi, per);
+    for (size_t i = 0; i < p->n_local; ++i)
+        vol += p->mass_kg[i] / s.grains.density_kg_m3;
+    const double p_bed = (s.grains.density_kg_m3 - s.fluid.density_kg_m3) * s.gravity_m_s2 * vol /
+                         ((hi[0] - lo[0]) * (hi[2] - lo[2]));
+    double pb_relaxed = immersed ? basal_pressure(sim) : 0.0;
 
     /* samples every 2000 steps (20 t_c), at most 4096 of them over the run */
     long chunk = max_steps / 4000 > 2000 ? max_steps / 4000 : 2000;
     double t_start = gf_wtime(), ek_first = 0.0, ek_second = 0.0, vmax = 0.0, dy_max = 0.0, ov_max = ov0;
     long done = 0;
     int n_samples = 0;
-    static double ek[4096], vs[4096];
+    static double ek[4096], vs[4096], pb[4096];
     double v_first = 0.0, v_second = 0.0;
     gf_status st = GF_OK;
     while (done < max_steps && st == GF_OK) {
@@ -84,18 +133,21 @@ int main(int argc, char **argv)
             vs[n_samples] = stress_max_speed(p);
         gf_sim_contact_stats(sim, NULL, &ov);
         ov_max = fmax(ov_max, ov);
-        if (n_samples < 4096)
+        if (n_samples < 4096) {
+            pb[n_samples] = immersed ? fabs(basal_pressure(sim)) : 0.0;
             ek[n_samples++] = gf_particles_kinetic_energy(p);
+        }
         GF_CHECK(p->n_local == n0);
         if (budget_s > 0.0 && gf_wtime() - t_start > budget_s)
             break;
     }
     GF_CHECK_OK(st, &ctx);
+    double pb_first = 0.0, pb_second = 0.0;
     for (int k = 0; k < n_samples; ++k) {
         if (k < n_samples / 2)
-            ek_first = fmax(ek_first, ek[k]), v_first = fmax(v_first, vs[k]);
+            ek_first = fmax(ek_first, ek[k]), v_first = fmax(v_first, vs[k]), pb_first = fmax(pb_first, pb[k]);
         else
-            ek_second = fmax(ek_second, ek[k]), v_second = fmax(v_second, vs[k]);
+            ek_second = fmax(ek_second, ek[k]), v_second = fmax(v_second, vs[k]), pb_second = fmax(pb_second, pb[k]);
     }
     double mgd = mass / n0 * s.gravity_m_s2 * D;
     printf("after %ld relaxation steps: max speed %.3g sqrt(gD)\n", n_relax, v_relaxed / vref);
@@ -105,11 +157,19 @@ int main(int argc, char **argv)
            "max overlap %.4f D (start %.4f D)\n",
            n0, done, gf_sim_time_s(sim) / sqrt(D / s.gravity_m_s2), gf_wtime() - t_start, vmax / vref,
            ek_first / (n0 * mgd), ek_second / (n0 * mgd), dy_max / D, ov_max, ov0);
+    if (immersed) {
+        printf("basal excess pore pressure / (drho g sum V / A = %.4g Pa): after relaxation %+.3g, "
+               "max |P_b| first half %.3g, second half %.3g\n",
+               p_bed, pb_relaxed / p_bed, pb_first / p_bed, pb_second / p_bed);
+        GF_CHECK(pb_first < 1e-3 * p_bed && pb_second < 1e-3 * p_bed);
+    }
     GF_CHECK(done >= 1000);
     GF_CHECK(vmax < 1e-2 * vref);
-    GF_CHECK(v_second <= v_first);
-    GF_CHECK(ek_second <= ek_first);
-    GF_CHECK(dy_max < 1e-4 * D);
+    if (!immersed) {
+        GF_CHECK(v_second <= v_first);
+        GF_CHECK(ek_second <= ek_first);
+    }
+    GF_CHECK(dy_max < (immersed ? 1e-3 : 1e-4) * D);
     GF_CHECK(ov_max < 0.01);
     GF_CHECK(fabs(ov_max - ov0) < 1e-3);
     gf_sim_destroy(&sim);
