@@ -227,6 +227,9 @@ cat <<'TXT'
 - The dense viscous avalanche of the fast tier (regime map, docs/postprocessing.md) creeps
   about 10x slower than mu(I_v) predicts; measurements and what was ruled out:
   docs/validation-avalanche.md.
+- Dense against loose collapse: the Beetstra closure and a denser column (Phi_i 0.61)
+  measured beside the main pair, and what they say about the missing suction at
+  13/16 R0: docs/validation-collapse.md.
 
 - Column collapse geometry: at cells of 2 D the column (16 D x 8 D) spans 8 x 4 cells and
   the kernel (sigma = 2 D) smooths the pressure over +-4 D, so the gauge at 13/16 R0 also
