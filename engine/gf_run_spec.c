@@ -64,3 +64,28 @@ double gf_run_spec_dt_s(const gf_run_spec *s)
 {
     return gf_run_spec_t_contact_s(s) * s->contact.dt_over_tc;
 }
+
+double gf_run_spec_dt_limit_over_tc(const gf_run_spec *s)
+{
+    double p = s->grains.polydispersity;
+    return p > 0.1 ? GF_DT_MAX_OVER_TC * pow((1.0 - p) / 0.9, 1.5) : GF_DT_MAX_OVER_TC;
+}
+
+gf_status gf_run_spec_check_time_step(gf_ctx *ctx, const gf_run_spec *s)
+{
+    const double r = s->contact.dt_over_tc, limit = gf_run_spec_dt_limit_over_tc(s);
+    if (!(r > 0.0) || !isfinite(r))
+        return GF_FAIL(ctx, GF_ERR_CONFIG, "contact.dt_over_tc: must be > 0 (got %g)", r);
+    if (r <= limit)
+        return GF_OK;
+    if (limit < GF_DT_MAX_OVER_TC)
+        return GF_FAIL(ctx, GF_ERR_NUMERIC,
+                       "contact.dt_over_tc = %g exceeds the stability limit t_c/5 x ((1 - p)/0.9)^1.5 = %.3g t_c "
+                       "of the smallest grains (grains.polydispersity p = %g: the smallest pair's contact lasts "
+                       "%.2g t_c); use dt_over_tc <= %.3g or a narrower size distribution",
+                       r, limit, s->grains.polydispersity, pow(1.0 - s->grains.polydispersity, 1.5), limit);
+    return GF_FAIL(ctx, GF_ERR_NUMERIC,
+                   "contact.dt_over_tc = %g: dt = %g s exceeds the stability limit t_c/5 = %g s "
+                   "(velocity Verlet on the contact network; use <= 0.2, 0.02 recommended)",
+                   r, gf_run_spec_dt_s(s), gf_run_spec_t_contact_s(s) * GF_DT_MAX_OVER_TC);
+}

@@ -92,4 +92,18 @@ gf_status gf_run_spec_set_param(gf_ctx *ctx, gf_run_spec *spec, const char *key,
 double gf_run_spec_t_contact_s(const gf_run_spec *spec);
 double gf_run_spec_dt_s(const gf_run_spec *spec);
 
+/* Largest accepted dt / t_c (t_c of the mean pair). t_c/5 covers the
+ * contact network and up to 10 % polydispersity (gf_sim.c, opening
+ * comment); beyond, k_n is still the mean pair's (gf_contact.h) and the
+ * smallest pair, of mass (1 - p)^3 times the mean, vibrates (1 - p)^(-3/2)
+ * times faster, so the bound shrinks as t_c/5 ((1 - p)/0.9)^(3/2): 0.083 t_c
+ * at p = 0.5, the schema's widest distribution. */
+#define GF_DT_MAX_OVER_TC 0.2
+double gf_run_spec_dt_limit_over_tc(const gf_run_spec *spec);
+/* GF_ERR_NUMERIC, naming the limit and what to change, when
+ * contact.dt_over_tc exceeds gf_run_spec_dt_limit_over_tc; GF_ERR_CONFIG when
+ * it is not a positive number. Called by gf_sim_create and by the campaign
+ * loader, so `grainflow check` refuses what the engine would refuse. */
+gf_status gf_run_spec_check_time_step(gf_ctx *ctx, const gf_run_spec *spec);
+
 #endif

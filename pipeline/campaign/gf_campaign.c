@@ -203,6 +203,12 @@ static gf_status build_run(loader *L, int v, int k, int index, gf_campaign_run *
         st = gf_scene_resolve_params(ctx, &run->spec);
     if (st == GF_OK)
         st = gf_groups_map_realised(ctx, &run->spec, &run->scales);
+    if (st == GF_OK && (st = gf_run_spec_check_time_step(ctx, &run->spec)) != GF_OK) {
+        /* the engine's own refusal, located at the key that sets the step when the file has it */
+        const gf_cfg_node *contact = gf_cfg_get(L->root, "contact");
+        const gf_cfg_node *key = contact ? gf_cfg_get(contact, "dt_over_tc") : NULL;
+        at = key ? key : contact ? contact : at;
+    }
     if (st != GF_OK) {
         char msg[512];
         snprintf(msg, sizeof msg, "%s", gf_ctx_message(ctx));

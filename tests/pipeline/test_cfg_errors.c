@@ -59,6 +59,11 @@ static void test_wrong_types_and_ranges(void)
                  "t.yaml:2:22: diameter_m: expected a number, got a list");
     expect_error(BASE "contact: {restitution: 1.5}\n", GF_ERR_CONFIG,
                  "t.yaml:2:24: restitution = 1.5 is out of range [0, 1]");
+    /* the engine's time-step bound, refused at load (grainflow check) and located at the key */
+    expect_error(BASE "contact: {dt_over_tc: 0.3}\n", GF_ERR_NUMERIC,
+                 "t.yaml:2:23: contact.dt_over_tc = 0.3: dt = ");
+    expect_error(BASE "grains: {polydispersity: 0.5}\ncontact:\n  dt_over_tc: 0.1\n", GF_ERR_NUMERIC,
+                 "t.yaml:4:15: contact.dt_over_tc = 0.1 exceeds the stability limit t_c/5 x ((1 - p)/0.9)^1.5");
     expect_error(BASE "grains: {diameter_m: 0}\n", GF_ERR_CONFIG,
                  "t.yaml:2:22: diameter_m = 0 is out of range: must be > 0");
     expect_error(BASE "gravity: .nan\n", GF_ERR_CONFIG, "t.yaml:2:10: gravity: expected a number, got '.nan'");
