@@ -20,9 +20,10 @@
  * Time step: scaled with h^2 (diffusive scaling), dt = 0.1 h^2 (Poiseuille,
  * units L^2/nu) and dt = 0.25 h^2 (Taylor-Green, units 1/(U k); CFL
  * sum |u| dt/h <= 0.2), so that the O(dt) time error is O(h^2) and the
- * spatial error dominates. Checked here: dividing dt by 4 on the finest
+ * spatial error dominates. Checked here: dividing dt by 4 on the middle
  * grid changes the error by less than 15 % (Poiseuille, where the time
- * error is O(h^2) like the spatial one) and 5 % (Taylor-Green).
+ * error is O(h^2) like the spatial one) and 5 % (Taylor-Green). About 1.5
+ * CPU s in all.
  */
 #include <math.h>
 #include <stdio.h>
@@ -37,7 +38,7 @@ typedef struct order_case {
     double c_dt;        /* dt = c_dt h^2 */
     double t_end, re;
     double p_lo, p_hi;  /* accepted order */
-    double dt_tol;      /* accepted |e(dt/4)/e(dt) - 1| on the finest grid */
+    double dt_tol;      /* accepted |e(dt/4)/e(dt) - 1| on the middle grid */
 } order_case;
 
 static double grid_h(const order_case *oc, int n)
@@ -73,10 +74,10 @@ static void check_order(const order_case *oc)
         double p = gf_fluid_exact_order(e[q - 1], e[q], h[q - 1], h[q]);
         GF_CHECK(p >= oc->p_lo && p <= oc->p_hi);
     }
-    double e4 = run_error(oc, oc->n0 << 2, 0.25, &r);
-    printf("  n %3d with dt/4: rms error %.4e (%+.1f %%: the spatial error dominates)\n", oc->n0 << 2, e4,
-           100.0 * (e4 / e[2] - 1.0));
-    GF_CHECK(fabs(e4 / e[2] - 1.0) < oc->dt_tol);
+    double e4 = run_error(oc, oc->n0 << 1, 0.25, &r);
+    printf("  n %3d with dt/4: rms error %.4e (%+.1f %%: the spatial error dominates)\n", oc->n0 << 1, e4,
+           100.0 * (e4 / e[1] - 1.0));
+    GF_CHECK(fabs(e4 / e[1] - 1.0) < oc->dt_tol);
 }
 
 int main(void)
