@@ -19,6 +19,7 @@ run() { # name, command...
 }
 run poisson "$T/test_poisson_order"
 run viscous "$T/test_viscous_solve"
+run fluid_order "$T/test_fluid_order"
 run sphere_stokes "$T/test_single_sphere_stokes" stokes
 run sphere_re20 "$T/test_single_sphere_stokes" sn20
 run rz_difelice "$T/test_hindered_settling" di_felice
@@ -81,6 +82,14 @@ Implicit viscous step: the DST/DCT/DFT Helmholtz solve inverts the MAC stencil e
 for every boundary combination (test_viscous_solve):
 TXT
 block viscous
+cat <<'TXT'
+
+Complete fluid step (advection, implicit viscosity, projection) against exact solutions,
+dt = C h^2 (test_fluid_order; docs/benchmarks.md "Fluid: convergence in cell size"):
+order 2 where advection vanishes (Poiseuille start-up, accepted 1.8-2.2), order 1 of the
+upwind advection on the Taylor-Green vortex at Re 10 (accepted 0.75-1.25):
+TXT
+block fluid_order
 cat <<'TXT'
 
 ## Single sphere settling (dilute limit)

@@ -32,6 +32,7 @@ typedef struct bench_knobs {
 
 typedef struct bench_result {
     double observable, reference, error, cpu_s;
+    double aux;                 /* second observable of the case (bench_case.aux), recorded, not judged */
 } bench_result;
 
 typedef struct bench_case {
@@ -46,6 +47,10 @@ typedef struct bench_case {
     int (*available)(const char **why);
     /* Measures one setting. The reference may be computed lazily on the first call (finest run). */
     gf_status (*measure)(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out);
+    /* Optional: the case's own values of a swept knob (NULL: the common sweep of gf_bench_accuracy.c) */
+    const double *dt_list, *cell_list;
+    int n_dt, n_cell;
+    const char *aux;            /* name and units of bench_result.aux; NULL when the case has none */
 } bench_case;
 
 const bench_case *bench_cases(int *n);
@@ -69,5 +74,7 @@ gf_status bench_write(gf_ctx *ctx, const char *dir, const bench_point *pts, int 
                       int n_cases, int full);
 /* Prints the measured order in dt of each case (error ratio when dt halves). */
 void bench_print_orders(const bench_point *pts, int n, const bench_case *cases, int n_cases);
+/* Prints the measured order in cell size of each case that sweeps it. */
+void bench_print_cell_orders(const bench_point *pts, int n, const bench_case *cases, int n_cases);
 
 #endif

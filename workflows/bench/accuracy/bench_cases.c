@@ -23,6 +23,19 @@
  *                   the 25 % a dissipative collision (eps 0.87) removes. The
  *                   Verlet skin changes only the cost (rebuild frequency
  *                   against list length), so it is swept too.
+ *  fluid_cell_order the complete fluid step (gf_fluid, no grains) on the
+ *                   decaying Taylor-Green vortex, Re 10 (gf_fluid_exact.h):
+ *                   rms velocity error at t = 1/(U k); knob: cell size in a
+ *                   nominal D = period/32 (4, 2, 1, 0.5 D: n = 8 ... 64);
+ *                   tolerance 5 %, half the 10 % of the coupled cases.
+ *  fluid_wall_order the same on start-up plane Poiseuille flow (viscous step
+ *                   and no-slip walls; D = channel width/32).
+ *  immersed_collapse (--full) the immersed dense collapse of
+ *                   tests/fluid/validate_collapse.c: R_inf/R0 of seed 1
+ *                   against the mean of 3 seeds of the finest setting (cell
+ *                   1 D, dt = t_c/50); knobs cell/D in {4, 2, 1.5, 1}, dt/t_c
+ *                   in {1/20, 1/50}; tolerance 10 % (row 33). The dominant
+ *                   basal excess pressure at x = R0/2 is recorded too.
  *  hindered_settling  settling scene (unresolved tier chosen by `fluid: auto`),
  *                   suspension at phi = 0.2, Re_t = 0.05: U/U_t against
  *                   Richardson & Zaki (1954) (1 - phi)^4.65; tolerance 10 %
@@ -46,7 +59,10 @@
 #include "bench_accuracy.h"
 #include "contact/gf_contact.h"
 #include "coupling/gf_tier.h"
+#include "fluid/gf_fluid_exact.h"
+#include "coupling/gf_coupling.h"
 #include "gf_sim.h"
+#include "gf_sim_internal.h" /* the coupling and the gauges, for the basal pore pressure */
 #include "scenes/gf_scene.h"
 
 /* CPU time of the process, s: the cost of a one-thread run, insensitive to
@@ -139,7 +155,7 @@ static gf_status measure_restitution(gf_ctx *ctx, const bench_knobs *k, int full
         worst = fmax(worst, fabs(o.restitution / closed - 1.0));
         wall += o.wall_s;
     }
-    *out = (bench_result){mean, closed, worst, wall};
+    *out = (bench_result){mean, closed, worst, wall, NAN};
     return GF_OK;
 }
 
@@ -154,7 +170,7 @@ static gf_status measure_duration(gf_ctx *ctx, const bench_knobs *k, int full, b
         worst = fmax(worst, fabs(o.overlap_over_tc - 1.0));
         wall += o.wall_s;
     }
-    *out = (bench_result){mean, 1.0, worst, wall};
+    *out = (bench_result){mean, 1.0, worst, wall, NAN};
     return GF_OK;
 }
 
@@ -214,7 +230,7 @@ static gf_status measure_gas(gf_ctx *ctx, const bench_knobs *k, int full, bench_
     }
     gf_sim_destroy(&sim);
     GF_TRY(st);
-    *out = (bench_result){worst, 0.0, worst, wall};
+    *out = (bench_result){worst, 0.0, worst, wall, NAN};
     return GF_OK;
 }
 
@@ -293,7 +309,174 @@ static gf_status measure_collapse(gf_ctx *ctx, const bench_knobs *k, int full, b
     double front, sd, wall;
     GF_TRY(collapse_mean(ctx, k, &front, &sd, &wall));
     double D = 7.6e-3; /* observables are dimensionless: front / D */
-    *out = (bench_result){front / D, collapse_reference_m / D, fabs(front / collapse_reference_m - 1.0), wall};
+    *out = (bench_result){front / D, collapse_reference_m / D, fabs(front / collapse_reference_m - 1.0), wall, NAN};
+    return GF_OK;
+}
+
+/* ---------------------------------------------------------------- fluid, cell size */
+
+/* The complete fluid step (gf_fluid, no grains) on exact solutions
+ * (engine/fluid/gf_fluid_exact.h, tests/fluid/test_fluid_order.c). These
+ * problems have no grain, so the cell knob is measured in a nominal
+ * D = L/32 (L: the Taylor-Green period 2 pi/k, the Poiseuille channel
+ * width): cell/D in {4, 2, 1, 0.5} is n = 8, 16, 32, 64 cells across L.
+ * dt = 0.25 h^2 (Taylor-Green, units 1/(U k)) and 0.1 h^2 (Poiseuille,
+ * units L^2/nu): the spatial error dominates (test_fluid_order). */
+static const double fluid_cell_list[] = {4.0, 2.0, 1.0, 0.5};
+
+static gf_status measure_fluid(gf_ctx *ctx, gf_fluid_exact_problem pb, const bench_knobs *k, bench_result *out)
+{
+    int tg = pb == GF_EXACT_TAYLOR_GREEN, n = (int)lround(32.0 / k->cell_over_D);
+    double h = (tg ? 2.0 * M_PI : 1.0) / n;
+    gf_fluid_exact_case c = {pb, n, (tg ? 0.25 : 0.1) * h * h, tg ? 1.0 : 0.1, 10.0};
+    gf_fluid_exact_result r;
+    double t0 = bench_cpu_s();
+    GF_TRY(gf_fluid_exact_run(ctx, &c, &r));
+    *out = (bench_result){r.err_rms, 0.0, r.err_rms, bench_cpu_s() - t0, NAN};
+    return GF_OK;
+}
+
+/* Taylor-Green vortex, Re 10, t = 1/(U k): advection + viscous step + projection. */
+static gf_status measure_fluid_tgv(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out)
+{
+    return measure_fluid(ctx, GF_EXACT_TAYLOR_GREEN, k, out);
+}
+
+/* Start-up plane Poiseuille flow, t = 0.1 L^2/nu: viscous step + no-slip walls. */
+static gf_status measure_fluid_poiseuille(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out)
+{
+    return measure_fluid(ctx, GF_EXACT_POISEUILLE, k, out);
+}
+
+/* ---------------------------------------------------------------- immersed collapse */
+
+/* The immersed dense collapse of tests/fluid/validate_collapse.c (Rondon et
+ * al. 2011; Izard 2014 ch. 5): column_collapse, R0 = 16 D, a = 0.5, W = 3 D,
+ * D = 7.6 mm, rho_p/rho_f = 8, eta_f = 1 Pa s (viscous regime), phi_i 0.60
+ * prepared with rotations locked, unresolved tier, no lubrication, run to
+ * 10 000 T_visq, T_visq = eta_f / (drho g H0) (Izard (5.2)). */
+#define IMM_D 7.6e-3
+#define IMM_RHO_P 8000.0
+#define IMM_RHO_F 1000.0
+#define IMM_ETA 1.0
+#define IMM_R0_OVER_D 16.0
+#define IMM_END_T_VISQ 1.0e4
+#define IMM_SEEDS 3
+static const double imm_dt_list[] = {1.0 / 20, 1.0 / 50};
+static const double imm_cell_list[] = {4.0, 2.0, 1.5, 1.0};
+
+typedef struct imm_run {
+    double runout, pb8, cpu_s; /* R_inf/R0, dominant basal extremum at x = R0/2 / (drho g H0), CPU s */
+} imm_run;
+
+/* Reference: the finest setting (cell 1 D, dt = t_c/50), IMM_SEEDS seeds. */
+static imm_run imm_ref_runs[IMM_SEEDS];
+static double imm_ref_mean = NAN, imm_ref_sd = NAN;
+
+static int immersed_available(const char **why)
+{
+    const gf_scene_desc *d = gf_scene_find("column_collapse");
+    if (!d || !d->diagnose || d->n_diag < 1) {
+        *why = "scene column_collapse (with front_position diagnostic) not in this build";
+        return 0;
+    }
+    *why = "";
+    return 1;
+}
+
+static gf_status immersed_spec(gf_ctx *ctx, const bench_knobs *k, uint64_t seed, gf_run_spec *s)
+{
+    gf_run_spec_defaults(s);
+    snprintf(s->scene, sizeof s->scene, "column_collapse");
+    s->seed = seed;
+    s->grains.diameter_m = IMM_D;
+    s->grains.density_kg_m3 = IMM_RHO_P;
+    snprintf(s->fluid.model, sizeof s->fluid.model, "unresolved");
+    s->fluid.density_kg_m3 = IMM_RHO_F;
+    s->fluid.viscosity_Pa_s = IMM_ETA;
+    s->fluid.lubrication = 0;
+    s->fluid.cell_over_D = k->cell_over_D;
+    s->contact.dt_over_tc = k->dt_over_tc;
+    s->phi_initial = 0.60;
+    s->aspect_ratio_a = 0.5;
+    GF_TRY(gf_run_spec_set_param(ctx, s, "column_length_over_D", IMM_R0_OVER_D));
+    /* the preparation's blocked rotations are kept until t = 0 (scene notes) */
+    return gf_run_spec_set_param(ctx, s, "settle_rotation_locked", 1.0);
+}
+
+/* Excess pressure at the scene's basal gauge `name` (Pa), 0 when absent. */
+static double gauge_Pa(gf_sim *sim, const char *name)
+{
+    for (int k = 0; k < sim->n_gauges; ++k)
+        if (strcmp(sim->gauges[k].name, name) == 0 && sim->coupling)
+            return gf_coupling_excess_pressure_Pa(sim->coupling, sim->gauges[k].x_m);
+    return 0.0;
+}
+
+/* One collapse to IMM_END_T_VISQ; the gauge is read every 50 T_visq (as validate_collapse). */
+static gf_status immersed_run(gf_ctx *ctx, const bench_knobs *k, uint64_t seed, imm_run *r)
+{
+    gf_run_spec spec;
+    GF_TRY(immersed_spec(ctx, k, seed, &spec));
+    double H0 = 0.5 * IMM_R0_OVER_D * IMM_D, drho_g_H0 = (IMM_RHO_P - IMM_RHO_F) * spec.gravity_m_s2 * H0;
+    double t_visq = IMM_ETA / drho_g_H0, pmin = 0.0, pmax = 0.0, v[16] = {NAN};
+    const gf_scene_desc *d = gf_scene_find("column_collapse");
+    gf_sim *sim = NULL;
+    double t0 = bench_cpu_s();
+    GF_TRY(make_sim(ctx, &spec, &sim));
+    long chunk = (long)ceil(50.0 * t_visq / gf_sim_dt_s(sim));
+    gf_status st = GF_OK;
+    while (st == GF_OK && gf_sim_time_s(sim) < IMM_END_T_VISQ * t_visq) {
+        st = gf_sim_advance(sim, chunk);
+        double pb = gauge_Pa(sim, "base_x8_16R0");
+        pmin = fmin(pmin, pb), pmax = fmax(pmax, pb);
+    }
+    r->cpu_s = bench_cpu_s() - t0;
+    if (st == GF_OK && d->n_diag <= 16)
+        st = d->diagnose(sim, v);
+    gf_sim_destroy(&sim);
+    GF_TRY(st);
+    r->runout = v[0] / (IMM_R0_OVER_D * IMM_D);
+    r->pb8 = (fabs(pmin) > fabs(pmax) ? pmin : pmax) / drho_g_H0;
+    return GF_OK;
+}
+
+static int imm_is_reference(const bench_knobs *k)
+{
+    return fabs(k->cell_over_D - 1.0) < 1e-12 && fabs(k->dt_over_tc - 1.0 / 50) < 1e-12;
+}
+
+static gf_status immersed_reference(gf_ctx *ctx)
+{
+    const bench_knobs fine = {1.0 / 50, BENCH_DEFAULT_SKIN_OVER_D, BENCH_DEFAULT_TC_ND, 1.0};
+    double sum = 0.0, sum2 = 0.0;
+    for (int s = 0; s < IMM_SEEDS; ++s) {
+        GF_TRY(immersed_run(ctx, &fine, (uint64_t)(s + 1), &imm_ref_runs[s]));
+        double R = imm_ref_runs[s].runout;
+        sum += R, sum2 += R * R;
+        printf("immersed_collapse reference seed %d (cell 1 D, dt = t_c/50): R_inf/R0 %.4f, Pb(R0/2) %+.4f drho g H0, "
+               "%.1f CPU s\n", s + 1, R, imm_ref_runs[s].pb8, imm_ref_runs[s].cpu_s);
+        fflush(stdout);
+    }
+    imm_ref_mean = sum / IMM_SEEDS;
+    imm_ref_sd = sqrt(fmax(0.0, sum2 / IMM_SEEDS - imm_ref_mean * imm_ref_mean));
+    printf("immersed_collapse reference: R_inf/R0 mean %.4f, seed scatter (sd) %.4f = %.1f %%\n", imm_ref_mean,
+           imm_ref_sd, 100.0 * imm_ref_sd / imm_ref_mean);
+    fflush(stdout);
+    return GF_OK;
+}
+
+/* Seed 1 at setting k against the mean run-out of the reference seeds. */
+static gf_status measure_immersed(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out)
+{
+    if (isnan(imm_ref_mean))
+        GF_TRY(immersed_reference(ctx));
+    imm_run r;
+    if (imm_is_reference(k))
+        r = imm_ref_runs[0]; /* the reference's seed 1 is this setting's run */
+    else
+        GF_TRY(immersed_run(ctx, k, 1, &r));
+    *out = (bench_result){r.runout, imm_ref_mean, fabs(r.runout / imm_ref_mean - 1.0), r.cpu_s, r.pb8};
     return GF_OK;
 }
 
@@ -351,7 +534,7 @@ static gf_status measure_settling(gf_ctx *ctx, const bench_knobs *k, int full, b
     gf_sim_destroy(&sim);
     GF_TRY(st);
     double rz = pow(1.0 - phi, 4.65);
-    *out = (bench_result){v[2], rz, fabs(v[2] / rz - 1.0), wall};
+    *out = (bench_result){v[2], rz, fabs(v[2] / rz - 1.0), wall, NAN};
     return GF_OK;
 }
 
@@ -360,17 +543,27 @@ static gf_status measure_settling(gf_ctx *ctx, const bench_knobs *k, int full, b
 static const bench_case cases[] = {
     {"restitution", "restitution of a normal collision, clipped law, eps_max 0.5 (1)",
      "closed form of the clipped oscillator, 0.550 (digest §1.2)", "worst |e/e_closed - 1| over onset phases (1)",
-     0.01, BENCH_KNOB_DT, 0, always, measure_restitution},
+     0.01, BENCH_KNOB_DT, 0, always, measure_restitution, NULL, NULL, 0, 0, NULL},
     {"contact_duration", "overlap duration / t_c, unclipped law, eps 0.87 (1)", "t_c exactly (Izard (3.17))",
-     "worst |T/t_c - 1| over onset phases (1)", 0.03, BENCH_KNOB_DT, 0, always, measure_duration},
+     "worst |T/t_c - 1| over onset phases (1)", 0.03, BENCH_KNOB_DT, 0, always, measure_duration, NULL, NULL, 0, 0, NULL},
     {"gas_energy", "max relative energy error, elastic frictionless gas (1)", "0 (energy conserved by the ODE)",
-     "max |E/E0 - 1| (1)", 1e-3, BENCH_KNOB_DT | BENCH_KNOB_SKIN, 0, always, measure_gas},
+     "max |E/E0 - 1| (1)", 1e-3, BENCH_KNOB_DT | BENCH_KNOB_SKIN, 0, always, measure_gas, NULL, NULL, 0, 0, NULL},
     {"collapse_runout", "final front position / D, dry collapse R0 = 8 D, a = 0.5 (1)",
      "finest run: dt = t_c/200, t_c sqrt(g/D) = 5e-3, mean of 3 seeds", "|R/R_finest - 1| (1)", 0.10, BENCH_KNOB_DT | BENCH_KNOB_TC,
-     1, collapse_available, measure_collapse},
+     1, collapse_available, measure_collapse, NULL, NULL, 0, 0, NULL},
     {"hindered_settling", "settling velocity / Stokes velocity, suspension phi = 0.2, Re_t = 0.05 (1)",
      "Richardson & Zaki 1954: (1 - phi)^4.65", "|U/U_RZ - 1| (1)", 0.10, BENCH_KNOB_DT | BENCH_KNOB_CELL, 0,
-     settling_available, measure_settling},
+     settling_available, measure_settling, NULL, NULL, 0, 0, NULL},
+    {"fluid_cell_order", "rms velocity error / U F(t), Taylor-Green vortex Re 10, t = 1/(U k) (1)",
+     "exact decay exp(-2 nu k^2 t) (Taylor & Green 1937)", "rms |u - u_exact| / (U F) (1)", 0.05, BENCH_KNOB_CELL, 0,
+     always, measure_fluid_tgv, NULL, fluid_cell_list, 0, 4, NULL},
+    {"fluid_wall_order", "rms velocity error / u_max, start-up plane Poiseuille, t = 0.1 L^2/nu (1)",
+     "exact series solution (gf_fluid_exact.h)", "rms |u - u_exact| / u_max (1)", 0.05, BENCH_KNOB_CELL, 0, always,
+     measure_fluid_poiseuille, NULL, fluid_cell_list, 0, 4, NULL},
+    {"immersed_collapse", "run-out R_inf/R0, immersed dense collapse R0 = 16 D, a = 0.5, phi_i 0.60 (1)",
+     "finest run: cell 1 D, dt = t_c/50, mean of 3 seeds", "|R_inf/R_ref - 1| (1)", 0.10,
+     BENCH_KNOB_DT | BENCH_KNOB_CELL, 1, immersed_available, measure_immersed, imm_dt_list, imm_cell_list, 2, 4,
+     "dominant basal excess pressure at x = R0/2 / (drho g H0)"},
 };
 
 const bench_case *bench_cases(int *n)

@@ -10,6 +10,8 @@
  *     p = ln(e_1 / e_2) / ln(dt_1 / dt_2),
  * and the error ratio e(dt)/e(dt/2) when the sweep holds both (1/10 -> 1/20,
  * 1/100 -> 1/200): 4 for a second-order observable, 2 for first order.
+ * The order in cell size h is the same formula along the cell sweep (at
+ * dt = t_c/50): p = ln(e_1 / e_2) / ln(h_1 / h_2).
  */
 #include <math.h>
 #include <netcdf.h>
@@ -101,20 +103,65 @@ void bench_print_orders(const bench_point *pts, int n, const bench_case *cases, 
     }
 }
 
+/* Points of case c on the cell sweep (other knobs at their defaults), by decreasing cell size. */
+static int cell_sweep(const bench_point *pts, int n, int c, const bench_point **out, int cap)
+{
+    int m = 0;
+    for (int i = 0; i < n && m < cap; ++i) {
+        const bench_point *p = &pts[i];
+        if (p->case_index != c || p->status != GF_OK)
+            continue;
+        if (fabs(p->k.skin_over_D - BENCH_DEFAULT_SKIN_OVER_D) > 1e-12 ||
+            fabs(p->k.t_contact_nd - BENCH_DEFAULT_TC_ND) > 1e-15 ||
+            fabs(p->k.dt_over_tc - BENCH_DEFAULT_DT_OVER_TC) > 1e-12)
+            continue;
+        int k = m++;
+        while (k > 0 && out[k - 1]->k.cell_over_D < p->k.cell_over_D) {
+            out[k] = out[k - 1];
+            --k;
+        }
+        out[k] = p;
+    }
+    return m;
+}
+
+void bench_print_cell_orders(const bench_point *pts, int n, const bench_case *cases, int n_cases)
+{
+    printf("\nmeasured convergence in cell size (other knobs at default):\n");
+    for (int c = 0; c < n_cases; ++c) {
+        const bench_point *s[32];
+        if (!(cases[c].knobs & BENCH_KNOB_CELL))
+            continue;
+        int m = cell_sweep(pts, n, c, s, 32);
+        if (m < 2)
+            continue;
+        printf("  %-17s", cases[c].name);
+        for (int i = 0; i + 1 < m; ++i) {
+            double e1 = s[i]->r.error, e2 = s[i + 1]->r.error, r = s[i]->k.cell_over_D / s[i + 1]->k.cell_over_D;
+            double p = (e1 > 0.0 && e2 > 0.0) ? log(e1 / e2) / log(r) : NAN;
+            printf("  %gD->%gD: p %.2f", s[i]->k.cell_over_D, s[i + 1]->k.cell_over_D, p);
+        }
+        printf("\n");
+    }
+}
+
 static gf_status write_csv(gf_ctx *ctx, const char *path, const bench_point *pts, int n, const bench_case *cases)
 {
     FILE *f = fopen(path, "w");
     if (!f)
         return GF_FAIL(ctx, GF_ERR_IO, "bench: cannot write %s", path);
     fprintf(f, "case,dt_over_tc,skin_over_D,t_contact_nd,cell_over_D,observable,reference,error,tolerance,cpu_time_s,"
-               "wall_time_s,on_front,recommended,status\n");
+               "wall_time_s,on_front,recommended,status,aux_observable\n");
     for (int i = 0; i < n; ++i) {
         const bench_point *p = &pts[i];
-        fprintf(f, "%s,%.6g,%.6g,%.6g,%.6g,%.10g,%.10g,%.6g,%.3g,%.6g,%.6g,%d,%d,%s\n", cases[p->case_index].name,
+        fprintf(f, "%s,%.6g,%.6g,%.6g,%.6g,%.10g,%.10g,%.6g,%.3g,%.6g,%.6g,%d,%d,%s,", cases[p->case_index].name,
                 p->k.dt_over_tc, p->k.skin_over_D, p->k.t_contact_nd, p->k.cell_over_D, p->r.observable,
                 p->r.reference, p->r.error, cases[p->case_index].tolerance, p->r.cpu_s, p->wall_s, p->on_front,
                 p->recommended,
                 p->status == GF_OK ? "ok" : gf_status_str(p->status));
+        if (cases[p->case_index].aux && p->status == GF_OK)
+            fprintf(f, "%.10g", p->r.aux);
+        fprintf(f, "\n");
     }
     if (fclose(f) != 0)
         return GF_FAIL(ctx, GF_ERR_IO, "bench: error closing %s", path);
@@ -185,6 +232,9 @@ static gf_status write_nc(gf_ctx *ctx, const char *path, const bench_point *pts,
     NC(put_text(ncid, v_cobs, "long_name", "observable of the case (dimensionless)"));
     NC(nc_def_var(ncid, "case_reference", NC_CHAR, 2, dimsd, &v_cref));
     NC(put_text(ncid, v_cref, "long_name", "reference of the case"));
+    int v_caux;
+    NC(nc_def_var(ncid, "case_aux", NC_CHAR, 2, dimsd, &v_caux));
+    NC(put_text(ncid, v_caux, "long_name", "second observable of the case (empty: none)"));
     NC(def_double(ncid, d_case, "tolerance", "1", "error accepted for the recommended default", &v_tol));
     NC(nc_def_var(ncid, "recommended_setting", NC_INT, 1, &d_case, &v_rec));
     NC(put_text(ncid, v_rec, "long_name", "index of the recommended setting (-1: none within tolerance)"));
@@ -206,6 +256,7 @@ static gf_status write_nc(gf_ctx *ctx, const char *path, const bench_point *pts,
         {"error", "1", "error against the reference"},
         {"cpu_time", "s", "CPU time of the setting's simulation calls, one thread (best of repeats)"},
         {"wall_time", "s", "wall-clock time of the setting (best of repeats)"},
+        {"aux_observable", "1", "second observable of the case, recorded not judged (see case_aux); fill: none"},
     };
     const int n_dv = (int)(sizeof dv / sizeof dv[0]);
     for (int k = 0; k < n_dv; ++k)
@@ -239,6 +290,9 @@ static gf_status write_nc(gf_ctx *ctx, const char *path, const bench_point *pts,
         memset(doc, 0, sizeof doc);
         snprintf(doc, sizeof doc, "%s", cases[c].reference);
         NC(nc_put_vara_text(ncid, v_cref, st, cd, doc));
+        memset(doc, 0, sizeof doc);
+        snprintf(doc, sizeof doc, "%s", cases[c].aux ? cases[c].aux : "");
+        NC(nc_put_vara_text(ncid, v_caux, st, cd, doc));
         size_t i1 = (size_t)c;
         NC(nc_put_var1_double(ncid, v_tol, &i1, &cases[c].tolerance));
         int rec = -1;
@@ -255,9 +309,10 @@ static gf_status write_nc(gf_ctx *ctx, const char *path, const bench_point *pts,
         NC(nc_put_vara_text(ncid, v_name, st, ct, buf));
         NC(nc_put_var1_int(ncid, v_ci, &i1, &p->case_index));
         int ok = p->status == GF_OK;
-        double vals[9] = {p->k.dt_over_tc, p->k.skin_over_D, p->k.t_contact_nd, p->k.cell_over_D,
-                          ok ? p->r.observable : NAN, ok ? p->r.reference : NAN, ok ? p->r.error : NAN,
-                          ok ? p->r.cpu_s : NAN, ok ? p->wall_s : NAN};
+        int has_aux = ok && cases[p->case_index].aux != NULL;
+        double vals[10] = {p->k.dt_over_tc, p->k.skin_over_D, p->k.t_contact_nd, p->k.cell_over_D,
+                           ok ? p->r.observable : NAN, ok ? p->r.reference : NAN, ok ? p->r.error : NAN,
+                           ok ? p->r.cpu_s : NAN, ok ? p->wall_s : NAN, has_aux ? p->r.aux : NAN};
         for (int k = 0; k < n_dv; ++k)
             NC(nc_put_var1_double(ncid, v[k], &i1, &vals[k]));
         signed char fr = (signed char)p->on_front, rc = (signed char)p->recommended;

@@ -2,7 +2,7 @@
  * gf-bench-accuracy: run time against error for the validation scenes that
  * have a reference (bench_cases.c), the Pareto front of each, the
  * recommended default (cheapest setting within the scene's tolerance) and the
- * measured convergence order in dt.
+ * measured convergence orders in dt and in fluid cell size.
  *
  *   gf-bench-accuracy [--quick | --full] [--out DIR] [--repeats N] [--case NAME]...
  *
@@ -11,11 +11,15 @@
  *   skin/D        in {0.05, 0.1, 0.2, 0.4}   (cost only: the Verlet list)
  *   t_c sqrt(g/D) in {1e-2, 5e-3}            (where the physics sees it)
  *   fluid cell/D  in {1.5, 2, 3, 4}          (where the fluid works)
+ * unless a case lists its own values (bench_case.dt_list, cell_list): the
+ * fluid cases take cell/D in {4, 2, 1, 0.5} of a nominal D, the immersed
+ * collapse cell/D in {4, 2, 1.5, 1} and dt/t_c in {1/20, 1/50}. A case that
+ * does not sweep dt (the grain-free fluid cases) runs at one dt.
  * --quick (default): the dt sweep with the other knobs at default, plus the
  *   sweep of each other knob at the default dt (t_c/50); a minute or two on
  *   one core.
  * --full: every combination, longer runs, more onset phases, and the cases
- *   marked full_only (the dry collapse).
+ *   marked full_only (the dry and the immersed collapse).
  * Each setting runs `repeats` times (default 3; once when a run takes more
  * than 5 CPU s, where timer noise no longer matters); its cost is the best
  * CPU time of them (bench_accuracy.h: CPU, not wall, so that other processes
@@ -40,62 +44,72 @@ static const double cell_sweep[] = {1.5, 2.0, 3.0, 4.0};
 
 static void label_of(const bench_case *c, const bench_knobs *k, char *buf, size_t len)
 {
-    int n = snprintf(buf, len, "dt=tc/%.0f", 1.0 / k->dt_over_tc);
+    int n = 0;
+    buf[0] = '\0';
+    if (c->knobs & BENCH_KNOB_DT)
+        n += snprintf(buf, len, "dt=tc/%.0f", 1.0 / k->dt_over_tc);
     if (c->knobs & BENCH_KNOB_SKIN)
         n += snprintf(buf + n, len - (size_t)n, " skin=%g", k->skin_over_D);
     if (c->knobs & BENCH_KNOB_TC)
         n += snprintf(buf + n, len - (size_t)n, " tc=%g", k->t_contact_nd);
     if (c->knobs & BENCH_KNOB_CELL)
-        snprintf(buf + n, len - (size_t)n, " cell=%gD", k->cell_over_D);
+        snprintf(buf + n, len - (size_t)n, "%scell=%gD", n ? " " : "", k->cell_over_D);
+}
+
+/* Values of one knob for case c: the case's own list, else the common sweep.
+ * A knob the case does not sweep has one value, its default (knobs_at). */
+static int knob_values(unsigned knobs, unsigned bit, const double *own, int n_own, const double *common,
+                       int n_common, const double **out)
+{
+    *out = own ? own : common;
+    if (!(knobs & bit))
+        return 1;
+    return own ? n_own : n_common;
+}
+
+static bench_knobs knobs_at(const bench_case *c, const double *dt, int a, const double *cell, int q, int b, int t)
+{
+    bench_knobs k = {BENCH_DEFAULT_DT_OVER_TC, BENCH_DEFAULT_SKIN_OVER_D, BENCH_DEFAULT_TC_ND,
+                     BENCH_DEFAULT_CELL_OVER_D};
+    if (a >= 0 && (c->knobs & BENCH_KNOB_DT))
+        k.dt_over_tc = dt[a];
+    if (q >= 0 && (c->knobs & BENCH_KNOB_CELL))
+        k.cell_over_D = cell[q];
+    if (b >= 0 && (c->knobs & BENCH_KNOB_SKIN))
+        k.skin_over_D = skin_sweep[b];
+    if (t >= 0 && (c->knobs & BENCH_KNOB_TC))
+        k.t_contact_nd = tc_sweep[t];
+    return k;
 }
 
 /* Settings of case c: appends to ks (capacity cap), returns the count. */
 static int settings_of(const bench_case *c, int full, bench_knobs *ks, int cap)
 {
-    const bench_knobs def = {BENCH_DEFAULT_DT_OVER_TC, BENCH_DEFAULT_SKIN_OVER_D, BENCH_DEFAULT_TC_ND,
-                             BENCH_DEFAULT_CELL_OVER_D};
-    int n = 0;
+    const double *dt, *cell;
+    int n_dt = knob_values(c->knobs, BENCH_KNOB_DT, c->dt_list, c->n_dt, dt_sweep, 5, &dt);
+    int n_cell = knob_values(c->knobs, BENCH_KNOB_CELL, c->cell_list, c->n_cell, cell_sweep, 4, &cell);
     int n_skin = (c->knobs & BENCH_KNOB_SKIN) ? 4 : 1, n_tc = (c->knobs & BENCH_KNOB_TC) ? 2 : 1;
-    int n_cell = (c->knobs & BENCH_KNOB_CELL) ? 4 : 1;
+    int n = 0;
     if (full) {
-        for (int a = 0; a < 5; ++a)
+        for (int a = 0; a < n_dt; ++a)
             for (int b = 0; b < n_skin; ++b)
                 for (int t = 0; t < n_tc; ++t)
-                    for (int q = 0; q < n_cell && n < cap; ++q) {
-                        bench_knobs k = def;
-                        k.dt_over_tc = dt_sweep[a];
-                        if (c->knobs & BENCH_KNOB_SKIN)
-                            k.skin_over_D = skin_sweep[b];
-                        if (c->knobs & BENCH_KNOB_TC)
-                            k.t_contact_nd = tc_sweep[t];
-                        if (c->knobs & BENCH_KNOB_CELL)
-                            k.cell_over_D = cell_sweep[q];
-                        ks[n++] = k;
-                    }
+                    for (int q = 0; q < n_cell && n < cap; ++q)
+                        ks[n++] = knobs_at(c, dt, a, cell, q, b, t);
         return n;
     }
-    for (int a = 0; a < 5 && n < cap; ++a) {
-        ks[n] = def;
-        ks[n++].dt_over_tc = dt_sweep[a];
-    }
-    if (c->knobs & BENCH_KNOB_SKIN)
-        for (int b = 0; b < 4 && n < cap; ++b)
-            if (fabs(skin_sweep[b] - def.skin_over_D) > 1e-12) {
-                ks[n] = def;
-                ks[n++].skin_over_D = skin_sweep[b];
-            }
-    if (c->knobs & BENCH_KNOB_TC)
-        for (int t = 0; t < 2 && n < cap; ++t)
-            if (fabs(tc_sweep[t] - def.t_contact_nd) > 1e-15) {
-                ks[n] = def;
-                ks[n++].t_contact_nd = tc_sweep[t];
-            }
-    if (c->knobs & BENCH_KNOB_CELL)
-        for (int q = 0; q < 4 && n < cap; ++q)
-            if (fabs(cell_sweep[q] - def.cell_over_D) > 1e-12) {
-                ks[n] = def;
-                ks[n++].cell_over_D = cell_sweep[q];
-            }
+    /* --quick: the dt sweep at the other defaults, then each other knob's sweep at the default dt */
+    for (int a = 0; a < n_dt && n < cap; ++a)
+        ks[n++] = knobs_at(c, dt, a, cell, -1, -1, -1);
+    for (int b = 0; (c->knobs & BENCH_KNOB_SKIN) && b < 4 && n < cap; ++b)
+        if (fabs(skin_sweep[b] - BENCH_DEFAULT_SKIN_OVER_D) > 1e-12)
+            ks[n++] = knobs_at(c, dt, -1, cell, -1, b, -1);
+    for (int t = 0; (c->knobs & BENCH_KNOB_TC) && t < 2 && n < cap; ++t)
+        if (fabs(tc_sweep[t] - BENCH_DEFAULT_TC_ND) > 1e-15)
+            ks[n++] = knobs_at(c, dt, -1, cell, -1, -1, t);
+    for (int q = 0; (c->knobs & BENCH_KNOB_CELL) && q < n_cell && n < cap; ++q)
+        if (fabs(cell[q] - BENCH_DEFAULT_CELL_OVER_D) > 1e-12)
+            ks[n++] = knobs_at(c, dt, -1, cell, q, -1, -1);
     return n;
 }
 
@@ -183,8 +197,11 @@ int main(int argc, char **argv)
             if (p->status == GF_OK) {
                 p->r.cpu_s = best;
                 p->wall_s = best_wall;
-                printf("%-17s %-28s %14.8g %14.8g %10.3g %10.4g %10.4g\n", bc->name, p->label, p->r.observable,
+                printf("%-17s %-28s %14.8g %14.8g %10.3g %10.4g %10.4g", bc->name, p->label, p->r.observable,
                        p->r.reference, p->r.error, p->r.cpu_s, p->wall_s);
+                if (bc->aux)
+                    printf("  (%s: %.4g)", bc->aux, p->r.aux);
+                printf("\n");
             } else {
                 n_failed++;
                 printf("%-17s %-28s FAILED (%s): %s\n", bc->name, p->label, gf_status_str(p->status), p->message);
@@ -214,6 +231,7 @@ int main(int argc, char **argv)
             printf("\n  %-17s recommended: none within tolerance\n", "");
     }
     bench_print_orders(pts, n, cases, n_cases);
+    bench_print_cell_orders(pts, n, cases, n_cases);
     gf_ctx ctx = {0};
     gf_status st = bench_write(&ctx, out_dir, pts, n, cases, n_cases, full);
     free(pts);
