@@ -14,7 +14,7 @@
  *                [--scene settled_bed|column_collapse]
  *
  * --lammps-data writes the settled bed of the LAST N as a LAMMPS data file
- * (atom_style sphere) plus PATH.params (k_n, gamma_n, k_t, mu, dt, box),
+ * (atom_style sphere, gf_lammps_data.h) plus PATH.params (k_n, gamma_n, k_t, mu, dt, box),
  * for workflows/bench/lammps_compare.sh. --dump writes the grains after the
  * first timed run (one line "x y z radius" per grain, SI), the same columns
  * as the LAMMPS dump of lammps_compare.sh, for the observable comparison
@@ -34,7 +34,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "contact/gf_contact.h"
+#include "gf_lammps_data.h"
 #include "gf_sim.h"
 
 static double cpu_time_s(void)
@@ -108,52 +108,6 @@ static unsigned long long state_hash(gf_sim *sim)
     }
     free(slot);
     return h;
-}
-
-static int write_lammps(gf_sim *sim, const char *path)
-{
-    gf_particles *p = gf_sim_particles(sim);
-    double lo[3], hi[3];
-    int per[3];
-    gf_sim_box(sim, lo, hi, per);
-    FILE *f = fopen(path, "w");
-    if (!f)
-        return 0;
-    const gf_run_spec *s = gf_sim_spec(sim);
-    double ytop = 0.0;
-    for (size_t i = 0; i < p->n_local; ++i)
-        ytop = fmax(ytop, p->y_m[i] + p->radius_m[i]);
-    fprintf(f, "grainflow settled_bed, %zu grains (SI units)\n\n%zu atoms\n1 atom types\n\n", p->n_local, p->n_local);
-    fprintf(f, "%.17g %.17g xlo xhi\n%.17g %.17g ylo yhi\n%.17g %.17g zlo zhi\n\nAtoms # sphere\n\n", lo[0], hi[0],
-            lo[1], fmax(hi[1], ytop + 0.01 * (hi[1] - lo[1])), lo[2], hi[2]);
-    for (size_t i = 0; i < p->n_local; ++i) {
-        double x = p->x_m[i] - (hi[0] - lo[0]) * floor((p->x_m[i] - lo[0]) / (hi[0] - lo[0]));
-        double z = p->z_m[i] - (hi[2] - lo[2]) * floor((p->z_m[i] - lo[2]) / (hi[2] - lo[2]));
-        fprintf(f, "%zu 1 %.17g %.17g %.17g %.17g %.17g\n", i + 1, 2.0 * p->radius_m[i], s->grains.density_kg_m3, x,
-                p->y_m[i], z);
-    }
-    fprintf(f, "\nVelocities\n\n");
-    for (size_t i = 0; i < p->n_local; ++i)
-        fprintf(f, "%zu %.17g %.17g %.17g %.17g %.17g %.17g\n", i + 1, p->vx_m_s[i], p->vy_m_s[i], p->vz_m_s[i],
-                p->wx_rad_s[i], p->wy_rad_s[i], p->wz_rad_s[i]);
-    fclose(f);
-    /* the law's constants for the mean pair, in LAMMPS gran/hooke/history terms */
-    gf_contact_params cp;
-    gf_ctx ctx = {0};
-    gf_contact_params_from_spec(&ctx, s, &cp);
-    double gamma_n = 2.0 * cp.zeta * sqrt(cp.m_eff_mean_kg * cp.k_n_N_m);
-    char pp[600];
-    snprintf(pp, sizeof pp, "%s.params", path);
-    f = fopen(pp, "w");
-    if (!f)
-        return 0;
-    /* gran/hooke/history: F_n = k_n delta - m_eff gamma_n v_n, gamma_n in 1/s */
-    fprintf(f, "KN=%.17g\nGAMMAN=%.17g\nKT=%.17g\nGAMMAT=0\nMU=%.17g\nDT=%.17g\nSKIN=%.17g\nG=%.17g\nN=%zu\n",
-            cp.k_n_N_m, gamma_n / cp.m_eff_mean_kg, cp.kt_over_kn * cp.k_n_N_m, cp.mu_grain, gf_sim_dt_s(sim),
-            s->contact.skin_over_D * s->grains.diameter_m, s->gravity_m_s2, p->n_local);
-    fprintf(f, "LX=%.17g\nLZ=%.17g\nD=%.17g\n", hi[0] - lo[0], hi[2] - lo[2], s->grains.diameter_m);
-    fclose(f);
-    return 1;
 }
 
 /* One line "x y z radius" per grain (SI). */
@@ -260,7 +214,7 @@ int main(int argc, char **argv)
                 fprintf(stderr, "gf-bench-dem: %s\n", ctx.last_msg);
                 return 1;
             }
-            if (q == 0 && a.lammps && k == a.n_n - 1 && !write_lammps(sim, a.lammps)) {
+            if (q == 0 && a.lammps && k == a.n_n - 1 && !gf_bench_write_lammps(sim, a.lammps)) {
                 fprintf(stderr, "gf-bench-dem: cannot write %s\n", a.lammps);
                 return 1;
             }

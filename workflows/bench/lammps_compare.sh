@@ -22,8 +22,13 @@
 # bed height h = 2 <y> (centre of mass) and the packing fraction of the bulk
 # (grains centred in 3 D <= y <= h - 3 D over that slab), and their difference.
 #
+# Dry collapse (third part): workflows/bench/lammps_collapse.sh runs the
+# column collapse from the same prepared t = 0 state in both codes and
+# compares run-out, deposit height and throughput over COLLAPSE_SEEDS seeds.
+#
 # usage: lammps_compare.sh [N] [STEPS] [BUILD_DIR] [N_SETTLE] [SETTLE_STEPS]
 #        (defaults 10000 3000 build-dem 2000 20000; N_SETTLE = 0 skips the observables)
+# COLLAPSE_SEEDS=K (default 3) seeds for the dry collapse, 0 skips it (a few CPU minutes per seed).
 # NICE= (empty) runs both at normal priority (default: nice; CPU time is
 # measured either way, nice only stretches the wall time on a loaded machine).
 # GF_BED=PREFIX reuses (or keeps) the settled bed PREFIX_<N>.h5 (gf-bench-dem --bed).
@@ -91,7 +96,6 @@ echo "== LAMMPS CPU: $CPU_ALL s in all, $CPU_SETUP s for the set-up (run 0)"
 echo "== throughput per CPU-second: grainflow $GF_RATE, LAMMPS $LMP_RATE (LAMMPS loop time x CPU use: $LMP_LOOP; wall: $LMP_WALL, CPU use $CPU %)"
 awk -v a="$GF_RATE" -v b="$LMP_RATE" 'BEGIN { printf "== ratio grainflow / LAMMPS = %.2f (target >= 2)\n", a / b }'
 
-[ "$N_SETTLE" -gt 0 ] || exit 0
 # bed height h = 2 <y> and bulk packing fraction (centres in [3 D, h - 3 D]) of
 # a file of "x y z radius" lines (LAMMPS dump headers skipped)
 observe() {
@@ -103,21 +107,32 @@ observe() {
             printf "%.6f %.6f\n", h / d, v / (lx * lz * (hi - lo))
         }' "$1"
 }
-echo "== observables: N = $N_SETTLE grains settle from the same unsettled stack for $SETTLE_STEPS steps in both codes"
-OMP_NUM_THREADS=1 $NICE "$BENCH" --n "$N_SETTLE" --steps "$SETTLE_STEPS" --settle 0 --threads 1 \
-    --lammps-data "$WORK/stack.data" --dump "$WORK/gf_settled.txt" | grep "thread(s)" | tee "$WORK/gf_settle.out"
-GF_SETTLE_RATE=$(sed -n 's/.*s wall (speed-up [0-9.]*), \([0-9.e+]*\) per CPU-second.*/\1/p' "$WORK/gf_settle.out")
-. "$WORK/stack.data.params"
-lammps_input "$WORK/stack.data" "$SETTLE_STEPS" "$WORK/lmp_settled.dump" > "$WORK/in.settle"
-lammps_input "$WORK/stack.data" 0 "$WORK/lmp_stack0.dump" > "$WORK/in.settle0"
-CPU_SETUP=$(lmp_cpu "$WORK/in.settle0" "$WORK/log.settle0")
-CPU_ALL=$(lmp_cpu "$WORK/in.settle" "$WORK/log.settle")
-grep -E "Loop time|CPU use" "$WORK/log.settle" || true
-LMP_SETTLE_RATE=$(awk -v n="$N_SETTLE" -v s="$SETTLE_STEPS" -v a="$CPU_ALL" -v b="$CPU_SETUP" 'BEGIN { printf "%.4e", n * s / (a - b) }')
-awk -v a="$GF_SETTLE_RATE" -v b="$LMP_SETTLE_RATE" 'BEGIN {
-    printf "== settling, per CPU-second: grainflow %.4e, LAMMPS %.4e, ratio %.2f\n", a, b, a / b }'
-set -- $(observe "$WORK/gf_settled.txt") $(observe "$WORK/lmp_settled.dump")
-echo "== bed height h/D: grainflow $1, LAMMPS $3; bulk packing fraction: grainflow $2, LAMMPS $4"
-awk -v h1="$1" -v p1="$2" -v h2="$3" -v p2="$4" 'BEGIN {
-    printf "== difference grainflow - LAMMPS: h %+.4f D (%+.2f %%), packing fraction %+.4f (%+.2f %%)\n",
-           h1 - h2, 100 * (h1 - h2) / h2, p1 - p2, 100 * (p1 - p2) / p2 }'
+settle_observables() {
+    echo "== observables: N = $N_SETTLE grains settle from the same unsettled stack for $SETTLE_STEPS steps in both codes"
+    OMP_NUM_THREADS=1 $NICE "$BENCH" --n "$N_SETTLE" --steps "$SETTLE_STEPS" --settle 0 --threads 1 \
+        --lammps-data "$WORK/stack.data" --dump "$WORK/gf_settled.txt" | grep "thread(s)" | tee "$WORK/gf_settle.out"
+    GF_SETTLE_RATE=$(sed -n 's/.*s wall (speed-up [0-9.]*), \([0-9.e+]*\) per CPU-second.*/\1/p' "$WORK/gf_settle.out")
+    . "$WORK/stack.data.params"
+    lammps_input "$WORK/stack.data" "$SETTLE_STEPS" "$WORK/lmp_settled.dump" > "$WORK/in.settle"
+    lammps_input "$WORK/stack.data" 0 "$WORK/lmp_stack0.dump" > "$WORK/in.settle0"
+    CPU_SETUP=$(lmp_cpu "$WORK/in.settle0" "$WORK/log.settle0")
+    CPU_ALL=$(lmp_cpu "$WORK/in.settle" "$WORK/log.settle")
+    grep -E "Loop time|CPU use" "$WORK/log.settle" || true
+    LMP_SETTLE_RATE=$(awk -v n="$N_SETTLE" -v s="$SETTLE_STEPS" -v a="$CPU_ALL" -v b="$CPU_SETUP" 'BEGIN { printf "%.4e", n * s / (a - b) }')
+    awk -v a="$GF_SETTLE_RATE" -v b="$LMP_SETTLE_RATE" 'BEGIN {
+        printf "== settling, per CPU-second: grainflow %.4e, LAMMPS %.4e, ratio %.2f\n", a, b, a / b }'
+    set -- $(observe "$WORK/gf_settled.txt") $(observe "$WORK/lmp_settled.dump")
+    echo "== bed height h/D: grainflow $1, LAMMPS $3; bulk packing fraction: grainflow $2, LAMMPS $4"
+    awk -v h1="$1" -v p1="$2" -v h2="$3" -v p2="$4" 'BEGIN {
+        printf "== difference grainflow - LAMMPS: h %+.4f D (%+.2f %%), packing fraction %+.4f (%+.2f %%)\n",
+               h1 - h2, 100 * (h1 - h2) / h2, p1 - p2, 100 * (p1 - p2) / p2 }'
+}
+[ "$N_SETTLE" -gt 0 ] && settle_observables
+
+COLLAPSE_SEEDS=${COLLAPSE_SEEDS-3}
+[ "$COLLAPSE_SEEDS" -gt 0 ] || exit 0
+if [ -x "$BUILD/workflows/bench/gf-bench-collapse" ]; then
+    "$ROOT/workflows/bench/lammps_collapse.sh" "$COLLAPSE_SEEDS" "$BUILD"
+else
+    echo "== dry collapse skipped: no $BUILD/workflows/bench/gf-bench-collapse (build it, or COLLAPSE_SEEDS=0)"
+fi

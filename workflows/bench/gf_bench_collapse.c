@@ -1,0 +1,183 @@
+/*
+ * gf-bench-collapse: one dry column collapse (scene column_collapse) run to
+ * rest, for the side-by-side comparison with LAMMPS
+ * (workflows/bench/lammps_collapse.sh).
+ *
+ *   gf-bench-collapse [--seed S] [--aspect A] [--length R0_over_D] [--width W_over_D]
+ *                     [--end-time T_nd] [--lammps-data PATH] [--dump PATH]
+ *
+ * The run spec's own material and contact parameters (Izard 2014 §5.2 glass
+ * beads: D = 7.6 mm, 5 % polydisperse, eps 0.87, mu 0.25 on grains and
+ * walls, t_c = 1e-2 sqrt(D/g), dt = t_c/50, skin 0.1 D) and the scene's
+ * preparation: packing, 5 sqrt(D/g) of re-equilibration behind the gate,
+ * clock reset, gate removed (gf_sim_create runs all of it).
+ *
+ * --lammps-data writes that t = 0 state (mobile grains type 1, glued base
+ * grains type 2; gf_lammps_data.h) and PATH.params, to which the collapse
+ * geometry is appended: R0, H0, the walls x = 0 and x = L, floor y = 0, top
+ * y = TOP, the slab width W. The run then goes on until the scene's rest
+ * test (done(), checked every 0.25 sqrt(D/g), as gf-bench-accuracy does) or
+ * the end time (default: the scene's, 10 T0 + 40 sqrt(D/g)), and prints the
+ * step count, the CPU time of the stepping calls alone (the preparation is
+ * not the comparison's business), and the scene's own front_position and
+ * deposit_height. --dump writes the final grains, one "x y z radius type"
+ * line each (the columns of the LAMMPS dump of lammps_collapse.sh), so that
+ * the script measures both codes' deposits with one definition.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "gf_lammps_data.h"
+#include "gf_sim.h"
+#include "scenes/gf_scene.h"
+
+typedef struct collapse_args {
+    long seed;
+    double aspect, length_D, width_D, end_nd;
+    const char *lammps, *dump;
+} collapse_args;
+
+static double cpu_time_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+static int parse(int argc, char **argv, collapse_args *a)
+{
+    *a = (collapse_args){.seed = 1, .aspect = 1.0, .length_D = 16.0, .width_D = 3.0};
+    for (int i = 1; i < argc; i += 2) {
+        const char *k = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (!v)
+            return 0;
+        if (!strcmp(k, "--seed"))
+            a->seed = atol(v);
+        else if (!strcmp(k, "--aspect"))
+            a->aspect = atof(v);
+        else if (!strcmp(k, "--length"))
+            a->length_D = atof(v);
+        else if (!strcmp(k, "--width"))
+            a->width_D = atof(v);
+        else if (!strcmp(k, "--end-time"))
+            a->end_nd = atof(v);
+        else if (!strcmp(k, "--lammps-data"))
+            a->lammps = v;
+        else if (!strcmp(k, "--dump"))
+            a->dump = v;
+        else
+            return 0;
+    }
+    return a->seed > 0 && a->aspect > 0.0 && a->length_D > 0.0 && a->width_D > 0.0;
+}
+
+static gf_status make_spec(gf_ctx *ctx, const collapse_args *a, gf_run_spec *s)
+{
+    gf_run_spec_defaults(s); /* column_collapse with Izard's grains and contacts */
+    s->seed = (uint64_t)a->seed;
+    s->end_time_nd = a->end_nd; /* 0: the scene's end time */
+    GF_TRY(gf_run_spec_set_param(ctx, s, "aspect_ratio", a->aspect));
+    GF_TRY(gf_run_spec_set_param(ctx, s, "column_length_over_D", a->length_D));
+    return gf_run_spec_set_param(ctx, s, "width_over_D", a->width_D);
+}
+
+/* The geometry the LAMMPS input needs besides the law (column_collapse's walls). */
+static int append_geometry(gf_sim *sim, const collapse_args *a, const char *data_path)
+{
+    const gf_run_spec *s = gf_sim_spec(sim);
+    double lo[3], hi[3];
+    int per[3];
+    gf_sim_box(sim, lo, hi, per);
+    char pp[600];
+    snprintf(pp, sizeof pp, "%s.params", data_path);
+    FILE *f = fopen(pp, "a");
+    if (!f)
+        return 0;
+    double D = s->grains.diameter_m;
+    fprintf(f, "R0=%.17g\nH0=%.17g\nL=%.17g\nTOP=%.17g\nW=%.17g\nRHO=%.17g\n", a->length_D * D,
+            a->aspect * a->length_D * D, hi[0], hi[1], hi[2] - lo[2], s->grains.density_kg_m3);
+    return fclose(f) == 0;
+}
+
+static int write_dump(gf_sim *sim, const char *path)
+{
+    const gf_particles *p = gf_sim_particles(sim);
+    FILE *f = fopen(path, "w");
+    if (!f)
+        return 0;
+    for (size_t i = 0; i < p->n_local; ++i)
+        fprintf(f, "%.17g %.17g %.17g %.17g %d\n", p->x_m[i], p->y_m[i], p->z_m[i], p->radius_m[i],
+                (p->flags[i] & GF_P_GLUED) ? 2 : 1);
+    return fclose(f) == 0;
+}
+
+/* Steps to rest or to the end time; *cpu_s: CPU time of gf_sim_advance alone. */
+static gf_status run_to_rest(gf_sim *sim, const gf_scene_desc *d, double *cpu_s)
+{
+    const gf_run_spec *s = gf_sim_spec(sim);
+    long chunk = (long)ceil(0.25 * sqrt(s->grains.diameter_m / s->gravity_m_s2) / gf_sim_dt_s(sim));
+    *cpu_s = 0.0;
+    while (gf_sim_time_s(sim) < gf_sim_end_time_s(sim) && !d->done(sim)) {
+        double c0 = cpu_time_s();
+        GF_TRY(gf_sim_advance(sim, chunk));
+        *cpu_s += cpu_time_s() - c0;
+    }
+    return GF_OK;
+}
+
+static int report(gf_sim *sim, const gf_scene_desc *d, const collapse_args *a, double cpu_s)
+{
+    double v[16];
+    if (d->n_diag > 16 || d->diagnose(sim, v) != GF_OK)
+        return 0;
+    const gf_particles *p = gf_sim_particles(sim);
+    size_t n_glued = 0;
+    double m_mobile = 0.0; /* the rest test's unit: mean mobile mass x g D */
+    for (size_t i = 0; i < p->n_local; ++i) {
+        int glued = (p->flags[i] & GF_P_GLUED) != 0;
+        n_glued += glued;
+        m_mobile += glued ? 0.0 : p->mass_kg[i];
+    }
+    const double D = gf_sim_spec(sim)->grains.diameter_m, R0 = a->length_D * D, g = gf_sim_spec(sim)->gravity_m_s2;
+    long steps = gf_sim_step_count(sim);
+    printf("seed %ld: %zu grains (%zu glued), %ld steps to t = %.4f sqrt(D/g), %.3f s CPU, "
+           "%.4e particle-steps per CPU-second; front %.4f R0, height %.4f R0, KE %.3e m g D per grain\n",
+           a->seed, p->n_local, n_glued, steps, gf_sim_time_s(sim) / sqrt(D / g), cpu_s,
+           (double)p->n_local * steps / cpu_s, v[0] / R0, v[1] / R0,
+           gf_particles_kinetic_energy(p) / (m_mobile * g * D));
+    return 1;
+}
+
+int main(int argc, char **argv)
+{
+    collapse_args a;
+    if (!parse(argc, argv, &a)) {
+        fprintf(stderr, "usage: gf-bench-collapse [--seed S] [--aspect A] [--length R0_over_D] [--width W_over_D] "
+                        "[--end-time T_nd] [--lammps-data PATH] [--dump PATH]\n");
+        return 2;
+    }
+    gf_ctx ctx = {0};
+    gf_run_spec spec;
+    gf_sim *sim = NULL;
+    gf_sim_options opt = {.n_threads = 1};
+    const gf_scene_desc *d = gf_scene_find("column_collapse");
+    if (make_spec(&ctx, &a, &spec) != GF_OK || gf_sim_create(&ctx, &spec, &opt, &sim) != GF_OK) {
+        fprintf(stderr, "gf-bench-collapse: %s\n", ctx.last_msg);
+        return 1;
+    }
+    int ok = 1;
+    if (a.lammps && !(gf_bench_write_lammps(sim, a.lammps) && append_geometry(sim, &a, a.lammps)))
+        fprintf(stderr, "gf-bench-collapse: cannot write %s\n", a.lammps), ok = 0;
+    double cpu = 0.0;
+    if (ok && run_to_rest(sim, d, &cpu) != GF_OK)
+        fprintf(stderr, "gf-bench-collapse: %s\n", ctx.last_msg), ok = 0;
+    if (ok && !report(sim, d, &a, cpu))
+        fprintf(stderr, "gf-bench-collapse: diagnostics failed: %s\n", ctx.last_msg), ok = 0;
+    if (ok && a.dump && !write_dump(sim, a.dump))
+        fprintf(stderr, "gf-bench-collapse: cannot write %s\n", a.dump), ok = 0;
+    gf_sim_destroy(&sim);
+    return ok ? 0 : 1;
+}
