@@ -9,6 +9,8 @@
  *     the list from them, which reproduces the original list, pair order
  *     included (so forces are summed in the same order), and the rebuild
  *     criterion sees the same displacements;
+ *   - the store in its current order (the spatial sort permutes it, gf_sim_sort.c)
+ *     and the rebuild count that schedules the next sort;
  *   - tangential history of grain pairs keyed by global ids, and of
  *     (grain, wall) pairs; wall active flags, gravity (a scene may tilt it
  *     at start), RNG state, clock and step count, contact statistics.
@@ -38,6 +40,7 @@ static gf_status write_all(gf_sim *s, gf_restart *r)
     GF_TRY(gf_restart_put_f64(r, "clock", 5, clock));
     GF_TRY(gf_restart_put_u64(r, "rng", 4, s->rng.s));
     GF_TRY(gf_restart_put_f64(r, "gravity", 3, s->gravity_m_s2));
+    GF_TRY(gf_restart_put_i64(r, "sort_state", 1, (const int64_t[1]){s->n_rebuilds}));
     uint8_t active[GF_SIM_MAX_WALLS];
     double wall_force[3 * GF_SIM_MAX_WALLS];
     for (int w = 0; w < s->n_walls; ++w) {
@@ -108,6 +111,10 @@ static gf_status read_all(gf_sim *s, gf_restart *r)
     GF_TRY(gf_restart_get_f64(r, "clock", 5, clock));
     GF_TRY(gf_restart_get_u64(r, "rng", 4, s->rng.s));
     GF_TRY(gf_restart_get_f64(r, "gravity", 3, s->gravity_m_s2));
+    int64_t sort_state = 0; /* checkpoints without it: the next rebuild sorts */
+    if (gf_restart_has(r, "sort_state"))
+        GF_TRY(gf_restart_get_i64(r, "sort_state", 1, &sort_state));
+    s->n_rebuilds = (long)sort_state;
     size_t nw = 0;
     GF_TRY(gf_restart_len(r, "wall_active", &nw));
     if (nw != (size_t)s->n_walls)

@@ -137,6 +137,11 @@ gf_status gf_sim_rebuild(gf_sim *s)
     GF_TRY(gf_sim_reserve(s, p->n_local));
     gf_nlist_geom g = list_geom(s);
     gf_nlist_wrap(&g, p->n_local, p->x_m, p->y_m, p->z_m);
+    /* spatial order (gf_sim_sort.c): on a schedule of the rebuild count alone */
+    if (s->sort_every > 0 && (p->n_local >= GF_SIM_SORT_MIN_GRAINS || s->opt.sort_every > 0) &&
+        s->n_rebuilds % s->sort_every == 0)
+        GF_TRY(gf_sim_sort_grains(s));
+    s->n_rebuilds++;
     memcpy(s->x_ref, p->x_m, p->n_local * sizeof(double));
     memcpy(s->y_ref, p->y_m, p->n_local * sizeof(double));
     memcpy(s->z_ref, p->z_m, p->n_local * sizeof(double));

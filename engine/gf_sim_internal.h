@@ -95,6 +95,10 @@ struct gf_sim {
     long *sleep_quiet_steps;    /* steps each grain has stayed below the sleep speed */
     size_t sleep_cap;
     long n_sleep_events, n_wake_events;
+    /* spatial order of the store (gf_sim_sort.c) */
+    int sort_every;             /* rebuilds between sorts; 0: never */
+    long n_rebuilds;            /* gf_sim_rebuild calls (checkpointed: the sort schedule) */
+    long n_sorts;               /* sorts that moved a grain */
     /* work this run does not need (gf_sim_skips.c): GF_SKIP_* bits, decided once at creation */
     unsigned skips;
 };
@@ -113,6 +117,14 @@ gf_status gf_sim_rebuild(gf_sim *s);
 gf_status gf_sim_reserve(gf_sim *s, size_t n);
 /* Re-strides the wall history after a wall was added (history kept). */
 gf_status gf_sim_relayout_walls(gf_sim *s, int n_walls_old);
+/* Reorders the store by the Morton index of each grain's cell, with every
+ * per-grain array of the sim; called by gf_sim_rebuild every sort_every
+ * rebuilds. gf_sim_sort.c. */
+gf_status gf_sim_sort_grains(gf_sim *s);
+/* Grains below which the default schedule does not sort (the store fits in the caches). */
+#define GF_SIM_SORT_MIN_GRAINS 2048
+/* Default sort period, in neighbour-list rebuilds. */
+#define GF_SIM_SORT_EVERY_DEFAULT 20
 /* Builds the list from the saved reference positions (restart). */
 gf_status gf_sim_rebuild_from_ref(gf_sim *s);
 

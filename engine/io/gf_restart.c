@@ -80,6 +80,11 @@ static gf_status put(gf_restart *r, const char *name, size_t n, hid_t file_type,
     return GF_OK;
 }
 
+int gf_restart_has(gf_restart *r, const char *name)
+{
+    return H5Lexists(r->file, name, H5P_DEFAULT) > 0;
+}
+
 gf_status gf_restart_len(gf_restart *r, const char *name, size_t *n)
 {
     if (H5Lexists(r->file, name, H5P_DEFAULT) <= 0)

@@ -26,6 +26,8 @@ gf_status gf_restart_put_i64(gf_restart *r, const char *name, size_t n, const in
 gf_status gf_restart_put_u64(gf_restart *r, const char *name, size_t n, const uint64_t *v);
 gf_status gf_restart_put_u8(gf_restart *r, const char *name, size_t n, const uint8_t *v);
 
+/* 1 when dataset name exists (optional datasets added after the first format). */
+int gf_restart_has(gf_restart *r, const char *name);
 /* Length of dataset name (GF_ERR_IO naming the dataset when absent). */
 gf_status gf_restart_len(gf_restart *r, const char *name, size_t *n);
 /* Reads exactly n values (GF_ERR_IO when the length differs). */

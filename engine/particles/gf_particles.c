@@ -103,6 +103,26 @@ void gf_particles_remove(gf_particles *p, size_t i)
     p->n_ghost = 0;
 }
 
+void gf_particles_permute(gf_particles *p, const size_t *perm, double *tmp)
+{
+    const size_t n = p->n_local;
+#define GF_PERMUTE_FIELD(f)                                                                                  \
+    for (size_t q = 0; q < n; ++q)                                                                           \
+        tmp[q] = p->f[perm[q]];                                                                              \
+    memcpy(p->f, tmp, n * sizeof(double));
+    GF_DOUBLE_FIELDS(GF_PERMUTE_FIELD)
+#undef GF_PERMUTE_FIELD
+    int64_t *ti = (int64_t *)tmp; /* same size as a double */
+    for (size_t q = 0; q < n; ++q)
+        ti[q] = p->id[perm[q]];
+    memcpy(p->id, ti, n * sizeof(int64_t));
+    uint8_t *tf = (uint8_t *)tmp;
+    for (size_t q = 0; q < n; ++q)
+        tf[q] = p->flags[perm[q]];
+    memcpy(p->flags, tf, n);
+    p->n_ghost = 0;
+}
+
 void gf_particles_clear_forces(gf_particles *p)
 {
     size_t n = p->n_local + p->n_ghost;

@@ -49,6 +49,10 @@ gf_status gf_particles_add(gf_ctx *ctx, gf_particles *p, double x_m, double y_m,
                            double density_kg_m3, uint8_t flags, size_t *index);
 /* Removes owned grain i (swap with last local); drops ghosts. */
 void gf_particles_remove(gf_particles *p, size_t i);
+/* Reorders the locals: index q receives the grain at old index perm[q]
+ * (perm: a permutation of [0, n_local)), every field moved together (ids
+ * go with their grains); drops ghosts. tmp: scratch of n_local doubles. */
+void gf_particles_permute(gf_particles *p, const size_t *perm, double *tmp);
 /* Zeroes force and torque accumulators of locals and ghosts. */
 void gf_particles_clear_forces(gf_particles *p);
 /* Total kinetic energy (translation + rotation) of mobile locals, J. */

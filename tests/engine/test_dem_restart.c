@@ -5,7 +5,11 @@
  * (HDF5), re-created from the checkpoint and advanced N more, hold identical
  * bytes in every position, velocity and spin (memcmp). Checked with 1 and 2 threads (each against a
  * reference with the same thread count: the per-thread force sums are
- * ordered, so a fixed thread count is deterministic).
+ * ordered, so a fixed thread count is deterministic). Also with the spatial
+ * sort of the store at every third rebuild (gf_sim_options.sort_every): the
+ * restart sorts at the same rebuilds, and the sorted run follows the unsorted
+ * one grain by grain (by id) to round-off, i.e. ids, history and per-grain
+ * data moved together.
  */
 #include <math.h>
 #include <stdio.h>
@@ -17,11 +21,13 @@
 
 static int same(const double *a, const double *b, size_t n) { return memcmp(a, b, n * sizeof(double)) == 0; }
 
-static gf_status from_checkpoint(gf_ctx *ctx, const gf_run_spec *spec, int threads, const char *path, gf_sim **out)
+static gf_status from_checkpoint(gf_ctx *ctx, const gf_run_spec *spec, int threads, int sort_every, const char *path,
+                                 gf_sim **out)
 {
     gf_sim_options opt;
     memset(&opt, 0, sizeof opt);
     opt.n_threads = threads;
+    opt.sort_every = sort_every;
     opt.restart_path = path;
     return gf_sim_create(ctx, spec, &opt, out);
 }
@@ -30,15 +36,15 @@ static gf_status from_checkpoint(gf_ctx *ctx, const gf_run_spec *spec, int threa
  * checkpointed once; then tilted by 30 degrees so that it flows (tan 30 >
  * mu_eff), which exercises sliding contacts, new and broken contacts,
  * neighbour rebuilds and wall history. */
-static void check_threads(gf_ctx *ctx, gf_run_spec *spec, const char *bed, int threads)
+static void check_threads(gf_ctx *ctx, gf_run_spec *spec, const char *bed, int threads, int sort_every)
 {
     const long N = 800;
     char path[512];
     snprintf(path, sizeof path, "%s.%d", bed, threads);
     const double g = spec->gravity_m_s2, tilt[3] = {g * sin(M_PI / 6), -g * cos(M_PI / 6), 0.0};
     gf_sim *ref = NULL, *a = NULL, *b = NULL;
-    GF_CHECK_OK(from_checkpoint(ctx, spec, threads, bed, &ref), ctx);
-    GF_CHECK_OK(from_checkpoint(ctx, spec, threads, bed, &a), ctx);
+    GF_CHECK_OK(from_checkpoint(ctx, spec, threads, sort_every, bed, &ref), ctx);
+    GF_CHECK_OK(from_checkpoint(ctx, spec, threads, sort_every, bed, &a), ctx);
     if (!ref || !a)
         return;
     gf_sim_set_gravity(ref, tilt);
@@ -47,7 +53,7 @@ static void check_threads(gf_ctx *ctx, gf_run_spec *spec, const char *bed, int t
     GF_CHECK_OK(gf_sim_advance(a, N), ctx);
     GF_CHECK_OK(gf_sim_checkpoint(a, path), ctx);
     gf_sim_destroy(&a);
-    GF_CHECK_OK(from_checkpoint(ctx, spec, threads, path, &b), ctx);
+    GF_CHECK_OK(from_checkpoint(ctx, spec, threads, sort_every, path, &b), ctx);
     if (!b)
         return;
     GF_CHECK_OK(gf_sim_advance(b, N), ctx);
@@ -61,9 +67,40 @@ static void check_threads(gf_ctx *ctx, gf_run_spec *spec, const char *bed, int t
     gf_sim_contact_stats(b, &nc_b, NULL);
     double P[3];
     gf_particles_momentum(p, P);
-    printf("%d thread(s): %zu grains, %ld + %ld steps, %zu contacts, downslope momentum %.3g kg m/s: "
-           "bitwise identical = %d\n",
-           threads, n, N, N, nc_ref, P[0], ok);
+    ok = ok && memcmp(p->id, q->id, n * sizeof *p->id) == 0;
+    size_t moved = 0;
+    for (size_t i = 0; i < n; ++i)
+        moved += p->id[i] != (int64_t)i;
+    printf("%d thread(s), sort_every %d: %zu grains, %ld + %ld steps, %zu contacts, downslope momentum %.3g kg m/s, "
+           "%zu grains off their insertion index: bitwise identical = %d\n",
+           threads, sort_every, n, N, N, nc_ref, P[0], moved, ok);
+    if (sort_every > 0) {
+        GF_CHECK(moved > 0); /* the store was sorted */
+        /* against the unsorted run, grain by grain: round-off only */
+        gf_sim *u = NULL;
+        GF_CHECK_OK(from_checkpoint(ctx, spec, threads, -1, bed, &u), ctx);
+        if (u) {
+            gf_sim_set_gravity(u, tilt);
+            GF_CHECK_OK(gf_sim_advance(u, 2 * N), ctx);
+            gf_particles *w = gf_sim_particles(u);
+            double *at = malloc(3 * n * sizeof *at), dmax = 0.0, vmax = 0.0;
+            for (size_t i = 0; at && i < n; ++i) {
+                size_t k = (size_t)w->id[i];
+                at[3 * k] = w->x_m[i], at[3 * k + 1] = w->y_m[i], at[3 * k + 2] = w->vx_m_s[i];
+            }
+            for (size_t i = 0; at && i < n; ++i) {
+                size_t k = (size_t)p->id[i];
+                dmax = fmax(dmax, fmax(fabs(p->x_m[i] - at[3 * k]), fabs(p->y_m[i] - at[3 * k + 1])));
+                vmax = fmax(vmax, fabs(p->vx_m_s[i] - at[3 * k + 2]));
+            }
+            double D = spec->grains.diameter_m;
+            printf("  sorted vs unsorted run, same grain: max |dx| = %.3g D, max |dv_x| = %.3g sqrt(gD)\n", dmax / D,
+                   vmax / sqrt(spec->gravity_m_s2 * D));
+            GF_CHECK(at && dmax < 1e-6 * D);
+            free(at);
+            gf_sim_destroy(&u);
+        }
+    }
     GF_CHECK(ok);
     GF_CHECK(nc_ref == nc_b && nc_ref > n); /* contact-rich state */
     GF_CHECK(P[0] > 0.0);                   /* it flowed */
@@ -90,8 +127,10 @@ int main(void)
         GF_CHECK_OK(gf_sim_checkpoint(s0, path), &ctx);
     gf_sim_destroy(&s0);
     gf_run_spec_set_param(&ctx, &bed, "settle_time_nd", 0.0); /* restarts overwrite the bed: skip settling */
-    check_threads(&ctx, &bed, path, 1);
-    check_threads(&ctx, &bed, path, 2);
+    check_threads(&ctx, &bed, path, 1, 0);
+    check_threads(&ctx, &bed, path, 2, 0);
+    check_threads(&ctx, &bed, path, 1, 3);
+    check_threads(&ctx, &bed, path, 2, 3);
     remove(path);
     /* a missing checkpoint is an I/O error naming the file */
     gf_run_spec spec = gf_test_spec("binary_collision");

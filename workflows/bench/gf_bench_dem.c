@@ -11,7 +11,7 @@
  *
  *   gf-bench-dem [--n N]... [--threads T]... [--steps S] [--settle T_nd]
  *                [--lammps-data PATH] [--friction MU] [--bed PREFIX] [--dump PATH]
- *                [--scene settled_bed|column_collapse]
+ *                [--scene settled_bed|column_collapse] [--sort-every K] [--sort-bed PREFIX]
  *
  * --lammps-data writes the settled bed of the LAST N as a LAMMPS data file
  * (atom_style sphere, gf_lammps_data.h) plus PATH.params (k_n, gamma_n, k_t, mu, dt, box),
@@ -25,7 +25,10 @@
  * (glued grains included), --n is ignored. --bed keeps the settled bed as the
  * checkpoint PREFIX_<N>.h5 and reuses it when it exists (settling 1e5 grains
  * costs far more than timing them; the same file also lets two builds be
- * timed on the same state).
+ * timed on the same state). --sort-every K sets gf_sim_options.sort_every
+ * (0: the engine's default, -1: never sort). --sort-bed PREFIX loads the bed,
+ * sorts its store by space (gf_sim_sort), writes it as PREFIX_<N>.h5 and
+ * times nothing: a bed kept by a build without the sort, made comparable.
  */
 #include <math.h>
 #include <stdio.h>
@@ -54,6 +57,8 @@ typedef struct bench_args {
     const char *lammps, *dump;
     int collapse; /* --scene column_collapse: the dry collapse at a = 1 instead of the bed */
     const char *bed; /* reuse (or keep) the settled bed: PATH_<N>.h5 */
+    int sort_every;
+    const char *sort_bed;
 } bench_args;
 
 static void spec_for(gf_ctx *ctx, gf_run_spec *s, const bench_args *a, long n, double settle_nd)
@@ -174,6 +179,10 @@ static int parse(int argc, char **argv, bench_args *a)
             a->dump = v;
         else if (!strcmp(argv[i], "--bed"))
             a->bed = v;
+        else if (!strcmp(argv[i], "--sort-every"))
+            a->sort_every = atoi(v);
+        else if (!strcmp(argv[i], "--sort-bed"))
+            a->sort_bed = v;
         else if (!strcmp(argv[i], "--scene") && (!strcmp(v, "column_collapse") || !strcmp(v, "settled_bed")))
             a->collapse = !strcmp(v, "column_collapse");
         else
@@ -192,7 +201,7 @@ int main(int argc, char **argv)
     bench_args a;
     if (!parse(argc, argv, &a)) {
         fprintf(stderr, "usage: gf-bench-dem [--n N]... [--threads T]... [--steps S] [--settle T_nd] "
-                        "[--friction MU] [--lammps-data PATH] [--bed PREFIX] [--scene settled_bed|column_collapse] [--dump PATH]\n");
+                        "[--friction MU] [--lammps-data PATH] [--bed PREFIX] [--scene settled_bed|column_collapse] [--dump PATH] [--sort-every K] [--sort-bed PREFIX]\n");
         return 2;
     }
     gf_ctx ctx = {0};
@@ -209,10 +218,21 @@ int main(int argc, char **argv)
         spec_for(&ctx, &again, &a, a.n[k], 0.0); /* no second settling: the checkpoint holds the bed */
         double rate1 = 0.0;
         for (int q = 0; q < a.n_threads; ++q) {
-            gf_sim_options o = {.n_threads = a.threads[q], .restart_path = ck};
+            gf_sim_options o = {.n_threads = a.threads[q], .restart_path = ck, .sort_every = a.sort_every};
             if (gf_sim_create(&ctx, &again, &o, &sim) != GF_OK) {
                 fprintf(stderr, "gf-bench-dem: %s\n", ctx.last_msg);
                 return 1;
+            }
+            if (a.sort_bed) {
+                char out[256];
+                snprintf(out, sizeof out, "%s_%ld.h5", a.sort_bed, a.collapse ? 1L : a.n[k]);
+                if (gf_sim_sort(sim) != GF_OK || gf_sim_checkpoint(sim, out) != GF_OK) {
+                    fprintf(stderr, "gf-bench-dem: %s\n", ctx.last_msg);
+                    return 1;
+                }
+                printf("N = %ld: sorted bed written to %s\n", a.n[k], out);
+                gf_sim_destroy(&sim);
+                break;
             }
             if (q == 0 && a.lammps && k == a.n_n - 1 && !gf_bench_write_lammps(sim, a.lammps)) {
                 fprintf(stderr, "gf-bench-dem: cannot write %s\n", a.lammps);
