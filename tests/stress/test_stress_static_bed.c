@@ -20,24 +20,24 @@
  *  - no creep: the bed's centre of mass moves by less than 1e-4 D, and the
  *    grain count and the largest overlap (below 1 % of D: the weight of 20
  *    layers on the stiffness of t_c = 1e-2 sqrt(D/g)) do not change.
- * Immersed mode (third argument "immersed"): the same bed in the seed's
- * viscous fluid of the immersed collapse (D = 7.6 mm, rho_p/rho_f = 8,
- * eta_f = 1 Pa s, Ar ~ 30; Izard 2014 §5.2) through the unresolved tier. The
- * fluid starts at rest and hydrostatic; a bed at rest drives no flow, so the
- * excess pore pressure at the basal gauge must stay near zero. Bound: after
- * the relaxation, |P_b| < 1e-3 of the bed's buoyant weight per unit area,
- * drho g sum(V_i)/A (a tenth of a percent of the pressure the grains would
- * put on the fluid if the bed liquefied). The bed stays at rest in the
- * same sense as the dry one (every grain slower than 1e-2 sqrt(gD), overlaps
- * unchanged), but its centre of mass is only held to 1e-3 D and the speed
- * and kinetic energy are not required to decay: in this very viscous fluid
- * the bed creeps in bursts (measured: the fastest grain grows exponentially
- * at ~0.05 per sqrt(D/g) from 1e-4 to 4e-3 sqrt(gD), the bed then sinks by
- * ~1e-5 D and falls quiet; in water (eta_f = 1e-3 Pa s) or a thin fluid it
- * decays as in the dry bed). docs/benchmarks.md records the measurement;
- * the cause (a metastable contact structure slowly released under viscous
- * damping, or the coupling) is not settled.
- * Usage: test_stress_static_bed [BUDGET_S [MAX_STEPS [immersed]]]: runs until
+ * Immersed modes (third argument "immersed" or "immersed_lub"): the same bed
+ * in the seed's viscous fluid of the immersed collapse (D = 7.6 mm,
+ * rho_p/rho_f = 8, eta_f = 1 Pa s, Ar ~ 30; Izard 2014 §5.2) through the
+ * unresolved tier, without ("immersed") or with ("immersed_lub") the
+ * near-contact lubrication. The fluid starts at rest and hydrostatic; a bed
+ * at rest drives no flow, so besides the dry claims the excess pore
+ * pressure at the basal gauge must stay near zero: after the relaxation,
+ * |P_b| < 1e-3 of the bed's buoyant weight per unit area, drho g sum(V_i)/A
+ * (a tenth of a percent of what the grains would put on the fluid if the
+ * bed liquefied). With lubrication the claims do not hold (ctest labels
+ * slow;open): the bed creeps in bursts (the fastest grain grows
+ * exponentially, ~0.05 per sqrt(D/g), from 1e-4 to ~4e-3 sqrt(gD), the bed
+ * sinks by ~1e-5 D, then falls quiet, and again; docs/benchmarks.md). The
+ * bursts need the lubrication (without it the same bed relaxes to 1e-11
+ * sqrt(gD)) and its large viscosity (none in water); a smaller damping cap
+ * (0.1 instead of 0.25 m* / dt) did not remove them, so they are not the
+ * explicit stability limit of the lubrication damping. Cause not settled.
+ * Usage: test_stress_static_bed [BUDGET_S [MAX_STEPS [immersed|immersed_lub]]]: runs until
  * MAX_STEPS (default 1e7) or BUDGET_S seconds of wall time (0: no limit). The
  * default suite runs 25 s of each mode; the `slow` runs do the full 1e7 steps.
  */
@@ -48,8 +48,9 @@
 #include "stress_util.h"
 
 /* The seed's grains and fluid of the immersed collapse (Izard 2014 §5.2). */
-static void immersed_spec(gf_run_spec *s)
+static void immersed_spec(gf_run_spec *s, int lubricated)
 {
+    s->fluid.lubrication = lubricated;
     s->grains.diameter_m = 7.6e-3;
     s->grains.density_kg_m3 = 8000.0;
     snprintf(s->fluid.model, sizeof s->fluid.model, "unresolved");
@@ -71,11 +72,12 @@ int main(int argc, char **argv)
 {
     double budget_s = argc > 1 ? atof(argv[1]) : 25.0;
     long max_steps = argc > 2 ? atol(argv[2]) : 10000000L;
-    int immersed = argc > 3 && strcmp(argv[3], "immersed") == 0;
+    int immersed = argc > 3 && strncmp(argv[3], "immersed", 8) == 0;
+    int lubricated = argc > 3 && strcmp(argv[3], "immersed_lub") == 0;
     gf_ctx ctx = {0};
     gf_run_spec s = gf_test_spec("settled_bed");
     if (immersed)
-        immersed_spec(&s);
+        immersed_spec(&s, lubricated);
     s.grains.polydispersity = 0.1;
     s.contact.restitution = 0.5;
     s.contact.friction = 0.5;
@@ -93,7 +95,10 @@ int main(int argc, char **argv)
     /* the scene's settling ends on a velocity quench, which leaves the last
      * small force imbalances: let them relax for 10 sqrt(D/g) (measured peak
      * 0.05 sqrt(gD) just after the quench), then watch */
-    long n_relax = (long)ceil(10.0 * sqrt(D / s.gravity_m_s2) / gf_sim_dt_s(sim));
+    /* immersed: the fluid (and with it the buoyancy) appears at t = 0 and
+     * unloads the contacts; that transient is slow in a viscous fluid (the
+     * fastest grain at ~0.01 sqrt(gD) until ~20 sqrt(D/g)): 30 sqrt(D/g) */
+    long n_relax = (long)ceil((immersed ? 30.0 : 10.0) * sqrt(D / s.gravity_m_s2) / gf_sim_dt_s(sim));
     GF_CHECK_OK(gf_sim_advance(sim, n_relax), &ctx);
     double v_relaxed = stress_max_speed(p);
     const size_t n0 = p->n_local;
@@ -165,11 +170,9 @@ int main(int argc, char **argv)
     }
     GF_CHECK(done >= 1000);
     GF_CHECK(vmax < 1e-2 * vref);
-    if (!immersed) {
-        GF_CHECK(v_second <= v_first);
-        GF_CHECK(ek_second <= ek_first);
-    }
-    GF_CHECK(dy_max < (immersed ? 1e-3 : 1e-4) * D);
+    GF_CHECK(v_second <= v_first);
+    GF_CHECK(ek_second <= ek_first);
+    GF_CHECK(dy_max < 1e-4 * D);
     GF_CHECK(ov_max < 0.01);
     GF_CHECK(fabs(ov_max - ov0) < 1e-3);
     gf_sim_destroy(&sim);
