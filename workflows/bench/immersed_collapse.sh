@@ -12,6 +12,11 @@
 # the cost ratio against the seed's resolved run of case C (798 grains, D/10
 # immersed boundary: 20 000 CPU hours on 40 cores, digest §7.5 and §8 row 43).
 #
+# OpenMP threads wait passively (OMP_WAIT_POLICY=passive unless set): with
+# the default active wait, a machine shared with one other busy process made
+# this run 13x slower (474 s against 36 s for the preparation and 2500
+# steps), the spinning thread holding the core the working one needed.
+#
 # usage: workflows/bench/immersed_collapse.sh [BUILD_DIR] [WIDTH_OVER_D] [THREADS]
 #        (defaults: build, 24, 2)
 set -eu
@@ -27,6 +32,7 @@ trap 'rm -rf "$WORK"' EXIT
 
 echo "== $(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores, load: $(cut -d' ' -f1-3 /proc/loadavg)"
 echo "== immersed collapse, a = 0.5, W = $WIDTH D, $THREADS threads"
+export OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-passive}
 OMP_NUM_THREADS=$THREADS /usr/bin/time -f '%e %U %S' -o "$WORK/time" \
     "$GF" bench "$ROOT/configs/column_collapse_immersed.yaml" -o "$WORK" \
     --set scene.width_over_D="$WIDTH" | tee "$WORK/bench.out"
