@@ -51,9 +51,21 @@ typedef struct bench_case {
     const double *dt_list, *cell_list;
     int n_dt, n_cell;
     const char *aux;            /* name and units of bench_result.aux; NULL when the case has none */
+    const double *tc_list;      /* optional: the case's own t_c sqrt(g/D) values (NULL: the common sweep) */
+    int n_tc;
 } bench_case;
 
 const bench_case *bench_cases(int *n);
+
+/* settling_sphere (bench_sphere.c): single sphere, Stokes with Hasimoto's periodic correction */
+extern const double bench_sphere_cells[];
+int bench_sphere_available(const char **why);
+gf_status bench_sphere_measure(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out);
+
+/* janssen_saturation (bench_janssen.c): plateau of the Janssen column against the finest setting */
+extern const double bench_janssen_dt[], bench_janssen_tc[];
+int bench_janssen_available(const char **why);
+gf_status bench_janssen_measure(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out);
 
 /* One measured point. */
 typedef struct bench_point {

@@ -13,13 +13,15 @@
  *   fluid cell/D  in {1.5, 2, 3, 4}          (where the fluid works)
  * unless a case lists its own values (bench_case.dt_list, cell_list): the
  * fluid cases take cell/D in {4, 2, 1, 0.5} of a nominal D, the immersed
- * collapse cell/D in {4, 2, 1.5, 1} and dt/t_c in {1/20, 1/50}. A case that
+ * collapse cell/D in {4, 2, 1.5, 1} and dt/t_c in {1/20, 1/50}, the settling
+ * sphere cell/D in {4, 3, 2.5, 2}, the Janssen column dt/t_c in
+ * {1/20, 1/50, 1/100} and t_c sqrt(g/D) in {2e-2, 1e-2, 5e-3}. A case that
  * does not sweep dt (the grain-free fluid cases) runs at one dt.
  * --quick (default): the dt sweep with the other knobs at default, plus the
  *   sweep of each other knob at the default dt (t_c/50); a minute or two on
  *   one core.
  * --full: every combination, longer runs, more onset phases, and the cases
- *   marked full_only (the dry and the immersed collapse).
+ *   marked full_only (the dry and the immersed collapse, the Janssen column).
  * Each setting runs `repeats` times (default 3; once when a run takes more
  * than 5 CPU s, where timer noise no longer matters); its cost is the best
  * CPU time of them (bench_accuracy.h: CPU, not wall, so that other processes
@@ -67,7 +69,8 @@ static int knob_values(unsigned knobs, unsigned bit, const double *own, int n_ow
     return own ? n_own : n_common;
 }
 
-static bench_knobs knobs_at(const bench_case *c, const double *dt, int a, const double *cell, int q, int b, int t)
+static bench_knobs knobs_at(const bench_case *c, const double *dt, int a, const double *cell, int q, int b,
+                            const double *tc, int t)
 {
     bench_knobs k = {BENCH_DEFAULT_DT_OVER_TC, BENCH_DEFAULT_SKIN_OVER_D, BENCH_DEFAULT_TC_ND,
                      BENCH_DEFAULT_CELL_OVER_D};
@@ -78,38 +81,39 @@ static bench_knobs knobs_at(const bench_case *c, const double *dt, int a, const 
     if (b >= 0 && (c->knobs & BENCH_KNOB_SKIN))
         k.skin_over_D = skin_sweep[b];
     if (t >= 0 && (c->knobs & BENCH_KNOB_TC))
-        k.t_contact_nd = tc_sweep[t];
+        k.t_contact_nd = tc[t];
     return k;
 }
 
 /* Settings of case c: appends to ks (capacity cap), returns the count. */
 static int settings_of(const bench_case *c, int full, bench_knobs *ks, int cap)
 {
-    const double *dt, *cell;
+    const double *dt, *cell, *tc;
     int n_dt = knob_values(c->knobs, BENCH_KNOB_DT, c->dt_list, c->n_dt, dt_sweep, 5, &dt);
     int n_cell = knob_values(c->knobs, BENCH_KNOB_CELL, c->cell_list, c->n_cell, cell_sweep, 4, &cell);
-    int n_skin = (c->knobs & BENCH_KNOB_SKIN) ? 4 : 1, n_tc = (c->knobs & BENCH_KNOB_TC) ? 2 : 1;
+    int n_tc = knob_values(c->knobs, BENCH_KNOB_TC, c->tc_list, c->n_tc, tc_sweep, 2, &tc);
+    int n_skin = (c->knobs & BENCH_KNOB_SKIN) ? 4 : 1;
     int n = 0;
     if (full) {
         for (int a = 0; a < n_dt; ++a)
             for (int b = 0; b < n_skin; ++b)
                 for (int t = 0; t < n_tc; ++t)
                     for (int q = 0; q < n_cell && n < cap; ++q)
-                        ks[n++] = knobs_at(c, dt, a, cell, q, b, t);
+                        ks[n++] = knobs_at(c, dt, a, cell, q, b, tc, t);
         return n;
     }
     /* --quick: the dt sweep at the other defaults, then each other knob's sweep at the default dt */
     for (int a = 0; a < n_dt && n < cap; ++a)
-        ks[n++] = knobs_at(c, dt, a, cell, -1, -1, -1);
+        ks[n++] = knobs_at(c, dt, a, cell, -1, -1, tc, -1);
     for (int b = 0; (c->knobs & BENCH_KNOB_SKIN) && b < 4 && n < cap; ++b)
         if (fabs(skin_sweep[b] - BENCH_DEFAULT_SKIN_OVER_D) > 1e-12)
-            ks[n++] = knobs_at(c, dt, -1, cell, -1, b, -1);
-    for (int t = 0; (c->knobs & BENCH_KNOB_TC) && t < 2 && n < cap; ++t)
-        if (fabs(tc_sweep[t] - BENCH_DEFAULT_TC_ND) > 1e-15)
-            ks[n++] = knobs_at(c, dt, -1, cell, -1, -1, t);
+            ks[n++] = knobs_at(c, dt, -1, cell, -1, b, tc, -1);
+    for (int t = 0; (c->knobs & BENCH_KNOB_TC) && t < n_tc && n < cap; ++t)
+        if (fabs(tc[t] - BENCH_DEFAULT_TC_ND) > 1e-15)
+            ks[n++] = knobs_at(c, dt, -1, cell, -1, -1, tc, t);
     for (int q = 0; (c->knobs & BENCH_KNOB_CELL) && q < n_cell && n < cap; ++q)
         if (fabs(cell[q] - BENCH_DEFAULT_CELL_OVER_D) > 1e-12)
-            ks[n++] = knobs_at(c, dt, -1, cell, q, -1, -1);
+            ks[n++] = knobs_at(c, dt, -1, cell, q, -1, tc, -1);
     return n;
 }
 
