@@ -59,20 +59,38 @@ void bench_analyse(bench_point *pts, int n, const bench_case *cases, int n_cases
     free(cost), free(err), free(idx), free(front);
 }
 
-/* Points of case c on the dt sweep (other knobs at their defaults), by decreasing dt. */
-static int dt_sweep(const bench_point *pts, int n, int c, const bench_point **out, int cap)
+/* Value of one knob (a BENCH_KNOB_* bit) of a setting, and its default. */
+static double knob_value(const bench_knobs *k, unsigned knob)
 {
+    return knob == BENCH_KNOB_DT     ? k->dt_over_tc
+           : knob == BENCH_KNOB_SKIN ? k->skin_over_D
+           : knob == BENCH_KNOB_TC   ? k->t_contact_nd
+                                     : k->cell_over_D;
+}
+
+static const bench_knobs bench_defaults = {BENCH_DEFAULT_DT_OVER_TC, BENCH_DEFAULT_SKIN_OVER_D, BENCH_DEFAULT_TC_ND,
+                                           BENCH_DEFAULT_CELL_OVER_D};
+
+/* Points of case c that vary only `knob` (every other knob at its default),
+ * by decreasing value of the knob. */
+static int knob_sweep(const bench_point *pts, int n, int c, unsigned knob, const bench_point **out, int cap)
+{
+    static const unsigned all[4] = {BENCH_KNOB_DT, BENCH_KNOB_SKIN, BENCH_KNOB_TC, BENCH_KNOB_CELL};
     int m = 0;
     for (int i = 0; i < n && m < cap; ++i) {
         const bench_point *p = &pts[i];
         if (p->case_index != c || p->status != GF_OK)
             continue;
-        if (fabs(p->k.skin_over_D - BENCH_DEFAULT_SKIN_OVER_D) > 1e-12 ||
-            fabs(p->k.t_contact_nd - BENCH_DEFAULT_TC_ND) > 1e-15 ||
-            fabs(p->k.cell_over_D - BENCH_DEFAULT_CELL_OVER_D) > 1e-12)
+        int at_defaults = 1;
+        for (int q = 0; q < 4; ++q) {
+            double v = knob_value(&p->k, all[q]), d = knob_value(&bench_defaults, all[q]);
+            if (all[q] != knob && fabs(v - d) > 1e-9 * fabs(d))
+                at_defaults = 0;
+        }
+        if (!at_defaults)
             continue;
         int k = m++;
-        while (k > 0 && out[k - 1]->k.dt_over_tc < p->k.dt_over_tc) {
+        while (k > 0 && knob_value(&out[k - 1]->k, knob) < knob_value(&p->k, knob)) {
             out[k] = out[k - 1];
             --k;
         }
@@ -86,7 +104,7 @@ void bench_print_orders(const bench_point *pts, int n, const bench_case *cases, 
     printf("\nmeasured convergence in dt (other knobs at default):\n");
     for (int c = 0; c < n_cases; ++c) {
         const bench_point *s[32];
-        int m = dt_sweep(pts, n, c, s, 32);
+        int m = knob_sweep(pts, n, c, BENCH_KNOB_DT, s, 32);
         if (m < 2)
             continue;
         printf("  %-17s", cases[c].name);
@@ -103,28 +121,6 @@ void bench_print_orders(const bench_point *pts, int n, const bench_case *cases, 
     }
 }
 
-/* Points of case c on the cell sweep (other knobs at their defaults), by decreasing cell size. */
-static int cell_sweep(const bench_point *pts, int n, int c, const bench_point **out, int cap)
-{
-    int m = 0;
-    for (int i = 0; i < n && m < cap; ++i) {
-        const bench_point *p = &pts[i];
-        if (p->case_index != c || p->status != GF_OK)
-            continue;
-        if (fabs(p->k.skin_over_D - BENCH_DEFAULT_SKIN_OVER_D) > 1e-12 ||
-            fabs(p->k.t_contact_nd - BENCH_DEFAULT_TC_ND) > 1e-15 ||
-            fabs(p->k.dt_over_tc - BENCH_DEFAULT_DT_OVER_TC) > 1e-12)
-            continue;
-        int k = m++;
-        while (k > 0 && out[k - 1]->k.cell_over_D < p->k.cell_over_D) {
-            out[k] = out[k - 1];
-            --k;
-        }
-        out[k] = p;
-    }
-    return m;
-}
-
 void bench_print_cell_orders(const bench_point *pts, int n, const bench_case *cases, int n_cases)
 {
     printf("\nmeasured convergence in cell size (other knobs at default):\n");
@@ -132,7 +128,7 @@ void bench_print_cell_orders(const bench_point *pts, int n, const bench_case *ca
         const bench_point *s[32];
         if (!(cases[c].knobs & BENCH_KNOB_CELL))
             continue;
-        int m = cell_sweep(pts, n, c, s, 32);
+        int m = knob_sweep(pts, n, c, BENCH_KNOB_CELL, s, 32);
         if (m < 2)
             continue;
         printf("  %-17s", cases[c].name);
