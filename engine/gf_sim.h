@@ -93,6 +93,15 @@ void gf_sim_wall_force(const gf_sim *sim, int wall_id, double f_N[3]);
  * it; NAN on a dry run (no fluid tier). */
 double gf_sim_excess_pressure_Pa(const gf_sim *sim, const double x_m[3]);
 
+/* Mechanical energy of the mobile grains (gf_sim_energy.c): kinetic,
+ * rotational, buoyant-weight potential, and the elastic energy stored in the
+ * normal and tangential springs of the linear law. Without a driving force it
+ * can only fall; audits compare it along a run. GF_ERR_CONFIG for other laws. */
+typedef struct gf_sim_energy {
+    double kinetic_J, rotational_J, gravity_J, elastic_normal_J, elastic_tangential_J, total_J;
+} gf_sim_energy;
+gf_status gf_sim_energy_audit(const gf_sim *sim, gf_sim_energy *e);
+
 /* --- builder calls, for scenes --- */
 /* Domain box; periodic axes wrap, others must be closed by walls. */
 gf_status gf_sim_set_box(gf_sim *sim, const double lo_m[3], const double hi_m[3], const int periodic[3]);
