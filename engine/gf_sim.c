@@ -501,17 +501,32 @@ static void kick(gf_sim *s, double h)
     }
 }
 
-/* The step's first kick and its drift, in one parallel region: both act on
- * each grain alone, so with the same split of grains no barrier is needed
- * between them, and the step pays one thread wake-up fewer (with
- * OMP_WAIT_POLICY=passive each region costs one). Returns the largest
- * squared displacement since the last neighbour build. */
+/* Applies the previous step's closing half-kick if it was deferred: before
+ * anything outside the step reads the velocities (fluid step, sleep update,
+ * finite check, the caller of gf_sim_advance). */
+static void flush_kick(gf_sim *s)
+{
+    if (s->kick_pending)
+        kick(s, 0.5 * s->dt_s);
+    s->kick_pending = 0;
+}
+
+/* The previous step's deferred closing half-kick, this step's opening
+ * half-kick and its drift, in one parallel region: all three act on each
+ * grain alone (with the force F(t) of the last evaluation), so with the same
+ * split of grains no barrier is needed between them, and a step pays two
+ * thread wake-ups instead of four (with OMP_WAIT_POLICY=passive each region
+ * costs one). The two half-kicks stay two additions: bitwise the results of
+ * the undeferred sequence. Returns the largest squared displacement since
+ * the last neighbour build. */
 static double kick_drift(gf_sim *s, double h)
 {
     gf_particles *p = s->p;
     long n = (long)p->n_local;
     double d2[GF_SIM_MAX_THREADS] = {0.0};
     int used = 1;
+    const int pending = s->kick_pending;
+    s->kick_pending = 0;
 #ifdef _OPENMP
 #pragma omp parallel num_threads(s->n_threads) if (s->n_threads > 1 && n >= GF_SIM_PARALLEL_MIN_GRAINS)
 #endif
@@ -526,6 +541,8 @@ static double kick_drift(gf_sim *s, double h)
         size_t i0 = (size_t)(n * (long)t / m), i1 = (size_t)(n * (long)(t + 1) / m);
         double *ref[3] = {s->x_ref, s->y_ref, s->z_ref}, *vp[3] = {s->vx_pred, s->vy_pred, s->vz_pred};
         gf_integrate_factors kk = {s->inv_mass, (s->skips & GF_SKIP_TANGENTIAL) ? NULL : s->inv_inertia, s->mobile};
+        if (pending)
+            gf_integrate_kick(p, i0, i1, h, s->gravity_m_s2, &kk);
         gf_integrate_kick(p, i0, i1, h, s->gravity_m_s2, &kk);
         gf_integrate_factors k = {s->inv_mass, s->inv_inertia, s->mobile};
         d2[t] = gf_integrate_drift(p, i0, i1, s->dt_s, s->gravity_m_s2, ref, vp, &k);
@@ -598,13 +615,13 @@ static gf_status dem_step(gf_sim *s)
             return GF_FAIL(s->ctx, st, "coupling: adding fluid forces failed at t = %g s: %s", s->t_s, what);
         }
     }
-    gf_timer_start(&s->timers, GF_T_INTEGRATE);
-    kick(s, h);
-    gf_timer_stop(&s->timers, GF_T_INTEGRATE);
+    s->kick_pending = 1; /* v(t+dt) = v(t+dt/2) + F(t+dt) dt/2 m: with the next step's kick_drift */
     s->step++;
     s->t_s += s->dt_s;
-    if (s->spec.contact.sleep_speed_nd > 0.0 && s->step % GF_SLEEP_EVERY == 0)
+    if (s->spec.contact.sleep_speed_nd > 0.0 && s->step % GF_SLEEP_EVERY == 0) {
+        flush_kick(s);
         GF_TRY(gf_sim_sleep_update(s));
+    }
     return GF_OK;
 }
 
@@ -638,10 +655,16 @@ gf_status gf_sim_advance(gf_sim *s, long n_steps)
             st = GF_FAIL(s->ctx, GF_ERR_INTERRUPTED, "run interrupted at t = %g s (step %ld)", s->t_s, s->step);
             break;
         }
-        if (s->coupling && s->step >= s->next_fluid_step)
+        if (s->coupling && s->step >= s->next_fluid_step) {
+            gf_timer_start(&s->timers, GF_T_INTEGRATE);
+            flush_kick(s);
+            gf_timer_stop(&s->timers, GF_T_INTEGRATE);
             st = fluid_step(s);
+        }
         if (st == GF_OK)
             st = dem_step(s);
+        if (st == GF_OK && s->step % GF_FINITE_CHECK_EVERY == 0)
+            flush_kick(s);
         if (st == GF_OK && s->step % GF_FINITE_CHECK_EVERY == 0 && gf_particles_check_finite(s->ctx, p) != GF_OK) {
             char what[sizeof s->ctx->last_msg];
             snprintf(what, sizeof what, "%s", s->ctx->last_msg);
@@ -651,6 +674,9 @@ gf_status gf_sim_advance(gf_sim *s, long n_steps)
                          what, s->t_s, s->step);
         }
     }
+    gf_timer_start(&s->timers, GF_T_INTEGRATE);
+    flush_kick(s); /* the caller sees v(t) */
+    gf_timer_stop(&s->timers, GF_T_INTEGRATE);
     gf_timer_stop(&s->timers, GF_T_TOTAL);
     return st;
 }

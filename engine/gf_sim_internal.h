@@ -73,6 +73,7 @@ struct gf_sim {
     double *pair_meff, *pair_sqrt_mk; /* per neighbour pair: m*, sqrt(m* k_n) */
     size_t pair_cap;
     int vp_valid;                   /* set by the drift, consumed by the next force evaluation */
+    int kick_pending;               /* the last step's closing half-kick is deferred (gf_sim.c: dem_step) */
     size_t ref_cap;
     double skin_m, extra_m;
     int need_build;
