@@ -5,15 +5,19 @@
  * which writes docs/validation.md; mode "check" is the ctest test
  * collapse_dense_loose (labels slow, open).
  *
- * Set-up: the column_collapse scene at a = 0.5, R0 = 16 D, W = 3 D, the seed's
- * fluid and grains (D = 7.6 mm, rho_p/rho_f = 8, eta_f = 1 Pa s: Ar ~ 30,
- * viscous regime). Prints one summary line per run:
+ * Set-up: the column_collapse scene at a = 0.5, R0 = 16 D, W = 3 D (the scene
+ * parameter width_over_D=X for another width), the seed's fluid and grains
+ * (D = 7.6 mm, rho_p/rho_f = 8, eta_f = 1 Pa s: Ar ~ 30, viscous regime).
+ * Prints one summary line per run:
  *   phi_i (interior and solid volume / R0 H0 W), start time (front past
  *   R0 + D/2) and half time (front past R0 + (R_inf - R0)/2) in T_visq,
  *   run-out R_inf/R0, H_inf/R0, deposit type (trapezoid when the back keeps
  *   >= 90 % of H0), basal excess pore pressure at x = 13/16 R0 (the seed's
- *   x = 13 D): dominant extremum (Pa and / drho g H0) and its time, the two
- *   gauges under the column, E_cx^max / (m g D), the largest grain Reynolds
+ *   x = 13 D): dominant extremum (Pa and / drho g H0) and its time, then the
+ *   extrema and their times at 12/16, 11/16, 10/16, 8/16 and 4/16 R0 (where
+ *   the dense column's sign changes under the column); every gauge is the
+ *   mean over the transverse cell layers at y = 0 (the thesis'
+ *   transverse-averaged field), E_cx^max / (m g D), the largest grain Reynolds
  *   number |v| D rho_f / eta_f (spec row 42 bounds the slip Re by 2.5; the
  *   grain speed bounds the slip), wall time split fluid / DEM.
  * Usage: validate_collapse PHI [END_T_VISQ] [LUBRICATION 0|1] [MODE] [KEY=VALUE...]
@@ -44,14 +48,16 @@
 #include "gf_sim_internal.h" /* DEM substeps per fluid step, for the cost line */
 #include "scenes/gf_scene.h"
 
-enum { N_GAUGE = 3, MAX_REC = 4096, WALL_GATE = 2 };
-static const double GAUGE_X[N_GAUGE] = {13.0 / 16.0, 8.0 / 16.0, 4.0 / 16.0}; /* x / R0 */
+enum { N_GAUGE = 6, MAX_REC = 4096, WALL_GATE = 2 };
+/* x / R0: the seed's x = 13 D first (the check reads gauge 0), then towards the back wall, to locate where
+ * the dense column's basal pressure changes sign */
+static const double GAUGE_X[N_GAUGE] = {13.0 / 16.0, 12.0 / 16.0, 11.0 / 16.0, 10.0 / 16.0, 8.0 / 16.0, 4.0 / 16.0};
 static const double D = 7.6e-3, RHO_P = 8000, RHO_F = 1000, ETA = 1.0, G = 9.81;
 
 typedef struct collapse_run {
     double phi_l, phi_m, phi_end, t_start, t_half, runout, h_inf, h_back;
     double pb_min[N_GAUGE], pb_max[N_GAUGE], t_min[N_GAUGE], t_max[N_GAUGE];
-    double ecx_max, re_max, wall, t_build, t_fluid, t_coupling, t_dem;
+    double ecx_max, re_max, wall, t_build, t_fluid, t_coupling, t_dem, w_over_D;
     long steps;
     int substeps;
     size_t n_grains;
@@ -141,11 +147,30 @@ static void kinetics(const gf_particles *p, size_t n_mob, double *ecx, double *r
     *re = sqrt(v2) * D * RHO_F / ETA;
 }
 
+/*
+ * Basal excess pressure at x, averaged over the transverse cell layers (the thesis' transverse-averaged
+ * field, spec §7.4): in a wide slab one layer would read one z position's fluctuation. NAN when dry.
+ */
+static double basal_pressure(gf_sim *sim, double x)
+{
+    if (!sim->coupling)
+        return NAN;
+    int n[3];
+    double lo[3], h[3], sum = 0.0;
+    const gf_var_info *vars;
+    const double *const *f;
+    gf_coupling_fields(sim->coupling, n, lo, h, &vars, &f);
+    for (int j = 0; j < n[2]; ++j) {
+        double xg[3] = {x, 0.0, lo[2] + (j + 0.5) * h[2]};
+        sum += gf_sim_excess_pressure_Pa(sim, xg);
+    }
+    return sum / n[2];
+}
+
 static void record_gauges(gf_sim *sim, double R0, double t, collapse_run *r, double pb[N_GAUGE])
 {
     for (int k = 0; k < N_GAUGE; ++k) {
-        double xg[3] = {GAUGE_X[k] * R0, 0.0, 1.5 * D};
-        double v = gf_sim_excess_pressure_Pa(sim, xg); /* NAN when dry */
+        double v = basal_pressure(sim, GAUGE_X[k] * R0);
         pb[k] = isnan(v) ? 0.0 : v;
         if (pb[k] < r->pb_min[k])
             r->pb_min[k] = pb[k], r->t_min[k] = t;
@@ -173,6 +198,14 @@ static double back_height(const gf_particles *p)
     return h;
 }
 
+static void print_series_line(double t, double front, const double pb[N_GAUGE], double scale)
+{
+    printf("%8.0f %7.3f", t, front);
+    for (int k = 0; k < N_GAUGE; ++k)
+        printf(" %+8.4f", pb[k] / scale);
+    printf("\n");
+}
+
 /* One collapse; prints the series every 500 T_visq when verbose. Returns 0 on success. */
 static int run_collapse(const run_args *a, int verbose, collapse_run *r)
 {
@@ -183,6 +216,7 @@ static int run_collapse(const run_args *a, int verbose, collapse_run *r)
     if (make_spec(&ctx, a, &spec))
         return 1;
     memset(r, 0, sizeof *r);
+    r->w_over_D = gf_run_spec_param(&spec, "width_over_D", 3.0);
     double R0 = 16 * D, t_visq = t_visq_s(), scale = (RHO_P - RHO_F) * G * 8.0 * D;
     gf_sim_options opt = {0};
     gf_sim *sim = NULL;
@@ -208,7 +242,7 @@ static int run_collapse(const run_args *a, int verbose, collapse_run *r)
     r->t_start = NAN;
     t0 = gf_wtime();
     if (verbose)
-        printf("# t/T_visq  front/R0  Pb/(drho g H0) at x = 13/16 R0, 8/16 R0, 4/16 R0\n");
+        printf("# t/T_visq  front/R0  Pb/(drho g H0) at x = 13/16, 12/16, 11/16, 10/16, 8/16, 4/16 R0\n");
     for (int k = 0; gf_sim_time_s(sim) < t_end; ++k) {
         if (gf_sim_advance(sim, n_chunk) != GF_OK) {
             fprintf(stderr, "validate_collapse: %s\n", ctx.last_msg);
@@ -226,8 +260,7 @@ static int run_collapse(const run_args *a, int verbose, collapse_run *r)
         r->ecx_max = fmax(r->ecx_max, ecx);
         r->re_max = fmax(r->re_max, re);
         if (verbose && k % 10 == 0)
-            printf("%8.0f %7.3f %+8.4f %+8.4f %+8.4f\n", t / t_visq, v[0] / R0, pb[0] / scale, pb[1] / scale,
-                   pb[2] / scale);
+            print_series_line(t / t_visq, v[0] / R0, pb, scale);
     }
     r->wall = gf_wtime() - t0;
     sc->diagnose(sim, v);
@@ -261,16 +294,20 @@ static void print_summary(const char *mode, double phi_req, const collapse_run *
 {
     double scale = (RHO_P - RHO_F) * G * 8.0 * D, tpb;
     double pb = pb_dominant(r, 0, &tpb);
-    printf("SUMMARY [%s] phi_i %.3f (requested %.2f, solid volume/R0 H0 W %.3f; interior at the end %.3f) | "
-           "start %.0f T_visq (half run-out at %.0f) | R_inf/R0 %.2f | H_inf/R0 %.3f | back height/H0 %.2f -> %s | "
-           "Pb extremum %+.0f Pa = %+.3f drho g H0 at %.0f T_visq (min %+.3f at %.0f, max %+.3f at %.0f) | "
-           "Pb at 8/16 R0 min %+.3f max %+.3f, at 4/16 R0 min %+.3f max %+.3f | Ecx_max/(mgD) %.4f | "
-           "max grain Re %.2f | grains %zu | wall %.0f s (build %.0f s): fluid %.1f s, coupling %.1f s, DEM %.1f s, "
-           "%ld DEM steps, %d per fluid step\n",
-           mode, r->phi_l, phi_req, r->phi_m, r->phi_end, r->t_start, r->t_half, r->runout, r->h_inf, r->h_back,
-           r->h_back > 0.9 ? "trapezoid" : "triangle", pb * scale, pb, tpb, r->pb_min[0], r->t_min[0],
-           r->pb_max[0], r->t_max[0], r->pb_min[1], r->pb_max[1], r->pb_min[2], r->pb_max[2], r->ecx_max,
-           r->re_max, r->n_grains, r->wall, r->t_build, r->t_fluid, r->t_coupling, r->t_dem, r->steps, r->substeps);
+    printf("SUMMARY [%s] W %.0f D | phi_i %.3f (requested %.2f, solid volume/R0 H0 W %.3f; interior at the end "
+           "%.3f) | start %.0f T_visq (half run-out at %.0f) | R_inf/R0 %.2f | H_inf/R0 %.3f | "
+           "back height/H0 %.2f -> %s | Pb extremum %+.0f Pa = %+.3f drho g H0 at %.0f T_visq "
+           "(min %+.3f at %.0f, max %+.3f at %.0f)",
+           mode, r->w_over_D, r->phi_l, phi_req, r->phi_m, r->phi_end, r->t_start, r->t_half, r->runout, r->h_inf,
+           r->h_back, r->h_back > 0.9 ? "trapezoid" : "triangle", pb * scale, pb, tpb, r->pb_min[0], r->t_min[0],
+           r->pb_max[0], r->t_max[0]);
+    for (int k = 1; k < N_GAUGE; ++k) /* one field each: validate_fluid.sh picks "Pb at 8/16" */
+        printf(" | Pb at %.0f/16 R0 min %+.3f at %.0f max %+.3f at %.0f", 16.0 * GAUGE_X[k], r->pb_min[k],
+               r->t_min[k], r->pb_max[k], r->t_max[k]);
+    printf(" | Ecx_max/(mgD) %.4f | max grain Re %.2f | grains %zu | wall %.0f s (build %.0f s): fluid %.1f s, "
+           "coupling %.1f s, DEM %.1f s, %ld DEM steps, %d per fluid step\n",
+           r->ecx_max, r->re_max, r->n_grains, r->wall, r->t_build, r->t_fluid, r->t_coupling, r->t_dem, r->steps,
+           r->substeps);
 }
 
 static int verdict(const char *what, int ok, const char *fmt, double a, double b)

@@ -151,7 +151,8 @@ Scene column_collapse, R0 = 16 D, H0 = 8 D, W = 3 D, the seed's grains and fluid
 (D = 7.6 mm, rho_p/rho_f = 8, eta_f = 1 Pa s, Ar ~ 30), closure di_felice, cells of 2 D
 (kernel sigma 2 D), lubrication off in the main pair (on in a variant below). Times in
 T_visq = eta_f/(drho g H0); P_b is the basal excess pore pressure at x = 13/16 R0 (the seed's
-x = 13 D), scaled by drho g H0; the two other gauges sit under the column at 8/16 and 4/16 R0.
+x = 13 D), scaled by drho g H0; the other gauges sit under the column at 12/16, 11/16, 10/16,
+8/16 and 4/16 R0 (the table shows 8/16); every gauge is the mean over the transverse cell layers.
 "start": the front passes R0 + D/2; "half run-out": it passes R0 + (R_inf - R0)/2.
 
 Preparation (both columns, engine/scenes/gf_scene_column_collapse.c): gf_packing deposits the
