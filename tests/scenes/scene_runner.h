@@ -1,13 +1,17 @@
 /*
  * Shared driver of the scene tests: a dry run spec for the seeds' grains, a
  * loop that advances a simulation until its scene's done() holds (or a time
- * limit), and wall-clock timing. Header-only, static functions.
+ * limit), wall-clock timing, and the packing-seed ensemble of the
+ * validations (published laws are fits to ensemble behaviour, while one
+ * realisation of a dense granular flow scatters by several %). Header-only,
+ * static functions.
  */
 #ifndef GF_SCENE_RUNNER_H
 #define GF_SCENE_RUNNER_H
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
@@ -51,6 +55,32 @@ static inline long runner_until_done(gf_sim *sim, double t_max_nd, double every_
             break;
     }
     return steps;
+}
+
+/*
+ * Number of packing seeds of an ensemble: `--seeds N` as argv[1..2] (then
+ * consumed: *argi is the index of the first remaining argument), else the
+ * environment's GF_TEST_SEEDS, else 1. Clamped to [1, max].
+ */
+static inline int runner_seeds(int argc, char **argv, int *argi, int max)
+{
+    int n = getenv("GF_TEST_SEEDS") ? atoi(getenv("GF_TEST_SEEDS")) : 1;
+    *argi = 1;
+    if (argc > 2 && strcmp(argv[1], "--seeds") == 0)
+        n = atoi(argv[2]), *argi = 3;
+    return n < 1 ? 1 : n > max ? max : n;
+}
+
+/* Mean and sample standard deviation (sd 0 for a single value). */
+static inline void runner_mean_sd(const double *x, int n, double *mean, double *sd)
+{
+    double s = 0.0, q = 0.0;
+    for (int k = 0; k < n; ++k)
+        s += x[k];
+    *mean = s / n;
+    for (int k = 0; k < n; ++k)
+        q += (x[k] - *mean) * (x[k] - *mean);
+    *sd = n > 1 ? sqrt(q / (n - 1)) : 0.0;
 }
 
 #endif
