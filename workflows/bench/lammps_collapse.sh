@@ -46,8 +46,13 @@
 # CLOCK_PROCESS_CPUTIME_ID around gf_sim_advance, LAMMPS from its process CPU
 # time less that of the same input with `run 0` (as lammps_compare.sh).
 # NICE= (empty) runs both at normal priority (default: nice).
+# PIN=CPU (default 0) runs both codes on that one core (taskset); PIN= (empty)
+# leaves them to the scheduler (lammps_compare.sh says why).
 set -eu
 NICE=${NICE-nice}
+PIN=${PIN-0}
+PINNED=
+if [ -n "$PIN" ] && command -v taskset >/dev/null 2>&1; then PINNED="taskset -c $PIN"; fi
 LMP_REST=${LMP_REST-1}
 REST_ENERGY=1e-4 # the scene's rest_energy: kinetic energy per mobile grain / (m g D)
 SEEDS=${1:-3}
@@ -114,7 +119,7 @@ write_dump      all custom $4 x y z radius type modify sort id
 EOS
 }
 lmp_cpu() { # CPU seconds (user + system) of one LAMMPS run of input $1, log $2
-    OMP_NUM_THREADS=1 /usr/bin/time -f "%U %S" -o "$WORK/time.out" $NICE "$LMP" -in "$1" -log "$2" -screen none
+    OMP_NUM_THREADS=1 /usr/bin/time -f "%U %S" -o "$WORK/time.out" $PINNED $NICE "$LMP" -in "$1" -log "$2" -screen none
     awk '{ printf "%.3f", $1 + $2 }' "$WORK/time.out"
 }
 # front/R0, height/R0 (the scene's definitions, see above) and farthest grain/R0
@@ -144,7 +149,7 @@ echo "== dry collapse, a = $ASPECT, R0 = $LENGTH D, W = 3 D, $SEEDS seeds; LAMMP
 : > "$WORK/table"
 s=1
 while [ "$s" -le "$SEEDS" ]; do
-    OMP_NUM_THREADS=1 $NICE "$BENCH" --seed "$s" --aspect "$ASPECT" --length "$LENGTH" --width 3 \
+    OMP_NUM_THREADS=1 $PINNED $NICE "$BENCH" --seed "$s" --aspect "$ASPECT" --length "$LENGTH" --width 3 \
         --lammps-data "$WORK/c.data" --dump "$WORK/gf.txt" | tee "$WORK/gf.out"
     . "$WORK/c.data.params"
     STEPS=$(sed -n 's/.* grains (.*), \([0-9]*\) steps to t.*/\1/p' "$WORK/gf.out")
@@ -159,7 +164,7 @@ while [ "$s" -le "$SEEDS" ]; do
     if [ "$LMP_REST" != 0 ]; then
         CHECK=$(awk -v d="$D" -v g="$G" -v dt="$DT" 'BEGIN { c = 0.25 * sqrt(d / g) / dt; n = int(c); print (n < c ? n + 1 : n) }')
         lammps_rest_input "$WORK/c.data" "$STEPS" "$WORK/lmp_end.dump" "$WORK/lmp_rest.dump" > "$WORK/in.rest"
-        OMP_NUM_THREADS=1 $NICE "$LMP" -in "$WORK/in.rest" -log "$WORK/log.rest" -screen none
+        OMP_NUM_THREADS=1 $PINNED $NICE "$LMP" -in "$WORK/in.rest" -log "$WORK/log.rest" -screen none
         REST="$(deposit "$WORK/lmp_rest.dump") $(sed -n 's/^REST_STEP \([0-9]*\) KE_PER_GRAIN_MGD \([0-9.eE+-]*\).*/\1 \2/p' "$WORK/log.rest")"
     fi
     set -- $(deposit "$WORK/gf.txt") $(deposit "$WORK/lmp.dump") $REST

@@ -32,9 +32,16 @@
 # NICE= (empty) runs both at normal priority (default: nice; CPU time is
 # measured either way, nice only stretches the wall time on a loaded machine).
 # GF_BED=PREFIX reuses (or keeps) the settled bed PREFIX_<N>.h5 (gf-bench-dem --bed).
+# PIN=CPU (default 0) runs both codes on that one core (taskset), PIN= (empty)
+# leaves them to the scheduler: the two cores of a virtual machine can differ
+# by a third in speed (workflows/bench/parallel_efficiency.sh), and a ratio of
+# two runs on different cores measures the cores.
 # needs: apt-get install -y lammps  (binary `lmp`)
 set -eu
 NICE=${NICE-nice}
+PIN=${PIN-0}
+PINNED=
+if [ -n "$PIN" ] && command -v taskset >/dev/null 2>&1; then PINNED="taskset -c $PIN"; fi
 N=${1:-10000}
 STEPS=${2:-3000}
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
@@ -49,7 +56,7 @@ WORK=$(mktemp -d /tmp/gf_lammps_XXXXXX)
 trap 'rm -rf "$WORK"' EXIT
 
 echo "== grainflow: settled bed, N = $N, $STEPS steps, 1 thread"
-OMP_NUM_THREADS=1 $NICE "$BENCH" --n "$N" --steps "$STEPS" --threads 1 --lammps-data "$WORK/bed.data" \
+OMP_NUM_THREADS=1 $PINNED $NICE "$BENCH" --n "$N" --steps "$STEPS" --threads 1 --lammps-data "$WORK/bed.data" \
     ${GF_BED:+--bed "$GF_BED"} | tee "$WORK/gf.out"
 GF_RATE=$(sed -n 's/.*s wall (speed-up [0-9.]*), \([0-9.e+]*\) per CPU-second.*/\1/p' "$WORK/gf.out" | tail -1)
 . "$WORK/bed.data.params"
@@ -79,7 +86,7 @@ EOS
 lammps_input "$WORK/bed.data" "$STEPS" "$WORK/lmp_bed.dump" > "$WORK/in.bed"
 lammps_input "$WORK/bed.data" 0 "$WORK/lmp_setup.dump" > "$WORK/in.setup"
 lmp_cpu() { # CPU seconds (user + system) of one LAMMPS run of input $1
-    OMP_NUM_THREADS=1 /usr/bin/time -f "%U %S" -o "$WORK/time.out" $NICE "$LMP" -in "$1" -log "$2" -screen none
+    OMP_NUM_THREADS=1 /usr/bin/time -f "%U %S" -o "$WORK/time.out" $PINNED $NICE "$LMP" -in "$1" -log "$2" -screen none
     awk '{ printf "%.3f", $1 + $2 }' "$WORK/time.out"
 }
 echo "== LAMMPS ($LMP): same bed, same law, 1 core"
@@ -109,7 +116,7 @@ observe() {
 }
 settle_observables() {
     echo "== observables: N = $N_SETTLE grains settle from the same unsettled stack for $SETTLE_STEPS steps in both codes"
-    OMP_NUM_THREADS=1 $NICE "$BENCH" --n "$N_SETTLE" --steps "$SETTLE_STEPS" --settle 0 --threads 1 \
+    OMP_NUM_THREADS=1 $PINNED $NICE "$BENCH" --n "$N_SETTLE" --steps "$SETTLE_STEPS" --settle 0 --threads 1 \
         --lammps-data "$WORK/stack.data" --dump "$WORK/gf_settled.txt" | grep "thread(s)" | tee "$WORK/gf_settle.out"
     GF_SETTLE_RATE=$(sed -n 's/.*s wall (speed-up [0-9.]*), \([0-9.e+]*\) per CPU-second.*/\1/p' "$WORK/gf_settle.out")
     . "$WORK/stack.data.params"
