@@ -45,14 +45,11 @@
 # carry them) per CPU-second of the stepping loop, grainflow from
 # CLOCK_PROCESS_CPUTIME_ID around gf_sim_advance, LAMMPS from its process CPU
 # time less that of the same input with `run 0` (as lammps_compare.sh).
-# NICE= (empty) runs both at normal priority (default: nice).
-# PIN=CPU (default 0) runs both codes on that one core (taskset); PIN= (empty)
-# leaves them to the scheduler (lammps_compare.sh says why).
+# NICE=, PIN=CPU: how both codes run (workflows/bench/lammps_common.sh; default
+# nice, both pinned to cpu0).
 set -eu
-NICE=${NICE-nice}
-PIN=${PIN-0}
-PINNED=
-if [ -n "$PIN" ] && command -v taskset >/dev/null 2>&1; then PINNED="taskset -c $PIN"; fi
+SCRIPT=lammps_collapse
+. "$(dirname "$0")/lammps_common.sh" # NICE, PINNED, LMP
 LMP_REST=${LMP_REST-1}
 REST_ENERGY=1e-4 # the scene's rest_energy: kinetic energy per mobile grain / (m g D)
 SEEDS=${1:-3}
@@ -60,8 +57,6 @@ ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${2:-$ROOT/build}
 ASPECT=${3:-1}
 LENGTH=${4:-16}
-LMP=$(command -v lmp || command -v lmp_serial || true)
-[ -n "$LMP" ] || { echo "lammps_collapse: no LAMMPS binary (apt-get install -y lammps)" >&2; exit 1; }
 BENCH=$BUILD/workflows/bench/gf-bench-collapse
 [ -x "$BENCH" ] || { echo "lammps_collapse: build gf-bench-collapse first ($BENCH)" >&2; exit 1; }
 WORK=$(mktemp -d /tmp/gf_lmp_collapse_XXXXXX)

@@ -29,27 +29,19 @@
 # usage: lammps_compare.sh [N] [STEPS] [BUILD_DIR] [N_SETTLE] [SETTLE_STEPS]
 #        (defaults 10000 3000 build-dem 2000 20000; N_SETTLE = 0 skips the observables)
 # COLLAPSE_SEEDS=K (default 3) seeds for the dry collapse, 0 skips it (a few CPU minutes per seed).
-# NICE= (empty) runs both at normal priority (default: nice; CPU time is
-# measured either way, nice only stretches the wall time on a loaded machine).
 # GF_BED=PREFIX reuses (or keeps) the settled bed PREFIX_<N>.h5 (gf-bench-dem --bed).
-# PIN=CPU (default 0) runs both codes on that one core (taskset), PIN= (empty)
-# leaves them to the scheduler: the two cores of a virtual machine can differ
-# by a third in speed (workflows/bench/parallel_efficiency.sh), and a ratio of
-# two runs on different cores measures the cores.
+# NICE=, PIN=CPU: how both codes run (workflows/bench/lammps_common.sh; default
+# nice, both pinned to cpu0).
 # needs: apt-get install -y lammps  (binary `lmp`)
 set -eu
-NICE=${NICE-nice}
-PIN=${PIN-0}
-PINNED=
-if [ -n "$PIN" ] && command -v taskset >/dev/null 2>&1; then PINNED="taskset -c $PIN"; fi
+SCRIPT=lammps_compare
+. "$(dirname "$0")/lammps_common.sh" # NICE, PINNED, LMP
 N=${1:-10000}
 STEPS=${2:-3000}
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${3:-$ROOT/build-dem}
 N_SETTLE=${4:-2000}
 SETTLE_STEPS=${5:-20000}
-LMP=$(command -v lmp || command -v lmp_serial || true)
-[ -n "$LMP" ] || { echo "lammps_compare: no LAMMPS binary (apt-get install -y lammps)" >&2; exit 1; }
 BENCH=$BUILD/workflows/bench/gf-bench-dem
 [ -x "$BENCH" ] || { echo "lammps_compare: build gf-bench-dem first ($BENCH)" >&2; exit 1; }
 WORK=$(mktemp -d /tmp/gf_lammps_XXXXXX)
@@ -139,7 +131,7 @@ settle_observables() {
 COLLAPSE_SEEDS=${COLLAPSE_SEEDS-3}
 [ "$COLLAPSE_SEEDS" -gt 0 ] || exit 0
 if [ -x "$BUILD/workflows/bench/gf-bench-collapse" ]; then
-    "$ROOT/workflows/bench/lammps_collapse.sh" "$COLLAPSE_SEEDS" "$BUILD"
+    NICE="$NICE" PIN="$PIN" "$ROOT/workflows/bench/lammps_collapse.sh" "$COLLAPSE_SEEDS" "$BUILD"
 else
     echo "== dry collapse skipped: no $BUILD/workflows/bench/gf-bench-collapse (build it, or COLLAPSE_SEEDS=0)"
 fi
