@@ -540,12 +540,8 @@ static double kick_drift(gf_sim *s, double h)
             used = m;
         size_t i0 = (size_t)(n * (long)t / m), i1 = (size_t)(n * (long)(t + 1) / m);
         double *ref[3] = {s->x_ref, s->y_ref, s->z_ref}, *vp[3] = {s->vx_pred, s->vy_pred, s->vz_pred};
-        gf_integrate_factors kk = {s->inv_mass, (s->skips & GF_SKIP_TANGENTIAL) ? NULL : s->inv_inertia, s->mobile};
-        if (pending)
-            gf_integrate_kick(p, i0, i1, h, s->gravity_m_s2, &kk);
-        gf_integrate_kick(p, i0, i1, h, s->gravity_m_s2, &kk);
-        gf_integrate_factors k = {s->inv_mass, s->inv_inertia, s->mobile};
-        d2[t] = gf_integrate_drift(p, i0, i1, s->dt_s, s->gravity_m_s2, ref, vp, &k);
+        gf_integrate_factors k = {s->inv_mass, (s->skips & GF_SKIP_TANGENTIAL) ? NULL : s->inv_inertia, s->mobile};
+        d2[t] = gf_integrate_kick_drift(p, i0, i1, pending ? 2 : 1, s->dt_s, s->gravity_m_s2, ref, vp, &k);
     }
     double mx = 0.0;
     for (int t = 0; t < used; ++t)

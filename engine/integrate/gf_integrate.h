@@ -40,11 +40,16 @@ void gf_integrate_factors_fill(const gf_particles *p, size_t n, double *inv_mass
  * k->inv_inertia NULL: translation only (a run without torques). */
 void gf_integrate_kick(gf_particles *p, size_t i0, size_t i1, double dt_half_s, const double g_m_s2[3],
                        const gf_integrate_factors *k);
-/* x += v dt for mobile grains in [i0, i1), and the predicted velocities
+/* The step's opening sequence in one pass over the grains [i0, i1):
+ * n_kicks (1 or 2) half-kicks of dt/2 as gf_integrate_kick does them (the
+ * previous step's deferred closing kick, then this step's opening one),
+ * then x += v dt for mobile grains and the predicted velocities
  * v* = v + (F/m + g) dt/2 (F still the previous step's force) into vp[3].
- * Returns the largest squared displacement from the reference positions
- * ref[3] (last neighbour build), m^2. */
-double gf_integrate_drift(gf_particles *p, size_t i0, size_t i1, double dt_s, const double g_m_s2[3],
-                          double *const ref[3], double *const vp[3], const gf_integrate_factors *k);
+ * Per grain, the operations and their order are those of the separate
+ * passes, so the results are bitwise theirs; the store is read once instead
+ * of two or three times. Returns the largest squared displacement from the
+ * reference positions ref[3] (last neighbour build), m^2. */
+double gf_integrate_kick_drift(gf_particles *p, size_t i0, size_t i1, int n_kicks, double dt_s, const double g_m_s2[3],
+                               double *const ref[3], double *const vp[3], const gf_integrate_factors *k);
 
 #endif
