@@ -429,6 +429,10 @@ static gf_status create_inner(gf_sim *s, const gf_run_spec *spec, const gf_sim_o
     else if (!(s->t_end_s > 0.0))
         s->t_end_s = s->scene->default_end_time_nd * t_grain;
     GF_TRY(gf_sim_check_state(s));
+    if (s->immersed && (s->opt.restart_path || s->spec.output.checkpoint_interval_nd > 0.0))
+        return GF_FAIL(s->ctx, GF_ERR_UNSUPPORTED,
+                       "%s: an immersed run cannot be checkpointed or restarted yet (the fluid state is not saved); "
+                       "run it from t = 0", s->opt.restart_path ? "restart" : "output.checkpoint_interval_nd");
     if (s->opt.restart_path) {
         GF_TRY(gf_sim_restore(s, s->opt.restart_path));
     } else {

@@ -9,7 +9,12 @@
  *   particles.nc    trajectories of every grain
  *   probes.nc       excess pore pressure at the scene's gauges (immersed runs)
  *   fields.nc       the coupling's gridded fields (immersed runs)
- *   checkpoint.h5   every checkpoint_interval_nd, and on interrupt.
+ *   checkpoint.h5   every checkpoint_interval_nd, and on interrupt (dry runs).
+ * An interrupted dry run keeps its files as "<name>.partial"; started again
+ * from checkpoint.h5 (gf_sim_options.restart_path) it continues them and
+ * takes up the original output instants, so its files are those of an
+ * uninterrupted run (records and values bitwise; the history attribute notes
+ * the restart).
  * Files are written under temporary names and renamed when complete
  * (gf_nc writers); a failed run aborts them so no partial file looks complete.
  */
@@ -36,6 +41,7 @@ typedef struct run_out {
     int n_vars;
     double values[GF_MAX_DIAG];
     double *probe_values;
+    int suspend;          /* interrupted with a checkpoint written: keep the files as .partial */
 } run_out;
 
 static double ecx_per_grain(const gf_particles *p)
@@ -132,13 +138,20 @@ static gf_status open_outputs(gf_sim *s, run_out *o, gf_nc_meta *meta)
     return GF_OK;
 }
 
-static gf_status close_outputs(run_out *o, gf_status st)
+/* Closes the files: into place after a complete run, as "<name>.partial"
+ * after an interrupt that wrote a checkpoint (suspend: the restart continues
+ * them), removed after a failure. */
+static gf_status close_outputs(run_out *o, gf_status st, int suspend)
 {
     gf_nc_writer **w[4] = {&o->diag, &o->parts, &o->probes, &o->fields};
     for (int k = 0; k < 4; ++k) {
         if (st == GF_OK)
             st = gf_nc_writer_close(w[k]);
-        else
+        else if (st == GF_ERR_INTERRUPTED && suspend) {
+            gf_status ss = gf_nc_writer_suspend(w[k]);
+            if (ss != GF_OK)
+                st = ss;
+        } else
             gf_nc_writer_abort(w[k]);
     }
     free(o->probe_values);
@@ -155,7 +168,20 @@ static gf_status checkpoint_in_dir(gf_sim *s)
     return gf_sim_checkpoint(s, path);
 }
 
-static gf_status run_loop(gf_sim *s, run_out *o)
+/* The first instant of the series t_k = k dt_out (accumulated as the loop
+ * below does) that a run stopped at t_s has not reached: a restarted run
+ * takes up the original output and checkpoint instants. */
+static double next_instant(double every_s, double t_s, double dt_s)
+{
+    if (!(every_s > 0.0))
+        return INFINITY;
+    double next = every_s;
+    while (t_s >= next - 0.5 * dt_s)
+        next += every_s;
+    return next;
+}
+
+static gf_status run_loop(gf_sim *s, run_out *o, int resumed)
 {
     const double t_grain = s->scales.t_grain_s;
     double out_dt = s->spec.output.interval_nd * t_grain;
@@ -163,7 +189,12 @@ static gf_status run_loop(gf_sim *s, run_out *o)
     double next_out = out_dt > 0.0 ? s->t_s + out_dt : INFINITY, next_ck = ck_dt > 0.0 ? s->t_s + ck_dt : INFINITY;
     double wall0 = gf_wtime(), last_progress = wall0;
     long chunk = 16, steps_at_progress = s->step;
-    GF_TRY(write_record(s, o));
+    if (resumed) { /* the records up to now are in the continued files */
+        next_out = next_instant(out_dt, s->t_s, s->dt_s);
+        next_ck = next_instant(ck_dt, s->t_s, s->dt_s);
+    } else {
+        GF_TRY(write_record(s, o));
+    }
     long written_step = s->step; /* a step count, not a time: steps overshoot an instant by up to dt */
     while (s->t_s < s->t_end_s - 0.5 * s->dt_s) {
         double t_stop = fmin(fmin(next_out, next_ck), s->t_end_s);
@@ -174,9 +205,13 @@ static gf_status run_loop(gf_sim *s, run_out *o)
         if (st == GF_ERR_INTERRUPTED) {
             char what[512];
             snprintf(what, sizeof what, "%s", s->ctx->last_msg);
+            if (s->coupling || !s->opt.output_dir) /* no checkpoint of the fluid state yet (gf_sim_checkpoint.c) */
+                return GF_FAIL(s->ctx, GF_ERR_INTERRUPTED, "%s; no checkpoint%s", what,
+                               s->coupling ? " (immersed run): a resumed run starts again from t = 0" : "");
             gf_status ck = checkpoint_in_dir(s);
             if (ck != GF_OK)
                 return ck;
+            o->suspend = 1;
             return GF_FAIL(s->ctx, GF_ERR_INTERRUPTED, "%s; checkpoint written", what);
         }
         GF_TRY(st);
@@ -218,11 +253,23 @@ static void scene_geometry(const gf_sim *s, double *R0_m, double *H0_m, double *
     *incline_deg = gf_run_spec_param(&s->spec, "incline_deg", 0.0);
 }
 
+/* A run restarted from its checkpoint: each file takes up the records its
+ * interrupted predecessor left in "<name>.partial" (gf_nc_resume.c). */
+static gf_status continue_outputs(gf_sim *s, run_out *o)
+{
+    gf_nc_writer *w[4] = {o->diag, o->parts, o->probes, o->fields};
+    for (int k = 0; k < 4; ++k)
+        if (w[k])
+            GF_TRY(gf_nc_writer_continue(w[k], s->t_s + 0.5 * s->dt_s));
+    return GF_OK;
+}
+
 gf_status gf_sim_run(gf_sim *s)
 {
     run_out o;
     memset(&o, 0, sizeof o);
     gf_status st = GF_OK;
+    const int resumed = s->opt.restart_path != NULL;
     if (s->opt.output_dir) {
         double R0_m, H0_m, incline_deg, phi_measured = NAN, phi_local = NAN;
         scene_geometry(s, &R0_m, &H0_m, &incline_deg);
@@ -247,8 +294,10 @@ gf_status gf_sim_run(gf_sim *s)
             .phi_initial_local = phi_local,
         };
         st = open_outputs(s, &o, &meta);
+        if (st == GF_OK && resumed)
+            st = continue_outputs(s, &o);
     }
     if (st == GF_OK)
-        st = run_loop(s, &o);
-    return close_outputs(&o, st);
+        st = run_loop(s, &o, resumed);
+    return close_outputs(&o, st, o.suspend);
 }

@@ -6,7 +6,9 @@
  *
  * Every writer creates "<path>.tmp", appends records, and gf_nc_writer_close
  * renames it to <path> only on success: a killed run never leaves a file that
- * looks complete. gf_nc_writer_abort removes the temporary file.
+ * looks complete. gf_nc_writer_abort removes the temporary file; an
+ * interrupted run keeps it as "<path>.partial" (gf_nc_writer_suspend) for
+ * the restart to continue.
  * The only netCDF caller in the engine is this module.
  */
 #ifndef GF_NC_H
@@ -69,5 +71,14 @@ gf_status gf_nc_fields_append(gf_nc_writer *w, double t_s, const double *const *
 gf_status gf_nc_writer_close(gf_nc_writer **w);
 /* Closes and deletes the temporary file. Accepts NULL *w. */
 void gf_nc_writer_abort(gf_nc_writer **w);
+/* Interrupted run: closes the file and renames it to "<path>.partial", a
+ * complete file with the records so far that gf_nc_writer_continue can
+ * extend (gf_nc_resume.c). Accepts NULL *w. */
+gf_status gf_nc_writer_suspend(gf_nc_writer **w);
+/* Restarted run: copies into the freshly opened writer w (same spec) the
+ * global attributes, the time-independent variables and the records with
+ * time < t_before_s of "<path>.partial", which a successful close of w then
+ * removes. Fails with a message naming the file when it is missing. */
+gf_status gf_nc_writer_continue(gf_nc_writer *w, double t_before_s);
 
 #endif

@@ -307,6 +307,8 @@ gf_status gf_nc_writer_close(gf_nc_writer **pw)
     } else if (rename(w->tmp, w->path) != 0) {
         st = GF_FAIL(w->ctx, GF_ERR_IO, "cannot rename %s to %s", w->tmp, w->path);
         remove(w->tmp);
+    } else {
+        gf_nc_remove_partial(w); /* a restarted run's records now hold it all */
     }
     gf_nc_free(w);
     return st;

@@ -59,6 +59,11 @@ gf_status gf_nc_compress(gf_nc_writer *w, int varid, const size_t *chunks);
 gf_status gf_nc_check(gf_nc_writer *w, int rc, const char *what);
 /* Validates one gf_var_info (name and units present). */
 gf_status gf_nc_check_info(gf_ctx *ctx, const char *path, const gf_var_info *info, int index);
+/* particles.nc: rebuilds the id -> trajectory table from the file's
+ * trajectory_id variable (after gf_nc_writer_continue copied it). */
+gf_status gf_nc_particles_reload_ids(gf_nc_writer *w);
+/* Removes "<path>.partial" if present (gf_nc_resume.c). */
+void gf_nc_remove_partial(const gf_nc_writer *w);
 /* Frees a writer after its file was closed or removed. */
 void gf_nc_free(gf_nc_writer *w);
 

@@ -137,6 +137,27 @@ static gf_status put_static(gf_nc_writer *w, const gf_particles *p)
     return st;
 }
 
+gf_status gf_nc_particles_reload_ids(gf_nc_writer *w)
+{
+    int var_id;
+    size_t n = w->n_traj;
+    GF_TRY(gf_nc_check(w, nc_inq_varid(w->ncid, "trajectory_id", &var_id), "inq trajectory_id"));
+    long long *ids = malloc((n ? n : 1) * sizeof *ids);
+    id_slot *tab = malloc((n ? n : 1) * sizeof *tab);
+    gf_status st = ids && tab ? gf_nc_check(w, nc_get_var_longlong(w->ncid, var_id, ids), "read trajectory_id")
+                              : GF_FAIL(w->ctx, GF_ERR_NOMEM, "%s: out of memory", w->path);
+    for (size_t i = 0; st == GF_OK && i < n; ++i)
+        tab[i] = (id_slot){(int64_t)ids[i], i};
+    if (st == GF_OK) {
+        qsort(tab, n, sizeof *tab, cmp_id_slot);
+        for (size_t i = 0; i < n; ++i)
+            w->sorted_id[i] = tab[i].id, w->sorted_slot[i] = tab[i].slot;
+    }
+    free(ids);
+    free(tab);
+    return st;
+}
+
 gf_status gf_nc_particles_open(gf_ctx *ctx, const char *path, const gf_nc_meta *meta, const gf_particles *p,
                                gf_nc_writer **out)
 {

@@ -30,7 +30,7 @@ static const char campaign_help[] =
     "options:\n"
     "  -o, --output DIR     output directory (default: runs)\n"
     "  -j, --jobs N         runs at once on this machine (default: 1)\n"
-    "      --resume         skip runs whose status is done\n"
+    "      --resume         skip runs whose status is done, continue interrupted ones from their checkpoint\n"
     "      --dry-run        list the runs and their state; run nothing\n"
     "      --emit slurm     write a Slurm job-array script (one array task per run); run nothing\n"
     "      --no-post        skip post-processing\n"

@@ -76,6 +76,28 @@ gf_run_state gf_ledger_state(const char *run_dir, char *reason, size_t n)
     return GF_RUN_FAILED;
 }
 
+int gf_ledger_can_continue(const char *run_dir, const char *yaml, size_t len)
+{
+    char reason[600], path[4200];
+    if (gf_ledger_state(run_dir, reason, sizeof reason) != GF_RUN_FAILED ||
+        strncmp(reason, "interrupted", 11) != 0 || !strstr(reason, "checkpoint written"))
+        return 0;
+    snprintf(path, sizeof path, "%s/checkpoint.h5", run_dir);
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return 0;
+    fclose(f);
+    snprintf(path, sizeof path, "%s/run.yaml", run_dir);
+    if (!(f = fopen(path, "rb")))
+        return 0;
+    int same = 1;
+    for (size_t k = 0; same && k < len; ++k)
+        same = fgetc(f) == (unsigned char)yaml[k];
+    same = same && fgetc(f) == EOF;
+    fclose(f);
+    return same;
+}
+
 gf_status gf_ledger_set_done(gf_ctx *ctx, const char *run_dir)
 {
     char path[4200];

@@ -14,11 +14,15 @@ gf_status gf_run_execute(gf_ctx *ctx, const gf_run_spec *spec, const gf_run_exec
     memset(res, 0, sizeof *res);
     char *yaml = NULL;
     size_t yaml_len = 0;
+    char checkpoint[4200];
+    int cont = 0;
     if (opt->run_dir) {
         GF_TRY(gf_ledger_mkdirs(ctx, opt->run_dir));
         yaml = gf_ledger_run_yaml(spec, opt->campaign ? opt->campaign : "run", &yaml_len);
         if (!yaml)
             return GF_FAIL(ctx, GF_ERR_NOMEM, "out of memory");
+        cont = opt->resume && gf_ledger_can_continue(opt->run_dir, yaml, yaml_len);
+        snprintf(checkpoint, sizeof checkpoint, "%s/checkpoint.h5", opt->run_dir);
         char path[4200];
         snprintf(path, sizeof path, "%s/run.yaml", opt->run_dir);
         gf_status st = gf_ledger_write_atomic(ctx, path, yaml, yaml_len);
@@ -33,12 +37,14 @@ gf_status gf_run_execute(gf_ctx *ctx, const gf_run_spec *spec, const gf_run_exec
                          .n_threads = opt->n_threads,
                          .progress = opt->progress,
                          .progress_user = opt->progress_user,
-                         .interrupt = opt->interrupt};
+                         .interrupt = opt->interrupt,
+                         .restart_path = cont ? checkpoint : NULL};
     const double t0 = gf_wtime();
     gf_sim *sim = NULL;
     gf_status st = gf_sim_create(&run_ctx, spec, &so, &sim);
     if (st == GF_OK) {
         res->n_particles = (long)gf_sim_particles(sim)->n_local;
+        res->continued_from_s = cont ? gf_sim_time_s(sim) : 0.0;
         st = gf_sim_run(sim);
         res->steps = gf_sim_step_count(sim);
         res->sim_time_s = gf_sim_time_s(sim);

@@ -16,6 +16,7 @@ typedef struct gf_run_exec_opts {
     void (*progress)(void *user, double t_s, double t_end_s, double steps_per_s);
     void *progress_user;
     volatile int *interrupt;
+    int resume;                /* continue from run_dir/checkpoint.h5 when gf_ledger_can_continue */
 } gf_run_exec_opts;
 
 typedef struct gf_run_result {
@@ -26,6 +27,7 @@ typedef struct gf_run_result {
     long n_particles;
     double sim_time_s;
     double timers_s[16];       /* gf_sim_timers elapsed_s, GF_TIMER_COUNT entries */
+    double continued_from_s;   /* simulated time the run continued from (resume), 0 for a fresh start */
 } gf_run_result;
 
 /* Runs spec; never returns an error for a failed simulation: that is in

@@ -96,7 +96,7 @@ static void child_on_signal(int sig)
 
 /* The worker process: one run, then _exit (the child must not return into
  * the caller's stack, nor run its atexit handlers or flush its stdio twice). */
-static void worker(const gf_campaign *c, int index, const char *run_dir, int n_threads, slot *s)
+static void worker(const gf_campaign *c, int index, const char *run_dir, int n_threads, int resume, slot *s)
 {
     struct sigaction sa = {0};
     sa.sa_handler = child_on_signal;
@@ -109,7 +109,8 @@ static void worker(const gf_campaign *c, int index, const char *run_dir, int n_t
                            .n_threads = n_threads,
                            .progress = on_progress,
                            .progress_user = s,
-                           .interrupt = &child_interrupt};
+                           .interrupt = &child_interrupt,
+                           .resume = resume};
     gf_run_result res;
     gf_status st = gf_run_execute(&ctx, &c->runs[index].spec, &eo, &res);
     if (st != GF_OK)
@@ -190,7 +191,7 @@ static gf_status run_pool(gf_ctx *ctx, const gf_campaign *c, const gf_sched_opts
     /* One thread per worker when several share the machine; the library
      * default (all cores) for a lone worker. */
     const int n_threads = n_jobs > 1 ? 1 : 0;
-    int next = 0, running = 0;
+    int next = 0, running = 0, forwarded = 0;
     gf_status st = GF_OK;
     double last_draw = 0.0;
     fflush(stdout);
@@ -206,7 +207,7 @@ static gf_status run_pool(gf_ctx *ctx, const gf_campaign *c, const gf_sched_opts
             slots[i] = (slot){.run = index, .progress = {.started_s = gf_wtime()}};
             pid_t pid = fork();
             if (pid == 0)
-                worker(c, index, dir, n_threads, &slots[i]);
+                worker(c, index, dir, n_threads, opt->resume, &slots[i]);
             if (pid < 0) {
                 st = GF_FAIL(ctx, GF_ERR_IO, "worker pool: fork failed: %s", strerror(errno));
                 slots[i].run = -1;
@@ -218,6 +219,14 @@ static gf_status run_pool(gf_ctx *ctx, const gf_campaign *c, const gf_sched_opts
         }
         if (stop && next < n_todo)
             next = n_todo, st = GF_ERR_INTERRUPTED;
+        if (stop && !forwarded) { /* a signal sent to this process alone (kill PID) reaches the runs too: they
+                                     stop at their next step and checkpoint (a terminal's Ctrl-C or Slurm signal
+                                     the whole group; a second signal changes nothing) */
+            for (int i = 0; i < n_jobs; ++i)
+                if (slots[i].run >= 0)
+                    kill(slots[i].pid, SIGTERM);
+            forwarded = 1;
+        }
         int wstatus;
         pid_t pid;
         while (running > 0 && (pid = waitpid(-1, &wstatus, WNOHANG)) > 0) {
@@ -271,7 +280,7 @@ static gf_status run_farm(gf_ctx *ctx, const gf_campaign *c, const gf_sched_opts
         const int index = todo[k];
         char dir[4200], what[200];
         gf_ledger_run_dir(opt->out_dir, c->name, c->runs[index].spec.run_id, dir, sizeof dir);
-        gf_run_exec_opts eo = {.run_dir = dir, .campaign = c->name, .interrupt = opt->interrupt};
+        gf_run_exec_opts eo = {.run_dir = dir, .campaign = c->name, .interrupt = opt->interrupt, .resume = opt->resume};
         gf_run_result res;
         gf_status est = gf_run_execute(ctx, &c->runs[index].spec, &eo, &res);
         if (est != GF_OK)

@@ -24,7 +24,7 @@
 typedef struct gf_sched_opts {
     const char *out_dir;          /* runs go to <out_dir>/<campaign>/<run-id> */
     int n_jobs;                   /* local workers; <= 0: 1 */
-    int resume;                   /* skip runs whose status is done */
+    int resume;                   /* skip runs whose status is done; continue interrupted ones from their checkpoint */
     const int *selected;          /* run indices to consider; NULL: all */
     int n_selected;
     int tty;                      /* draw updating progress lines */

@@ -22,7 +22,8 @@
  *   grain speed bounds the slip), wall time split fluid / DEM.
  * Usage: validate_collapse PHI [END_T_VISQ] [LUBRICATION 0|1] [MODE] [KEY=VALUE...]
  * KEY=VALUE sets a scene parameter, fluid.cell_over_D as cell_over_D=X, the
- * random seed as seed=N.
+ * drag closure as drag=NAME, contact.t_contact_nd and contact.friction as
+ * t_contact_nd=X and friction=X, the random seed as seed=N.
  * MODE "viscous" (default); "held": the gate is put back after start(), to
  * measure how far the column compacts by itself in the fluid (interior Phi at
  * the end is printed); "dry": fluid.model = none; "thin": the unresolved tier
@@ -87,6 +88,10 @@ static int apply_keys(gf_ctx *ctx, gf_run_spec *spec, int argc, char **argv)
             spec->fluid.cell_over_D = atof(eq + 1);
         else if (strcmp(key, "drag") == 0)
             snprintf(spec->fluid.drag, sizeof spec->fluid.drag, "%s", eq + 1);
+        else if (strcmp(key, "t_contact_nd") == 0)
+            spec->contact.t_contact_nd = atof(eq + 1);
+        else if (strcmp(key, "friction") == 0)
+            spec->contact.friction = atof(eq + 1);
         else if (strcmp(key, "seed") == 0)
             spec->seed = (uint64_t)strtoull(eq + 1, NULL, 10);
         else if (gf_run_spec_set_param(ctx, spec, key, atof(eq + 1)) != GF_OK) {

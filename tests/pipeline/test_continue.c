@@ -1,0 +1,216 @@
+/*
+ * --resume continues an interrupted run from its checkpoint, and its files
+ * are then those of an uninterrupted run.
+ *
+ * Scene: a dissipative, frictional granular gas (2200 grains, eps 0.8,
+ * mu 0.5: tangential history in every collision; above the 2048 grains from
+ * which the store is sorted in space at neighbour rebuilds, so the restored
+ * store is not in the order particles.nc was opened with).
+ *
+ * - reference: one uninterrupted run (gf_run_execute, as every scheduler);
+ * - the same run interrupted by a timer at ~40 % of the reference's wall
+ *   time (as SIGTERM from a batch system would): status "failed:
+ *   interrupted ... checkpoint written", checkpoint.h5 and the .nc.partial
+ *   files present, no diagnostics.nc;
+ * - a plain retry without resume would start again; with resume it
+ *   continues from the checkpoint's time (> 0), ends done, leaves no
+ *   .partial, and every variable of diagnostics.nc and particles.nc (time
+ *   included) is bitwise that of the reference;
+ * - a changed spec (run.yaml differs) is not continued: it starts at t = 0;
+ * - an immersed run asking for periodic checkpoints is refused at creation
+ *   with a message that says why (the fluid state is not saved).
+ */
+#include <netcdf.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/time.h>
+#include <unistd.h>
+
+#include "core/gf_timer.h"
+#include "gf_test.h"
+#include "schedule/gf_ledger.h"
+#include "schedule/gf_run_exec.h"
+
+static volatile int interrupt_flag;
+static void on_alarm(int sig)
+{
+    (void)sig;
+    interrupt_flag = 1;
+}
+
+static void gas_spec(gf_ctx *ctx, gf_run_spec *s)
+{
+    gf_run_spec_defaults(s);
+    snprintf(s->scene, sizeof s->scene, "elastic_gas");
+    snprintf(s->run_id, sizeof s->run_id, "gas");
+    s->grains.diameter_m = 5e-3;
+    s->grains.density_kg_m3 = 2500.0;
+    s->grains.polydispersity = 0.05;
+    s->contact.restitution = 0.8;
+    s->contact.friction = 0.5;
+    s->end_time_nd = 4.0;
+    s->output.interval_nd = 0.25;
+    GF_CHECK_OK(gf_run_spec_set_param(ctx, s, "n_grains", 2200), ctx);
+    GF_CHECK_OK(gf_run_spec_set_param(ctx, s, "box_over_D", 16), ctx);
+}
+
+static int exists(const char *dir, const char *name)
+{
+    char path[4300];
+    struct stat sb;
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    return stat(path, &sb) == 0;
+}
+
+/* Every variable of a/name equals that of b/name bitwise (same names, types, sizes). */
+static void same_file(const char *a, const char *b, const char *name)
+{
+    char pa[4300], pb[4300];
+    snprintf(pa, sizeof pa, "%s/%s", a, name);
+    snprintf(pb, sizeof pb, "%s/%s", b, name);
+    int fa, fb, nv;
+    if (nc_open(pa, NC_NOWRITE, &fa) != NC_NOERR || nc_open(pb, NC_NOWRITE, &fb) != NC_NOERR) {
+        gf_test_check(0, __FILE__, __LINE__, "cannot open %s or %s", pa, pb);
+        return;
+    }
+    GF_CHECK(nc_inq_nvars(fa, &nv) == NC_NOERR && nv > 1);
+    int n_same = 0;
+    for (int v = 0; v < nv; ++v) {
+        char vn[NC_MAX_NAME + 1];
+        nc_type t;
+        int nd, dims[NC_MAX_VAR_DIMS], vb;
+        size_t len = 1, size = 0;
+        nc_inq_var(fa, v, vn, &t, &nd, dims, NULL);
+        nc_inq_type(fa, t, NULL, &size);
+        for (int d = 0; d < nd; ++d) {
+            size_t l;
+            nc_inq_dimlen(fa, dims[d], &l);
+            len *= l;
+        }
+        size_t len_b = 1;
+        int nd_b, dims_b[NC_MAX_VAR_DIMS];
+        nc_type tb;
+        if (nc_inq_varid(fb, vn, &vb) != NC_NOERR) {
+            gf_test_check(0, __FILE__, __LINE__, "%s: variable %s missing after the restart", name, vn);
+            continue;
+        }
+        nc_inq_var(fb, vb, NULL, &tb, &nd_b, dims_b, NULL);
+        for (int d = 0; d < nd_b; ++d) {
+            size_t l;
+            nc_inq_dimlen(fb, dims_b[d], &l);
+            len_b *= l;
+        }
+        if (tb != t || len_b != len) {
+            gf_test_check(0, __FILE__, __LINE__, "%s: %s has %zu values of type %d, reference %zu of type %d", name, vn,
+                          len_b, (int)tb, len, (int)t);
+            continue;
+        }
+        void *x = malloc(len * size + 1), *y = malloc(len * size + 1);
+        int ok = x && y && nc_get_var(fa, v, x) == NC_NOERR && nc_get_var(fb, vb, y) == NC_NOERR &&
+                 memcmp(x, y, len * size) == 0;
+        gf_test_check(ok, __FILE__, __LINE__, "%s: variable %s (%zu values) bitwise as the uninterrupted run", name,
+                      vn, len);
+        n_same += ok;
+        free(x);
+        free(y);
+    }
+    printf("%s: %d of %d variables bitwise equal to the uninterrupted run\n", name, n_same, nv);
+    nc_close(fa);
+    nc_close(fb);
+}
+
+int main(void)
+{
+    char out[] = "/tmp/gf_continue_XXXXXX";
+    GF_CHECK(mkdtemp(out) != NULL);
+    char ref[4200], cut[4200], reason[600];
+    snprintf(ref, sizeof ref, "%s/reference", out);
+    snprintf(cut, sizeof cut, "%s/interrupted", out);
+    gf_ctx ctx = {0};
+    gf_run_spec spec;
+    gas_spec(&ctx, &spec);
+
+    gf_run_result res;
+    gf_run_exec_opts ro = {.run_dir = ref, .campaign = "continue", .n_threads = 1};
+    GF_CHECK_OK(gf_run_execute(&ctx, &spec, &ro, &res), &ctx);
+    GF_CHECK(res.status == GF_OK && res.continued_from_s == 0.0);
+    printf("reference: %ld steps, %.2f s wall\n", res.steps, res.wall_s);
+    const double ref_wall_s = res.wall_s;
+
+    /* interrupted at ~40 % of the reference's wall time (a shorter delay
+     * again if a faster moment of a shared machine finished it first) */
+    struct sigaction sa = {0};
+    sa.sa_handler = on_alarm;
+    sigaction(SIGALRM, &sa, NULL);
+    gf_run_exec_opts co = {.run_dir = cut, .campaign = "continue", .n_threads = 1, .interrupt = &interrupt_flag};
+    struct itimerval it = {{0, 0}, {0, 0}};
+    for (double frac = 0.4; frac > 0.01; frac *= 0.5) {
+        long usec = (long)(frac * ref_wall_s * 1e6) + 1;
+        it.it_value.tv_sec = usec / 1000000, it.it_value.tv_usec = usec % 1000000;
+        interrupt_flag = 0;
+        setitimer(ITIMER_REAL, &it, NULL);
+        GF_CHECK_OK(gf_run_execute(&ctx, &spec, &co, &res), &ctx);
+        if (res.status != GF_OK)
+            break;
+    }
+    GF_CHECK(res.status == GF_ERR_INTERRUPTED);
+    GF_CHECK(gf_ledger_state(cut, reason, sizeof reason) == GF_RUN_FAILED);
+    gf_test_check(strstr(reason, "checkpoint written") != NULL, __FILE__, __LINE__, "status: %s", reason);
+    GF_CHECK(exists(cut, "checkpoint.h5") && exists(cut, "diagnostics.nc.partial") &&
+             exists(cut, "particles.nc.partial") && !exists(cut, "diagnostics.nc"));
+    const double t_cut = res.sim_time_s;
+    printf("interrupted at t = %.4g s\n", t_cut);
+
+    /* resumed: continues from the checkpoint, same files as the reference */
+    interrupt_flag = 0;
+    co.resume = 1;
+    GF_CHECK_OK(gf_run_execute(&ctx, &spec, &co, &res), &ctx);
+    GF_CHECK(res.status == GF_OK);
+    gf_test_check(res.continued_from_s > 0.0 && res.continued_from_s == t_cut, __FILE__, __LINE__,
+                  "continued from t = %.17g s (interrupted at %.17g s)", res.continued_from_s, t_cut);
+    GF_CHECK(gf_ledger_state(cut, NULL, 0) == GF_RUN_DONE);
+    GF_CHECK(!exists(cut, "diagnostics.nc.partial") && !exists(cut, "particles.nc.partial"));
+    same_file(ref, cut, "diagnostics.nc");
+    same_file(ref, cut, "particles.nc");
+
+    /* a changed spec is not continued from an old checkpoint */
+    char changed[4300];
+    snprintf(changed, sizeof changed, "%s/changed", out);
+    co.run_dir = changed;
+    co.resume = 0;
+    spec.end_time_nd = 3.0;
+    interrupt_flag = 0;
+    setitimer(ITIMER_REAL, &it, NULL);
+    GF_CHECK_OK(gf_run_execute(&ctx, &spec, &co, &res), &ctx);
+    GF_CHECK(res.status == GF_ERR_INTERRUPTED && res.sim_time_s > 0.0);
+    interrupt_flag = 0;
+    co.resume = 1;
+    spec.end_time_nd = 2.0;
+    GF_CHECK_OK(gf_run_execute(&ctx, &spec, &co, &res), &ctx);
+    GF_CHECK(res.status == GF_OK && res.continued_from_s == 0.0);
+
+    /* immersed runs: no checkpoint yet, said at creation */
+    gf_run_spec imm;
+    gf_run_spec_defaults(&imm);
+    snprintf(imm.scene, sizeof imm.scene, "settling");
+    snprintf(imm.run_id, sizeof imm.run_id, "immersed");
+    snprintf(imm.fluid.model, sizeof imm.fluid.model, "unresolved");
+    imm.fluid.density_kg_m3 = 1000.0;
+    imm.fluid.viscosity_Pa_s = 1e-3;
+    imm.output.checkpoint_interval_nd = 1.0;
+    char imm_dir[4300];
+    snprintf(imm_dir, sizeof imm_dir, "%s/immersed", out);
+    gf_run_exec_opts io = {.run_dir = imm_dir, .campaign = "continue", .n_threads = 1};
+    GF_CHECK_OK(gf_run_execute(&ctx, &imm, &io, &res), &ctx);
+    gf_test_check(res.status == GF_ERR_UNSUPPORTED && strstr(res.message, "fluid state") != NULL, __FILE__, __LINE__,
+                  "immersed run with checkpoints: %s", res.message);
+
+    char cmd[4300];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", out);
+    if (system(cmd) != 0)
+        fprintf(stderr, "could not remove %s\n", out);
+    return gf_test_finish();
+}
