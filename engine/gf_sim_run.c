@@ -139,15 +139,15 @@ static gf_status open_outputs(gf_sim *s, run_out *o, gf_nc_meta *meta)
 }
 
 /* Closes the files: into place after a complete run, as "<name>.partial"
- * after an interrupt that wrote a checkpoint (suspend: the restart continues
- * them), removed after a failure. */
-static gf_status close_outputs(run_out *o, gf_status st, int suspend)
+ * after an interrupt that wrote a checkpoint (o->suspend: the restart
+ * continues them), removed after a failure. */
+static gf_status close_outputs(run_out *o, gf_status st)
 {
     gf_nc_writer **w[4] = {&o->diag, &o->parts, &o->probes, &o->fields};
     for (int k = 0; k < 4; ++k) {
         if (st == GF_OK)
             st = gf_nc_writer_close(w[k]);
-        else if (st == GF_ERR_INTERRUPTED && suspend) {
+        else if (st == GF_ERR_INTERRUPTED && o->suspend) {
             gf_status ss = gf_nc_writer_suspend(w[k]);
             if (ss != GF_OK)
                 st = ss;
@@ -299,5 +299,5 @@ gf_status gf_sim_run(gf_sim *s)
     }
     if (st == GF_OK)
         st = run_loop(s, &o, resumed);
-    return close_outputs(&o, st, o.suspend);
+    return close_outputs(&o, st);
 }
