@@ -152,6 +152,7 @@ static gf_status read_all(gf_sim *s, gf_restart *r)
         s->t_end_s = clock[2];
     if (clock[1] != s->dt_s)
         return GF_FAIL(s->ctx, GF_ERR_CONFIG, "restart: checkpoint dt = %.17g s, spec gives %.17g s", clock[1], s->dt_s);
+    gf_nlist_clear_history(s->nl); /* the preparation's contacts are not the checkpoint's */
     GF_TRY(gf_sim_rebuild_from_ref(s));
     size_t m2 = 0;
     GF_TRY(gf_restart_len(r, "contact_ids", &m2));

@@ -293,6 +293,14 @@ int gf_nlist_set_history(gf_nlist *nl, const int64_t *id, int64_t a, int64_t b, 
     return 1;
 }
 
+void gf_nlist_clear_history(gf_nlist *nl)
+{
+    if (nl->n_pairs == 0)
+        return;
+    memset(nl->hist, 0, 3 * nl->n_pairs * sizeof(double));
+    memset(nl->touching, 0, nl->n_pairs);
+}
+
 static void carry_history(gf_nlist *nl, const int64_t *id)
 {
     for (size_t r = 0; r < nl->old_n; ++r)

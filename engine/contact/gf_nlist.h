@@ -84,6 +84,11 @@ gf_status gf_nlist_build(gf_ctx *ctx, gf_nlist *nl, const gf_nlist_geom *g, size
  * Returns 1 when found. Needs the ids passed to the last build. */
 int gf_nlist_set_history(gf_nlist *nl, const int64_t *id, int64_t id_a, int64_t id_b, const double h[3]);
 
+/* Forgets every pair's history (restart: the checkpoint's contacts replace
+ * whatever the scene's own preparation left, which the next build would
+ * otherwise carry over to pairs the checkpoint has no history for). */
+void gf_nlist_clear_history(gf_nlist *nl);
+
 /* Wraps coordinate into [lo, hi) along periodic axes. */
 void gf_nlist_wrap(const gf_nlist_geom *g, size_t n, double *x, double *y, double *z);
 
