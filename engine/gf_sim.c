@@ -40,7 +40,8 @@
 #define GF_OVERLAP_MAX_OVER_D 0.05
 #define GF_FINITE_CHECK_EVERY 1000 /* steps between finite-value guards */
 
-gf_status gf_sim_restore(gf_sim *s, const char *path); /* gf_sim_checkpoint.c */
+gf_status gf_sim_restore(gf_sim *s, const char *path);          /* gf_sim_checkpoint.c */
+gf_status gf_sim_restore_coupling(gf_sim *s, const char *path); /* gf_sim_checkpoint.c */
 
 /* ---- accessors ---- */
 gf_particles *gf_sim_particles(gf_sim *s) { return s->p; }
@@ -429,10 +430,6 @@ static gf_status create_inner(gf_sim *s, const gf_run_spec *spec, const gf_sim_o
     else if (!(s->t_end_s > 0.0))
         s->t_end_s = s->scene->default_end_time_nd * t_grain;
     GF_TRY(gf_sim_check_state(s));
-    if (s->immersed && (s->opt.restart_path || s->spec.output.checkpoint_interval_nd > 0.0))
-        return GF_FAIL(s->ctx, GF_ERR_UNSUPPORTED,
-                       "%s: an immersed run cannot be checkpointed or restarted yet (the fluid state is not saved); "
-                       "run it from t = 0", s->opt.restart_path ? "restart" : "output.checkpoint_interval_nd");
     if (s->opt.restart_path) {
         GF_TRY(gf_sim_restore(s, s->opt.restart_path));
     } else {
@@ -443,6 +440,8 @@ static gf_status create_inner(gf_sim *s, const gf_run_spec *spec, const gf_sim_o
     }
     if (s->immersed)
         GF_TRY(create_coupling(s));
+    if (s->immersed && s->opt.restart_path)
+        GF_TRY(gf_sim_restore_coupling(s, s->opt.restart_path));
     return GF_OK;
 }
 
@@ -652,7 +651,11 @@ gf_status gf_sim_advance(gf_sim *s, long n_steps)
     gf_status st = GF_OK;
     for (long k = 0; k < n_steps && st == GF_OK; ++k) {
         if (s->opt.interrupt && *s->opt.interrupt) {
-            st = GF_FAIL(s->ctx, GF_ERR_INTERRUPTED, "run interrupted at t = %g s (step %ld)", s->t_s, s->step);
+            st = s->in_build ? GF_FAIL(s->ctx, GF_ERR_INTERRUPTED,
+                                       "run interrupted while scene %s prepared its grains (nothing to checkpoint yet)",
+                                       s->spec.scene)
+                             : GF_FAIL(s->ctx, GF_ERR_INTERRUPTED, "run interrupted at t = %g s (step %ld)", s->t_s,
+                                       s->step);
             break;
         }
         if (s->coupling && s->step >= s->next_fluid_step) {

@@ -17,10 +17,10 @@
  * The restart rebuilds the scene (box, walls, grains) from the spec, skips
  * scene->start (it already ran before the checkpoint) and overwrites the
  * state. The grain count must match. Same thread count => same bits.
- * Immersed runs are refused (GF_ERR_UNSUPPORTED): the fluid and coupling
- * state (face velocities, pressure, fluid fraction, the grains' held fluid
- * forces) is not part of the file yet, and a restart without it would
- * continue from a fluid at rest.
+ * Immersed runs add the fluid and coupling state (gf_coupling_save: face
+ * velocities, pressure, fluid fraction, the grains' held fluid forces) and
+ * the fluid-step schedule (the step of the next fluid step and the substep
+ * count), restored once the coupling exists (gf_sim_restore_coupling).
  */
 #include <stdlib.h>
 #include <string.h>
@@ -29,6 +29,7 @@
 #include "io/gf_restart.h"
 
 gf_status gf_sim_restore(gf_sim *s, const char *path);
+gf_status gf_sim_restore_coupling(gf_sim *s, const char *path);
 
 #define GF_CK_F64_FIELDS(X)                                                                                     \
     X(x_m) X(y_m) X(z_m) X(vx_m_s) X(vy_m_s) X(vz_m_s) X(wx_rad_s) X(wy_rad_s) X(wz_rad_s) X(fx_N) X(fy_N)    \
@@ -87,14 +88,16 @@ static gf_status write_all(gf_sim *s, gf_restart *r)
     if (st == GF_OK)
         st = gf_restart_put_f64(r, "contact_history", 3 * m, h);
     free(ids), free(h);
+    if (st == GF_OK && s->coupling) {
+        st = gf_restart_put_i64(r, "fluid_schedule", 2, (const int64_t[2]){s->next_fluid_step, s->n_substeps});
+        if (st == GF_OK)
+            st = gf_coupling_save(s->coupling, r);
+    }
     return st;
 }
 
 gf_status gf_sim_checkpoint(gf_sim *s, const char *path)
 {
-    if (s->coupling)
-        return GF_FAIL(s->ctx, GF_ERR_UNSUPPORTED,
-                       "checkpoint %s: the fluid state of an immersed run is not saved yet", path);
     if (!s->forces_valid)
         GF_TRY(gf_sim_compute_forces(s));
     gf_restart *r = NULL;
@@ -180,4 +183,23 @@ gf_status gf_sim_restore(gf_sim *s, const char *path)
     gf_status st = read_all(s, r);
     gf_restart_close(&r);
     return st;
+}
+
+gf_status gf_sim_restore_coupling(gf_sim *s, const char *path)
+{
+    gf_restart *r = NULL;
+    GF_TRY(gf_restart_open(s->ctx, path, &r));
+    int64_t schedule[2] = {0, 0};
+    gf_status st = gf_restart_has(r, "fluid_schedule")
+                       ? gf_restart_get_i64(r, "fluid_schedule", 2, schedule)
+                       : GF_FAIL(s->ctx, GF_ERR_CONFIG,
+                                 "restart %s: the checkpoint holds no fluid state (written by a dry run?) but this run "
+                                 "is immersed", path);
+    if (st == GF_OK)
+        st = gf_coupling_load(s->coupling, r);
+    gf_restart_close(&r);
+    GF_TRY(st);
+    s->next_fluid_step = (long)schedule[0];
+    s->n_substeps = (int)schedule[1];
+    return GF_OK;
 }

@@ -9,8 +9,8 @@
  *   particles.nc    trajectories of every grain
  *   probes.nc       excess pore pressure at the scene's gauges (immersed runs)
  *   fields.nc       the coupling's gridded fields (immersed runs)
- *   checkpoint.h5   every checkpoint_interval_nd, and on interrupt (dry runs).
- * An interrupted dry run keeps its files as "<name>.partial"; started again
+ *   checkpoint.h5   every checkpoint_interval_nd, and on interrupt.
+ * An interrupted run keeps its files as "<name>.partial"; started again
  * from checkpoint.h5 (gf_sim_options.restart_path) it continues them and
  * takes up the original output instants, so its files are those of an
  * uninterrupted run (records and values bitwise; the history attribute notes
@@ -205,9 +205,8 @@ static gf_status run_loop(gf_sim *s, run_out *o, int resumed)
         if (st == GF_ERR_INTERRUPTED) {
             char what[512];
             snprintf(what, sizeof what, "%s", s->ctx->last_msg);
-            if (s->coupling || !s->opt.output_dir) /* no checkpoint of the fluid state yet (gf_sim_checkpoint.c) */
-                return GF_FAIL(s->ctx, GF_ERR_INTERRUPTED, "%s; no checkpoint%s", what,
-                               s->coupling ? " (immersed run): a resumed run starts again from t = 0" : "");
+            if (!s->opt.output_dir)
+                return GF_FAIL(s->ctx, GF_ERR_INTERRUPTED, "%s; no checkpoint (no output directory)", what);
             gf_status ck = checkpoint_in_dir(s);
             if (ck != GF_OK)
                 return ck;

@@ -16,6 +16,7 @@
 #include "core/gf_status.h"
 #include "gf_run_spec.h"
 #include "io/gf_nc.h"
+#include "io/gf_restart.h"
 #include "particles/gf_particles.h"
 
 typedef struct gf_coupling gf_coupling;
@@ -51,6 +52,14 @@ int gf_coupling_fields(const gf_coupling *c, int n_cells[3], double lo_m[3], dou
  * The step loop calls it whenever gf_sim_set_gravity changes gravity on a run
  * that already has a coupling. Errors: non-finite g. */
 gf_status gf_coupling_set_gravity(gf_coupling *c, const double gravity_m_s2[3]);
+/* Checkpoint of the fluid and of what the last fluid step left on the grains
+ * (face velocities, excess pressure, fluid fraction, held drag coefficients,
+ * fluid velocities and forces, output fields, counters), written beside the
+ * DEM state of gf_sim_checkpoint: a run restarted from it continues bitwise.
+ * gf_coupling_checkpoint.c. Load errors: a checkpoint of a dry run or of
+ * another grid (GF_ERR_CONFIG), a damaged file (GF_ERR_IO). */
+gf_status gf_coupling_save(const gf_coupling *c, gf_restart *r);
+gf_status gf_coupling_load(gf_coupling *c, gf_restart *r);
 /* Fluid volume flux through the domain along x per unit length (Q_f, m^3/s), and fluid mass, kg. */
 double gf_coupling_fluid_flow_rate(const gf_coupling *c);
 double gf_coupling_fluid_mass_kg(const gf_coupling *c);

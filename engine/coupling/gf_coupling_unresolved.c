@@ -99,16 +99,15 @@
 #include "coupling/gf_average.h"
 #include "coupling/gf_coupling.h"
 #include "coupling/gf_coupling_diag.h"
+#include "coupling/gf_coupling_unresolved.h"
 #include "coupling/gf_drag.h"
 #include "fluid/gf_fluid.h"
 
 #define EPS_FLOOR 0.25  /* below any random packing's fluid fraction (0.36) after smoothing */
 #define SELF_CAP 0.5
-#define OSEEN_N 96
 #define OSEEN_LOG_RE0 (-3.0)
 #define OSEEN_DLOG_RE (7.0 / (OSEEN_N - 1))
 
-enum { FLD_EPS, FLD_U, FLD_V, FLD_W, FLD_P, FLD_N };
 
 static const gf_var_info field_vars[FLD_N] = {
     {"fluid_fraction", "1", "fluid volume fraction (kernel-averaged)", NULL},
@@ -118,32 +117,6 @@ static const gf_var_info field_vars[FLD_N] = {
     {"excess_pressure", "Pa", "fluid pressure minus hydrostatic", NULL},
 };
 
-typedef struct held_grain {
-    int64_t id;
-    double K_kg_s, uf[3], f_other_N[3], eps, mass_kg;
-} held_grain;
-
-struct gf_coupling {
-    gf_ctx *ctx;
-    gf_run_spec spec;
-    gf_coupling_setup setup;
-    gf_fluid *fluid;
-    gf_drag_law law;
-    double sigma_m, self_mobility, dt_dem_s;
-    double sigma_eff_m;           /* Gaussian width whose continuum Stokes self-mobility is self_mobility */
-    double oseen[OSEEN_N];        /* Oseen reduction of the self-mobility on a log grid of Re_sigma */
-    double rho_f, mu;
-    int user_gradp;
-    double mean_gradp[3];
-    int ref_axis, ref_side;       /* pressure reference: mean p' = 0 over this face's cell layer (-1: domain mean) */
-    int first_step;
-    gf_kernel *kern;
-    held_grain *held;
-    size_t cap, n_held;
-    double *uc[3], *gp[3];        /* cell-centred velocity and excess-pressure gradient */
-    double *fields[FLD_N];
-    gf_coupling_stats stats;
-};
 
 /*
  * Self-mobility G0 of a kernel-spread force on this grid: the Stokes velocity,
@@ -394,7 +367,7 @@ void gf_coupling_destroy(gf_coupling **pc)
     *pc = NULL;
 }
 
-static gf_status reserve(gf_coupling *c, size_t n)
+gf_status gf_coupling_reserve(gf_coupling *c, size_t n)
 {
     if (n <= c->cap)
         return GF_OK;
@@ -740,7 +713,7 @@ gf_status gf_coupling_fluid_step(gf_coupling *c, const gf_particles *p, double d
         return GF_FAIL(ctx, GF_ERR_NUMERIC, "fluid step dt = %.3g s lets grains move %.2f cells (|v|max = %.3g m/s, "
                        "limit 1 cell); take dt <= gf_coupling_dt_max_s = %.3g s", dt_s, vmax * dt_s / h, vmax,
                        gf_coupling_dt_max_s(c, p));
-    GF_TRY(reserve(c, p->n_local));
+    GF_TRY(gf_coupling_reserve(c, p->n_local));
 
     /* 1. fluid fraction from the grains as they are now */
     memcpy(f->eps_old, f->eps, g->n_cells * sizeof(double));

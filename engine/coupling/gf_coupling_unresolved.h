@@ -1,0 +1,51 @@
+/*
+ * The unresolved coupling's state, shared by the files of that tier only
+ * (gf_coupling_unresolved.c: set-up, fluid step, forces;
+ * gf_coupling_checkpoint.c: save and restore). Not a public header: the step
+ * loop uses gf_coupling.h.
+ */
+#ifndef GF_COUPLING_UNRESOLVED_H
+#define GF_COUPLING_UNRESOLVED_H
+
+#include "coupling/gf_average.h"
+#include "coupling/gf_coupling.h"
+#include "coupling/gf_coupling_diag.h"
+#include "coupling/gf_drag.h"
+#include "fluid/gf_fluid.h"
+
+#define OSEEN_N 96
+
+enum { FLD_EPS, FLD_U, FLD_V, FLD_W, FLD_P, FLD_N };
+
+/* What one fluid step leaves for the DEM substeps that follow, per grain. */
+typedef struct held_grain {
+    int64_t id;
+    double K_kg_s, uf[3], f_other_N[3], eps, mass_kg;
+} held_grain;
+
+struct gf_coupling {
+    gf_ctx *ctx;
+    gf_run_spec spec;
+    gf_coupling_setup setup;
+    gf_fluid *fluid;
+    gf_drag_law law;
+    double sigma_m, self_mobility, dt_dem_s;
+    double sigma_eff_m;           /* Gaussian width whose continuum Stokes self-mobility is self_mobility */
+    double oseen[OSEEN_N];        /* Oseen reduction of the self-mobility on a log grid of Re_sigma */
+    double rho_f, mu;
+    int user_gradp;
+    double mean_gradp[3];
+    int ref_axis, ref_side;       /* pressure reference: mean p' = 0 over this face's cell layer (-1: domain mean) */
+    int first_step;
+    gf_kernel *kern;
+    held_grain *held;
+    size_t cap, n_held;
+    double *uc[3], *gp[3];        /* cell-centred velocity and excess-pressure gradient */
+    double *fields[FLD_N];
+    gf_coupling_stats stats;
+};
+
+/* Per-grain arrays (kernels, held values) for n grains, kept on shrink. */
+gf_status gf_coupling_reserve(gf_coupling *c, size_t n);
+
+#endif
