@@ -474,7 +474,7 @@ void gf_sim_destroy(gf_sim **ps)
     free(s->x_ref), free(s->y_ref), free(s->z_ref), free(s->wall_hist);
     free(s->vx_pred), free(s->vy_pred), free(s->vz_pred);
     free(s->inv_mass), free(s->inv_inertia), free(s->mobile), free(s->contact_inv_mass);
-    free(s->pair_meff), free(s->pair_sqrt_mk);
+    free(s->pair_meff), free(s->pair_sqrt_mk), free(s->wall_cand);
     free(s->sleep_quiet_steps);
     for (int t = 0; t < GF_SIM_MAX_THREADS; ++t)
         for (int c = 0; c < 6; ++c)

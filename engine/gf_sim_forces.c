@@ -93,6 +93,46 @@ static gf_nlist_geom list_geom(const gf_sim *s)
     return g;
 }
 
+/* The grains each wall can touch before the next build: gap to the wall at
+ * the build positions below skin + lubrication range (a grain moves less
+ * than skin/2 between builds, so one farther away stays beyond the contact
+ * and lubrication range; its wall history is cleared here, as the force
+ * loop would at its next evaluation). Saves the wall loop from reading every
+ * grain's position and history at every step. */
+static gf_status build_wall_candidates(gf_sim *s)
+{
+    const gf_particles *p = s->p;
+    const size_t n = p->n_local, stride = (size_t)s->n_walls + 1;
+    const double reach = s->skin_m + (s->lubrication ? s->lub_cutoff_m : 0.0);
+    s->wall_cand_walls = -1;
+    size_t m = 0;
+    for (int w = 0; w < s->n_walls; ++w) {
+        const double *nw = s->walls[w].normal, *pw = s->walls[w].point_m;
+        s->wall_cand_start[w] = m;
+        for (size_t i = 0; i < n; ++i) {
+            double gap = (s->x_ref[i] - pw[0]) * nw[0] + (s->y_ref[i] - pw[1]) * nw[1] + (s->z_ref[i] - pw[2]) * nw[2] -
+                         p->radius_m[i];
+            if (gap >= reach) {
+                double *h = &s->wall_hist[3 * (i * stride + (size_t)w)];
+                h[0] = h[1] = h[2] = 0.0;
+                continue;
+            }
+            if (m == s->wall_cand_cap) {
+                size_t cap = m + m / 2 + 1024;
+                int32_t *c = realloc(s->wall_cand, cap * sizeof *c);
+                if (!c)
+                    return GF_FAIL(s->ctx, GF_ERR_NOMEM, "sim: cannot allocate wall candidates (%zu)", cap);
+                s->wall_cand = c, s->wall_cand_cap = cap;
+            }
+            s->wall_cand[m++] = (int32_t)i;
+        }
+    }
+    s->wall_cand_start[s->n_walls] = m;
+    s->wall_cand_walls = s->n_walls;
+    s->wall_cand_grains = n;
+    return GF_OK;
+}
+
 gf_status gf_sim_rebuild_from_ref(gf_sim *s)
 {
     gf_particles *p = s->p;
@@ -128,7 +168,7 @@ gf_status gf_sim_rebuild_from_ref(gf_sim *s)
             s->pair_sqrt_mk[k] = sqrt(m * s->cp.k_n_N_m);
         }
     s->need_build = 0;
-    return GF_OK;
+    return build_wall_candidates(s);
 }
 
 gf_status gf_sim_rebuild(gf_sim *s)
@@ -277,16 +317,37 @@ static void pair_rows_table(gf_sim *s, size_t i0, size_t i1, double *const f[6],
     pair_rows_impl(s, i0, i1, f, acc, 0, 0);
 }
 
-/* Grain-wall contacts of grains [i0, i1). */
+/* First entry >= i of the ascending candidates [k0, k1). */
+static size_t first_candidate(const int32_t *c, size_t k0, size_t k1, size_t i)
+{
+    while (k0 < k1) {
+        size_t mid = k0 + (k1 - k0) / 2;
+        if ((size_t)c[mid] < i)
+            k0 = mid + 1;
+        else
+            k1 = mid;
+    }
+    return k0;
+}
+
+/* Grain-wall contacts of grains [i0, i1): the wall's candidates of the last
+ * build in that range (all grains when the candidates are stale: a wall or a
+ * grain added since). Same grains in the same order either way. */
 static void wall_rows(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_sim_accum *acc)
 {
     const gf_particles *p = s->p;
     const double lub_cut = s->lubrication ? s->lub_cutoff_m : 0.0;
     const size_t stride = (size_t)s->n_walls + 1;
+    const int listed = s->wall_cand_walls == s->n_walls && s->wall_cand_grains == p->n_local;
     for (int w = 0; w < s->n_walls; ++w) {
         const gf_wall *wl = &s->walls[w];
         const double *nw = wl->normal, *pw = wl->point_m;
-        for (size_t i = i0; i < i1; ++i) {
+        size_t k = listed ? first_candidate(s->wall_cand, s->wall_cand_start[w], s->wall_cand_start[w + 1], i0) : i0;
+        const size_t k_end = listed ? s->wall_cand_start[w + 1] : i1;
+        for (; k < k_end; ++k) {
+            const size_t i = listed ? (size_t)s->wall_cand[k] : k;
+            if (i >= i1)
+                break;
             double *h = &s->wall_hist[3 * (i * stride + (size_t)w)];
             double ri = p->radius_m[i];
             double dist = (p->x_m[i] - pw[0]) * nw[0] + (p->y_m[i] - pw[1]) * nw[1] + (p->z_m[i] - pw[2]) * nw[2];

@@ -56,6 +56,12 @@ struct gf_sim {
     int n_walls;
     double *wall_hist;          /* 3 doubles per (grain, wall): [3 (i (n_walls + 1) + w)] */
     size_t wall_hist_cap;
+    /* grains within reach of each wall until the next neighbour build, ascending
+     * (wall w: wall_cand[wall_cand_start[w] .. wall_cand_start[w + 1]]); valid
+     * while wall_cand_walls == n_walls and wall_cand_grains == n_local */
+    int32_t *wall_cand;
+    size_t wall_cand_start[GF_SIM_MAX_WALLS + 1], wall_cand_cap, wall_cand_grains;
+    int wall_cand_walls;
     gf_gauge gauges[GF_SIM_MAX_GAUGES];
     int n_gauges;
     int fluid_bc[3][2], fluid_bc_set[3][2];
