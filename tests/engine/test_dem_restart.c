@@ -24,8 +24,6 @@
 
 #include "dem_testutil.h"
 
-static int same(const double *a, const double *b, size_t n) { return memcmp(a, b, n * sizeof(double)) == 0; }
-
 static gf_status from_checkpoint(gf_ctx *ctx, const gf_run_spec *spec, int threads, int sort_every, const char *path,
                                  gf_sim **out)
 {
@@ -65,14 +63,11 @@ static void check_threads(gf_ctx *ctx, gf_run_spec *spec, const char *bed, int t
     gf_particles *p = gf_sim_particles(ref), *q = gf_sim_particles(b);
     size_t n = p->n_local, nc_ref, nc_b;
     GF_CHECK(q->n_local == n);
-    int ok = same(p->x_m, q->x_m, n) && same(p->y_m, q->y_m, n) && same(p->z_m, q->z_m, n) &&
-             same(p->vx_m_s, q->vx_m_s, n) && same(p->vy_m_s, q->vy_m_s, n) && same(p->vz_m_s, q->vz_m_s, n) &&
-             same(p->wx_rad_s, q->wx_rad_s, n) && same(p->wy_rad_s, q->wy_rad_s, n) && same(p->wz_rad_s, q->wz_rad_s, n);
+    int ok = gf_test_same_motion(p, q);
     gf_sim_contact_stats(ref, &nc_ref, NULL);
     gf_sim_contact_stats(b, &nc_b, NULL);
     double P[3];
     gf_particles_momentum(p, P);
-    ok = ok && memcmp(p->id, q->id, n * sizeof *p->id) == 0;
     size_t moved = 0;
     for (size_t i = 0; i < n; ++i)
         moved += p->id[i] != (int64_t)i;
@@ -136,10 +131,7 @@ static void check_collapse(gf_ctx *ctx, const char *path)
         GF_CHECK_OK(gf_sim_advance(b, N), ctx);
         gf_particles *p = gf_sim_particles(ref), *q = gf_sim_particles(b);
         size_t n = p->n_local;
-        int ok = q->n_local == n && same(p->x_m, q->x_m, n) && same(p->y_m, q->y_m, n) && same(p->z_m, q->z_m, n) &&
-                 same(p->vx_m_s, q->vx_m_s, n) && same(p->vy_m_s, q->vy_m_s, n) && same(p->vz_m_s, q->vz_m_s, n) &&
-                 same(p->wx_rad_s, q->wx_rad_s, n) && same(p->wy_rad_s, q->wy_rad_s, n) &&
-                 same(p->wz_rad_s, q->wz_rad_s, n);
+        int ok = gf_test_same_motion(p, q);
         double front = 0.0;
         for (size_t i = 0; i < n; ++i)
             if (!(p->flags[i] & GF_P_GLUED))

@@ -18,13 +18,12 @@
 
 #include "gf_sim.h"
 #include "gf_test.h"
+#include "gf_test_sim.h"
 
 #define D 7.6e-3
 #define RHO_P 2500.0
 #define RHO_F 1000.0
 #define ETA 0.1 /* Pa s: St ~ 0.3, the viscous regime of the thesis' chapter 5 */
-
-static int same(const double *a, const double *b, size_t n) { return memcmp(a, b, n * sizeof(double)) == 0; }
 
 static gf_run_spec collapse_spec(gf_ctx *ctx, const char *model)
 {
@@ -72,10 +71,7 @@ int main(void)
         GF_CHECK_OK(gf_sim_advance(b, N), &ctx);
         gf_particles *p = gf_sim_particles(ref), *q = gf_sim_particles(b);
         size_t n = p->n_local;
-        int ok = q->n_local == n && same(p->x_m, q->x_m, n) && same(p->y_m, q->y_m, n) && same(p->z_m, q->z_m, n) &&
-                 same(p->vx_m_s, q->vx_m_s, n) && same(p->vy_m_s, q->vy_m_s, n) && same(p->vz_m_s, q->vz_m_s, n) &&
-                 same(p->wx_rad_s, q->wx_rad_s, n) && same(p->wy_rad_s, q->wy_rad_s, n) &&
-                 same(p->wz_rad_s, q->wz_rad_s, n);
+        int ok = gf_test_same_motion(p, q);
         double lo[3], hi[3], pr[3], pb[3], vmax = 0.0;
         gf_sim_box(ref, lo, hi, NULL);
         for (int k = 0; k < 3; ++k) { /* basal gauges at 4/16, 8/16 and 13/16 of R0 = 12 D */

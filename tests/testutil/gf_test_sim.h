@@ -1,7 +1,8 @@
 /*
  * Sims for tests: a run spec of a scene with the seeds' defaults and small
  * acetate-like grains (D = 3 mm, rho_p = 1319 kg m-3, monodisperse: the
- * Foerster et al. 1994 collision material), and a sim that writes no file.
+ * Foerster et al. 1994 collision material), a sim that writes no file, and
+ * the bitwise comparison of two stores.
  */
 #ifndef GF_TEST_SIM_H
 #define GF_TEST_SIM_H
@@ -29,6 +30,21 @@ static inline gf_status gf_test_sim(gf_ctx *ctx, const gf_run_spec *spec, int th
     memset(&opt, 0, sizeof opt);
     opt.n_threads = threads;
     return gf_sim_create(ctx, spec, &opt, out);
+}
+
+/* 1 when two stores hold the same grains, in the same order, with the same
+ * bytes in every position, velocity and spin (restart checks). */
+static inline int gf_test_same_motion(const gf_particles *a, const gf_particles *b)
+{
+    const size_t n = a->n_local, z = n * sizeof(double);
+    if (b->n_local != n)
+        return 0;
+    const double *const fa[9] = {a->x_m, a->y_m, a->z_m, a->vx_m_s, a->vy_m_s, a->vz_m_s, a->wx_rad_s, a->wy_rad_s, a->wz_rad_s};
+    const double *const fb[9] = {b->x_m, b->y_m, b->z_m, b->vx_m_s, b->vy_m_s, b->vz_m_s, b->wx_rad_s, b->wy_rad_s, b->wz_rad_s};
+    for (int k = 0; k < 9; ++k)
+        if (memcmp(fa[k], fb[k], z) != 0)
+            return 0;
+    return memcmp(a->id, b->id, n * sizeof *a->id) == 0;
 }
 
 #endif
