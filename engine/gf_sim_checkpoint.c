@@ -190,13 +190,9 @@ gf_status gf_sim_restore_coupling(gf_sim *s, const char *path)
     gf_restart *r = NULL;
     GF_TRY(gf_restart_open(s->ctx, path, &r));
     int64_t schedule[2] = {0, 0};
-    gf_status st = gf_restart_has(r, "fluid_schedule")
-                       ? gf_restart_get_i64(r, "fluid_schedule", 2, schedule)
-                       : GF_FAIL(s->ctx, GF_ERR_CONFIG,
-                                 "restart %s: the checkpoint holds no fluid state (written by a dry run?) but this run "
-                                 "is immersed", path);
+    gf_status st = gf_coupling_load(s->coupling, r); /* refuses a checkpoint without fluid */
     if (st == GF_OK)
-        st = gf_coupling_load(s->coupling, r);
+        st = gf_restart_get_i64(r, "fluid_schedule", 2, schedule);
     gf_restart_close(&r);
     GF_TRY(st);
     s->next_fluid_step = (long)schedule[0];

@@ -25,6 +25,8 @@
 
 #define HELD_F64 9 /* K, uf[3], f_other[3], eps, mass */
 
+static const char *const field_names[FLD_N] = {"field_eps", "field_u", "field_v", "field_w", "field_p"};
+
 static void held_pack(const held_grain *h, double *v)
 {
     v[0] = h->K_kg_s;
@@ -78,9 +80,8 @@ gf_status gf_coupling_save(const gf_coupling *c, gf_restart *r)
     GF_TRY(gf_restart_put_f64(r, "fluid_w", g->n_faces[2], f->u[2]));
     GF_TRY(gf_restart_put_f64(r, "fluid_p", g->n_cells, f->p_Pa));
     GF_TRY(gf_restart_put_f64(r, "fluid_eps", g->n_cells, f->eps));
-    static const char *names[FLD_N] = {"field_eps", "field_u", "field_v", "field_w", "field_p"};
     for (int v = 0; v < FLD_N; ++v)
-        GF_TRY(gf_restart_put_f64(r, names[v], g->n_cells, c->fields[v]));
+        GF_TRY(gf_restart_put_f64(r, field_names[v], g->n_cells, c->fields[v]));
     return save_held(c, r);
 }
 
@@ -128,9 +129,8 @@ gf_status gf_coupling_load(gf_coupling *c, gf_restart *r)
     GF_TRY(gf_restart_get_f64(r, "fluid_w", g->n_faces[2], f->u[2]));
     GF_TRY(gf_restart_get_f64(r, "fluid_p", g->n_cells, f->p_Pa));
     GF_TRY(gf_restart_get_f64(r, "fluid_eps", g->n_cells, f->eps));
-    static const char *names[FLD_N] = {"field_eps", "field_u", "field_v", "field_w", "field_p"};
     for (int v = 0; v < FLD_N; ++v)
-        GF_TRY(gf_restart_get_f64(r, names[v], g->n_cells, c->fields[v]));
+        GF_TRY(gf_restart_get_f64(r, field_names[v], g->n_cells, c->fields[v]));
     GF_TRY(load_held(c, r));
     c->first_step = (int)counts[3];
     c->user_gradp = (int)counts[4];
