@@ -192,6 +192,11 @@ gf_status gf_sim_set_rotation_locked(gf_sim *s, int locked)
     return GF_OK;
 }
 
+const char *gf_sim_preparation_dir(const gf_sim *s)
+{
+    return s->opt.preparation_dir;
+}
+
 void gf_sim_reset_clock(gf_sim *s)
 {
     s->t_s = 0.0;

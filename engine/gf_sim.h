@@ -41,6 +41,10 @@ typedef struct gf_sim_options {
      * many rebuilds, any grain count; < 0: never. The results depend on it at
      * round-off (summation order): a restart must use the same value. */
     int sort_every;
+    /* Directory where scenes keep the deposits of their packing preparation
+     * for the other runs of a campaign (io/gf_packing_cache.h); the deposit
+     * read back is the one the run would build. NULL: build every time. */
+    const char *preparation_dir;
 } gf_sim_options;
 
 /* Work a run leaves out because its spec and scene do not need it (issue #6),
@@ -124,6 +128,9 @@ gf_status gf_sim_set_fluid_bc(gf_sim *sim, int axis, int side, int bc /* gf_flui
  * made with rotations blocked (gf_packing.h); locking also zeroes the spins.
  * A scene frees the rotations again before build returns. */
 gf_status gf_sim_set_rotation_locked(gf_sim *sim, int locked);
+/* The run's gf_sim_options.preparation_dir (NULL when none), for scenes
+ * that prepare a packing (gf_packing_build_cached). */
+const char *gf_sim_preparation_dir(const gf_sim *sim);
 /* Resets the clock to 0 (after a preparation phase run inside build). */
 void gf_sim_reset_clock(gf_sim *sim);
 /* Particle and fluid state consistency check: positions inside the box,

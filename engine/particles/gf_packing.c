@@ -34,6 +34,7 @@ typedef struct prep {
     /* half Verlet table in CSR form, j sorted per i, with tangential history */
     size_t *start, *nbr, n_pairs, cap_pairs;
     double *hist;
+    double *pair_sqrt_mk;               /* sqrt(m_eff k_n) of each pair, set at the rebuild */
     int *head, *next;
     size_t n_cells;
 } prep;
@@ -42,7 +43,7 @@ static void prep_free(prep *s)
 {
     free(s->x), free(s->v), free(s->w), free(s->f), free(s->t);
     free(s->r), free(s->m), free(s->inv_i), free(s->x_ref), free(s->wall_hist);
-    free(s->start), free(s->nbr), free(s->hist), free(s->head), free(s->next);
+    free(s->start), free(s->nbr), free(s->hist), free(s->head), free(s->next), free(s->pair_sqrt_mk);
     memset(s, 0, sizeof *s);
 }
 
@@ -66,6 +67,13 @@ static int cell_coord(const prep *s, int c, double xc, double cs, int nc, double
     else
         k = k < 0 ? 0 : (k >= nc ? nc - 1 : k);
     return k;
+}
+
+/* Reduced mass of pair (i, j); a glued grain counts as infinitely heavy. */
+static double pair_mass(const prep *s, size_t i, size_t j)
+{
+    int gi = i >= s->n_mobile, gj = j >= s->n_mobile;
+    return gi ? s->m[j] : (gj ? s->m[i] : s->m[i] * s->m[j] / (s->m[i] + s->m[j]));
 }
 
 /* Rebuilds the Verlet table, carrying the tangential history of pairs that persist. */
@@ -193,8 +201,16 @@ static gf_status prep_rebuild(gf_ctx *ctx, prep *s)
         }
     }
     free(cell_of);
-    free(s->start), free(s->nbr), free(s->hist);
-    s->start = new_start, s->nbr = new_nbr, s->hist = new_hist;
+    double *sqrt_mk = malloc((np ? np : 1) * sizeof *sqrt_mk);
+    if (!sqrt_mk) {
+        free(new_start), free(new_nbr), free(new_hist);
+        return GF_FAIL(ctx, GF_ERR_NOMEM, "packing: cannot allocate the pair masses");
+    }
+    for (size_t i = 0; i < s->n; ++i)
+        for (size_t q = new_start[i]; q < new_start[i + 1]; ++q)
+            sqrt_mk[q] = sqrt(pair_mass(s, i, new_nbr[q]) * s->k_n);
+    free(s->start), free(s->nbr), free(s->hist), free(s->pair_sqrt_mk);
+    s->start = new_start, s->nbr = new_nbr, s->hist = new_hist, s->pair_sqrt_mk = sqrt_mk;
     s->n_pairs = np, s->cap_pairs = cap;
     memcpy(s->x_ref, s->x, 3 * s->n * sizeof *s->x);
     return GF_OK;
@@ -208,12 +224,14 @@ static void cross(const double a[3], const double b[3], double out[3])
 }
 
 /* Linear spring-dashpot + tangential spring with Coulomb cap (Cundall & Strack 1979), force on i.
- * vrel: relative surface velocity at the contact, n from j to i, m_eff the pair's reduced mass. */
-static void contact_force(const prep *s, const double n[3], double overlap, const double vrel[3], double m_eff,
-                          double mu, double *hist, double force[3], double f_t[3])
+ * vrel: relative surface velocity at the contact, n from j to i, sqrt_mk = sqrt(m_eff k_n) of the pair
+ * (m_eff its reduced mass). Inlined into the pair loop: a call per contact cost a fifth of the preparation. */
+static inline __attribute__((always_inline)) void contact_force(const prep *s, const double n[3], double overlap,
+                                                                const double vrel[3], double sqrt_mk, double mu,
+                                                                double *hist, double force[3], double f_t[3])
 {
     double vn = vrel[0] * n[0] + vrel[1] * n[1] + vrel[2] * n[2];
-    double fn = s->k_n * overlap - 2.0 * s->zeta * sqrt(m_eff * s->k_n) * vn;
+    double fn = s->k_n * overlap - 2.0 * s->zeta * sqrt_mk * vn;
     if (fn < 0.0)
         fn = 0.0;
     double hn = hist[0] * n[0] + hist[1] * n[1] + hist[2] * n[2];
@@ -277,9 +295,8 @@ static void prep_forces(prep *s)
             for (int c = 0; c < 3; ++c)
                 vrel[c] = s->v[3 * i + c] - s->v[3 * j + c] + wi[c] - wj[c];
             int gi = i >= s->n_mobile, gj = j >= s->n_mobile;
-            double m_eff = gi ? s->m[j] : (gj ? s->m[i] : s->m[i] * s->m[j] / (s->m[i] + s->m[j]));
             double force[3], ft[3], tq[3];
-            contact_force(s, n, rs - dist, vrel, m_eff, (gi || gj) ? s->mu_obs : s->mu, h, force, ft);
+            contact_force(s, n, rs - dist, vrel, s->pair_sqrt_mk[q], (gi || gj) ? s->mu_obs : s->mu, h, force, ft);
             cross(n, ft, tq); /* r_c x F_t = -R n x F_t for both grains (force on j is -F_t at +R_j n) */
             for (int c = 0; c < 3; ++c) {
                 s->f[3 * i + c] += force[c];
@@ -306,7 +323,7 @@ static void prep_forces(prep *s)
             cross(&s->w[3 * i], ri, wi);
             for (int c = 0; c < 3; ++c)
                 vrel[c] = s->v[3 * i + c] + wi[c];
-            contact_force(s, wl->normal, s->r[i] - dist, vrel, s->m[i], 0.0, h, force, ft);
+            contact_force(s, wl->normal, s->r[i] - dist, vrel, sqrt(s->m[i] * s->k_n), 0.0, h, force, ft);
             cross(wl->normal, ft, tq);
             for (int c = 0; c < 3; ++c) {
                 s->f[3 * i + c] += force[c];
@@ -737,6 +754,7 @@ gf_status gf_packing_build(gf_ctx *ctx, const gf_packing_spec *sp, gf_particles 
     res->n_grains = out->n_local - n_before;
     res->top_m = top;
     res->cpu_s = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
+    res->reused = 0;
     return GF_OK;
 }
 

@@ -88,6 +88,7 @@ typedef struct gf_packing_result {
     size_t n_grains;              /* grains kept */
     double top_m;                 /* highest grain top after trimming */
     double cpu_s;                 /* wall time of the preparation */
+    int reused;                   /* 1: read back from a campaign's preparations (gf_packing_cache.h) */
 } gf_packing_result;
 
 /* Prepares the packing and appends its (mobile) grains at rest to out.

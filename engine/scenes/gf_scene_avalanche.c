@@ -31,6 +31,7 @@
 #include <string.h>
 
 #include "coupling/gf_coupling.h"
+#include "io/gf_packing_cache.h"
 #include "particles/gf_packing.h"
 #include "scenes/gf_measure.h"
 #include "scenes/gf_scene.h"
@@ -87,11 +88,12 @@ static gf_status avalanche_build(gf_sim *sim, const gf_run_spec *spec)
                           .seed = spec->seed};
     gf_packing_result pr;
     if (st == GF_OK)
-        st = gf_packing_build(ctx, &ps, p, &pr);
+        st = gf_packing_build_cached(ctx, &ps, gf_sim_preparation_dir(sim), p, &pr);
     gf_particles_destroy(&base);
     GF_TRY(st);
-    gf_log(ctx, GF_LOG_INFO, "avalanche: bed of %zu grains at Phi %.4f (preparation), %d deposits, %.1f s",
-           pr.n_grains, pr.phi_local, pr.iterations, pr.cpu_s);
+    gf_log(ctx, GF_LOG_INFO, "avalanche: bed of %zu grains at Phi %.4f (preparation), %d deposits, %.1f s%s",
+           pr.n_grains, pr.phi_local, pr.iterations, pr.cpu_s,
+           pr.reused ? " (read back from the preparations)" : "");
     double t_settle = gf_run_spec_param(spec, "settle_time_nd", 5.0) * sqrt(D / spec->gravity_m_s2);
     long steps = (long)ceil(t_settle / gf_run_spec_dt_s(spec));
     if (steps > 0)

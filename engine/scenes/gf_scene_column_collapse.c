@@ -54,6 +54,7 @@
 #include <string.h>
 
 #include "coupling/gf_coupling.h"
+#include "io/gf_packing_cache.h"
 #include "particles/gf_packing.h"
 #include "scenes/gf_measure.h"
 #include "scenes/gf_scene.h"
@@ -151,7 +152,7 @@ static gf_status column_build(gf_sim *sim, const gf_run_spec *spec)
                           .gravity_m_s2 = spec->gravity_m_s2, .obstacles = under, .seed = spec->seed};
     gf_packing_result pr;
     if (st == GF_OK)
-        st = gf_packing_build(ctx, &ps, p, &pr);
+        st = gf_packing_build_cached(ctx, &ps, gf_sim_preparation_dir(sim), p, &pr);
     gf_particles_destroy(&base);
     gf_particles_destroy(&under);
     GF_TRY(st);
@@ -160,8 +161,9 @@ static gf_status column_build(gf_sim *sim, const gf_run_spec *spec)
                        "column_collapse: the preparation left no grain in the %.3g m x %.3g m column "
                        "(H0 = %.2g D is too low; raise column_length_over_D or aspect_ratio)",
                        g.R0, g.H0, g.H0 / g.D);
-    gf_log(ctx, GF_LOG_INFO, "column_collapse: %zu grains at Phi_i %.4f (interior, preparation; global %.4f), %d deposits, %.1f s",
-           pr.n_grains, pr.phi_local, pr.phi_global, pr.iterations, pr.cpu_s);
+    gf_log(ctx, GF_LOG_INFO, "column_collapse: %zu grains at Phi_i %.4f (interior, preparation; global %.4f), %d deposits, %.1f s%s",
+           pr.n_grains, pr.phi_local, pr.phi_global, pr.iterations, pr.cpu_s,
+           pr.reused ? " (read back from the preparations)" : "");
     /* re-equilibrate with the run's contacts behind the closed gate */
     double t_settle = gf_run_spec_param(spec, "settle_time_nd", 5.0) * sqrt(g.D / spec->gravity_m_s2);
     long steps = (long)ceil(t_settle / gf_run_spec_dt_s(spec));

@@ -9,12 +9,25 @@
 #include "gf_sim.h"
 #include "schedule/gf_ledger.h"
 
+/* <campaign dir>/preparations for run_dir = <campaign dir>/<run id>: the
+ * deposits one run prepares serve the campaign's other runs
+ * (io/gf_packing_cache.h). "" when run_dir has no parent to name. */
+static void preparation_dir(const char *run_dir, char *buf, size_t n)
+{
+    const char *slash = strrchr(run_dir, '/');
+    if (!slash || slash == run_dir || (size_t)(slash - run_dir) + 14 >= n) {
+        buf[0] = '\0';
+        return;
+    }
+    snprintf(buf, n, "%.*s/preparations", (int)(slash - run_dir), run_dir);
+}
+
 gf_status gf_run_execute(gf_ctx *ctx, const gf_run_spec *spec, const gf_run_exec_opts *opt, gf_run_result *res)
 {
     memset(res, 0, sizeof *res);
     char *yaml = NULL;
     size_t yaml_len = 0;
-    char checkpoint[4200];
+    char checkpoint[4200], preparations[4200] = "";
     int cont = 0;
     if (opt->run_dir) {
         GF_TRY(gf_ledger_mkdirs(ctx, opt->run_dir));
@@ -23,6 +36,7 @@ gf_status gf_run_execute(gf_ctx *ctx, const gf_run_spec *spec, const gf_run_exec
             return GF_FAIL(ctx, GF_ERR_NOMEM, "out of memory");
         cont = opt->resume && gf_ledger_can_continue(opt->run_dir, yaml, yaml_len);
         snprintf(checkpoint, sizeof checkpoint, "%s/checkpoint.h5", opt->run_dir);
+        preparation_dir(opt->run_dir, preparations, sizeof preparations);
         char path[4200];
         snprintf(path, sizeof path, "%s/run.yaml", opt->run_dir);
         gf_status st = gf_ledger_write_atomic(ctx, path, yaml, yaml_len);
@@ -38,7 +52,8 @@ gf_status gf_run_execute(gf_ctx *ctx, const gf_run_spec *spec, const gf_run_exec
                          .progress = opt->progress,
                          .progress_user = opt->progress_user,
                          .interrupt = opt->interrupt,
-                         .restart_path = cont ? checkpoint : NULL};
+                         .restart_path = cont ? checkpoint : NULL,
+                         .preparation_dir = preparations[0] ? preparations : NULL};
     const double t0 = gf_wtime();
     gf_sim *sim = NULL;
     gf_status st = gf_sim_create(&run_ctx, spec, &so, &sim);
