@@ -79,6 +79,7 @@ typedef struct slot {
     volatile int run;           /* run index, -1: free */
     gf_progress progress;       /* written by the worker, read by the parent (a torn read only blurs one frame) */
     pid_t pid;
+    volatile double continued_from_s; /* written by the worker before it exits: > 0 when it continued a checkpoint */
 } slot;
 
 static void on_progress(void *user, double t_s, double t_end_s, double steps_per_s)
@@ -113,6 +114,7 @@ static void worker(const gf_campaign *c, int index, const char *run_dir, int n_t
                            .resume = resume};
     gf_run_result res;
     gf_status st = gf_run_execute(&ctx, &c->runs[index].spec, &eo, &res);
+    s->continued_from_s = res.continued_from_s;
     if (st != GF_OK)
         fprintf(stderr, "grainflow: %s\n", gf_ctx_message(&ctx));
     fflush(stderr);
@@ -132,9 +134,19 @@ static void clear_block(display *d)
     }
 }
 
-static void report_finished(display *d, const gf_campaign *c, int index, const char *dir, double wall_s)
+/* ", continued from t = 12.5 sqrt(D/g)" for a run resumed from its checkpoint, "" otherwise. */
+static void continued_text(const gf_run_spec *spec, double t_s, char *buf, size_t n)
 {
-    char reason[520], what[200], wall[32];
+    buf[0] = '\0';
+    if (t_s > 0.0)
+        snprintf(buf, n, ", continued from t = %.4g sqrt(D/g)",
+                 t_s / sqrt(spec->grains.diameter_m / spec->gravity_m_s2));
+}
+
+static void report_finished(display *d, const gf_campaign *c, int index, const char *dir, double wall_s,
+                            double continued_from_s)
+{
+    char reason[520], what[200], wall[32], cont[96];
     gf_run_state state = gf_ledger_state(dir, reason, sizeof reason);
     if (state == GF_RUN_DONE)
         ++d->done;
@@ -145,12 +157,13 @@ static void report_finished(display *d, const gf_campaign *c, int index, const c
     clear_block(d);
     gf_sched_describe(&c->runs[index], what, sizeof what);
     format_duration(wall_s, wall, sizeof wall);
+    continued_text(&c->runs[index].spec, continued_from_s, cont, sizeof cont);
     if (state == GF_RUN_DONE)
-        printf("[%d/%d] %s done    %s  (%s)\n", d->done + d->failed, d->total, c->runs[index].spec.run_id, what,
-               wall);
+        printf("[%d/%d] %s done    %s  (%s%s)\n", d->done + d->failed, d->total, c->runs[index].spec.run_id, what,
+               wall, cont);
     else
-        printf("[%d/%d] %s failed: %s  (%s, %s)\n", d->done + d->failed, d->total, c->runs[index].spec.run_id,
-               reason, what, wall);
+        printf("[%d/%d] %s failed: %s  (%s, %s%s)\n", d->done + d->failed, d->total, c->runs[index].spec.run_id,
+               reason, what, wall, cont);
     fflush(stdout);
 }
 
@@ -248,7 +261,7 @@ static gf_status run_pool(gf_ctx *ctx, const gf_campaign *c, const gf_sched_opts
                     if (gf_ledger_mkdirs(&tmp, dir) == GF_OK)
                         gf_ledger_set_failed(&tmp, dir, why);
                 }
-                report_finished(d, c, index, dir, gf_wtime() - slots[i].progress.started_s);
+                report_finished(d, c, index, dir, gf_wtime() - slots[i].progress.started_s, slots[i].continued_from_s);
                 slots[i].run = -1;
                 --running;
             }
@@ -290,10 +303,12 @@ static gf_status run_farm(gf_ctx *ctx, const gf_campaign *c, const gf_sched_opts
         else
             ++d->failed;
         gf_sched_describe(&c->runs[index], what, sizeof what);
+        char cont[96];
+        continued_text(&c->runs[index].spec, res.continued_from_s, cont, sizeof cont);
         if (!opt->quiet)
-            printf("[rank %d] %s %s %s  (%s%s%.1f s)\n", rank, c->runs[index].spec.run_id,
+            printf("[rank %d] %s %s %s  (%s%s%.1f s%s)\n", rank, c->runs[index].spec.run_id,
                    res.status == GF_OK ? "done   " : "failed:", res.status == GF_OK ? what : res.message,
-                   res.status == GF_OK ? "" : what, res.status == GF_OK ? "" : ", ", res.wall_s);
+                   res.status == GF_OK ? "" : what, res.status == GF_OK ? "" : ", ", res.wall_s, cont);
         fflush(stdout);
     }
     d->done = (int)gf_comm_sum(d->done);
