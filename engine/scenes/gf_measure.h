@@ -75,23 +75,6 @@ gf_status gf_measure_profile_y(gf_ctx *ctx, const gf_particles *p, const gf_meas
 gf_status gf_measure_stress_planes(gf_ctx *ctx, const gf_particles *p, const gf_measure_domain *dom, double y0_m,
                                    double dy_m, int n_planes, double *tau_Pa, double *sig_Pa);
 
-/* Full granular stress tensor sigma_G = sigma^p + sigma^k of the seed
- * (Izard 2014 (2.16)-(2.20), digest §1.10) on n horizontal slabs
- * [y0 + k dy, y0 + (k + 1) dy] spanning the x-z footprint, with the sign
- * flipped so that compression is positive:
- *   S_ij = (1/V_k) sum_c f^c_i b^c_j w_k(c) + (1/V_k) sum_{alpha in k} m u'_i u'_j
- * f^c the contact force on alpha from beta, b^c = x_alpha - x_beta, w_k(c)
- * the fraction of the branch segment inside slab k (so a contact straddling
- * two slabs is shared, and the slab sum of S_yy equals the method-of-planes
- * stress), u' the velocity about the slab's mass-weighted mean (grains by
- * centre). Contact forces are re-evaluated from the contact law at the
- * current state and the stored tangential springs (no increment). Pairs with
- * one glued grain count (the rough base carries the bed); glued-glued pairs
- * do not. S[6 k + c], c = xx, yy, zz, xy, xz, yz. Then P_G = tr(S)/3 and the
- * shear stress in the flow plane is -S_xy (> 0 resisting a flow towards +x). */
-struct gf_sim;
-gf_status gf_measure_stress_tensor_slabs(gf_ctx *ctx, struct gf_sim *sim, double y0_m, double dy_m, int n_slabs,
-                                         double *S_Pa);
 
 /* Vertical stress in a silo whose side walls are glued grains (Izard 2014
  * §2.1.3.2), from the static balance of the grains above each plane

@@ -26,7 +26,7 @@
  * Stresses as the seed defines them (digest §1.10, Izard (2.16)-(2.20)):
  * the full tensor sigma_G = sigma^p + sigma^k (contact virial with the
  * branch vector shared among the slabs it crosses, plus the kinetic stress
- * about the slab mean velocity; gf_measure_stress_tensor_slabs) on slabs
+ * about the slab mean velocity; gf_sim_stress_tensor_slabs) on slabs
  * 1 D thick, averaged over windows of 2 sqrt(D/g) (4 snapshots);
  * P_G = -tr(sigma_G)/3, tau = the x-y (flow-plane) shear component,
  * mu = |tau|/P_G, I = |gamma_dot| D/sqrt(P_G/rho_p) with |gamma_dot| =
@@ -130,7 +130,7 @@ static void window_add(flow *f, window *w)
 {
     double phi[NS], u[NS], tau[NS], sig[NS], S[6 * NS];
     flow_profile(f, phi, u);
-    GF_CHECK_OK(gf_measure_stress_tensor_slabs(gf_sim_ctx(f->sim), f->sim, 0.0, f->dy, NS, S), gf_sim_ctx(f->sim));
+    GF_CHECK_OK(gf_sim_stress_tensor_slabs(f->sim, 0.0, f->dy, NS, S), gf_sim_ctx(f->sim));
     for (int k = 0; k < NS; ++k) { /* compression-positive S: P_G = tr(S)/3, tau = -S_xy */
         sig[k] = (S[6 * k] + S[6 * k + 1] + S[6 * k + 2]) / 3.0;
         tau[k] = -S[6 * k + 3];

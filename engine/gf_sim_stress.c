@@ -1,0 +1,105 @@
+/* Granular stress tensor in horizontal slabs; see gf_sim.h (gf_sim_stress_tensor_slabs). */
+#include "gf_sim_internal.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Adds w * f (x) b to the 6 components of S. */
+static void add_dyad(double *S, double w, const double f[3], const double b[3])
+{
+    S[0] += w * f[0] * b[0], S[1] += w * f[1] * b[1], S[2] += w * f[2] * b[2];
+    S[3] += w * 0.5 * (f[0] * b[1] + f[1] * b[0]);
+    S[4] += w * 0.5 * (f[0] * b[2] + f[2] * b[0]);
+    S[5] += w * 0.5 * (f[1] * b[2] + f[2] * b[1]);
+}
+
+gf_status gf_sim_stress_tensor_slabs(gf_sim *s, double y0, double dy, int n, double *S)
+{
+    gf_ctx *ctx = s->ctx;
+    if (n < 1 || !(dy > 0.0))
+        return GF_FAIL(ctx, GF_ERR_ARG, "measure: stress tensor needs n >= 1 and dy > 0 (got %d, %g m)", n, dy);
+    const gf_particles *p = s->p;
+    const gf_nlist *nl = s->nl;
+    if (!nl || nl->n != p->n_local)
+        return GF_FAIL(ctx, GF_ERR_UNSUPPORTED, "measure: stress tensor needs a current neighbour list");
+    double area = (s->hi_m[0] - s->lo_m[0]) * (s->hi_m[2] - s->lo_m[2]), vol = area * dy;
+    memset(S, 0, (size_t)n * 6 * sizeof *S);
+    /* contact part */
+    gf_contact_params cp = s->cp;
+    for (size_t i = 0; i < nl->n; ++i) {
+        for (size_t k = nl->row_start[i]; k < nl->row_start[i + 1]; ++k) {
+            size_t j = (size_t)nl->j[k];
+            if ((p->flags[i] & GF_P_GLUED) && (p->flags[j] & GF_P_GLUED))
+                continue;
+            double d[3] = {p->x_m[i] - p->x_m[j], p->y_m[i] - p->y_m[j], p->z_m[i] - p->z_m[j]};
+            for (int a = 0; a < 3; ++a) /* minimum image: contacts are far shorter than half a period */
+                if (s->periodic[a]) {
+                    double L = s->hi_m[a] - s->lo_m[a];
+                    d[a] -= L * floor(d[a] / L + 0.5);
+                }
+            double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), rsum = p->radius_m[i] + p->radius_m[j];
+            if (!(r < rsum) || r <= 0.0)
+                continue;
+            gf_contact_geom g;
+            for (int a = 0; a < 3; ++a)
+                g.n[a] = d[a] / r;
+            g.overlap_m = rsum - r;
+            double vt[3] = {p->vx_m_s[i] - p->vx_m_s[j], p->vy_m_s[i] - p->vy_m_s[j], p->vz_m_s[i] - p->vz_m_s[j]};
+            double ri = p->radius_m[i], rj = p->radius_m[j];
+            double rw[3] = {ri * p->wx_rad_s[i] + rj * p->wx_rad_s[j], ri * p->wy_rad_s[i] + rj * p->wy_rad_s[j],
+                            ri * p->wz_rad_s[i] + rj * p->wz_rad_s[j]};
+            double rwn[3] = {rw[1] * g.n[2] - rw[2] * g.n[1], rw[2] * g.n[0] - rw[0] * g.n[2],
+                             rw[0] * g.n[1] - rw[1] * g.n[0]};
+            for (int a = 0; a < 3; ++a)
+                g.v_rel_m_s[a] = vt[a] - rwn[a];
+            g.v_n_m_s = vt[0] * g.n[0] + vt[1] * g.n[1] + vt[2] * g.n[2];
+            g.m_eff_kg = s->pair_meff[k];
+            g.sqrt_mk = s->pair_sqrt_mk[k];
+            g.mu = cp.mu_grain;
+            double h[3] = {nl->hist[3 * k], nl->hist[3 * k + 1], nl->hist[3 * k + 2]}, f_n, f_t[3];
+            s->law->kernel(&cp, &g, 0.0, h, &f_n, f_t); /* dt = 0: the stored spring, no increment */
+            double f[3] = {f_n * g.n[0] + f_t[0], f_n * g.n[1] + f_t[1], f_n * g.n[2] + f_t[2]};
+            /* share f (x) b among the slabs the branch segment crosses */
+            double ya = p->y_m[j], yb = p->y_m[j] + d[1];
+            double lo = ya < yb ? ya : yb, hi = ya < yb ? yb : ya, len = hi - lo;
+            int k0 = (int)floor((lo - y0) / dy), k1 = (int)floor((hi - y0) / dy);
+            for (int q = k0 < 0 ? 0 : k0; q <= k1 && q < n; ++q) {
+                double w = 1.0;
+                if (len > 0.0) {
+                    double a0 = y0 + q * dy, a1 = a0 + dy;
+                    double c0 = lo > a0 ? lo : a0, c1 = hi < a1 ? hi : a1;
+                    w = c1 > c0 ? (c1 - c0) / len : 0.0;
+                }
+                add_dyad(&S[6 * q], w / vol, f, d);
+            }
+        }
+    }
+    /* kinetic part about each slab's mass-weighted mean velocity */
+    double *m = calloc((size_t)n * 10, sizeof *m);
+    if (!m)
+        return GF_FAIL(ctx, GF_ERR_NOMEM, "measure: cannot allocate %d slabs", n);
+    for (size_t i = 0; i < p->n_local; ++i) {
+        if (p->flags[i] & GF_P_GLUED)
+            continue;
+        int k = (int)floor((p->y_m[i] - y0) / dy);
+        if (k < 0 || k >= n)
+            continue;
+        double mi = p->mass_kg[i], u[3] = {p->vx_m_s[i], p->vy_m_s[i], p->vz_m_s[i]}, *q = &m[10 * k];
+        q[0] += mi, q[1] += mi * u[0], q[2] += mi * u[1], q[3] += mi * u[2];
+        add_dyad(q + 4, mi, u, u);
+    }
+    for (int k = 0; k < n; ++k) {
+        double *q = &m[10 * k];
+        if (!(q[0] > 0.0))
+            continue;
+        double ub[3] = {q[1] / q[0], q[2] / q[0], q[3] / q[0]};
+        double c[6];
+        memset(c, 0, sizeof c);
+        add_dyad(c, q[0], ub, ub); /* sum m u u - M ub ub = sum m u' u' */
+        for (int a = 0; a < 6; ++a)
+            S[6 * k + a] += (q[4 + a] - c[a]) / vol;
+    }
+    free(m);
+    return GF_OK;
+}
