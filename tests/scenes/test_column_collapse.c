@@ -27,7 +27,8 @@
  * ensemble behaviour, and one collapse is chaotic (a 1e-7 change of g moves a
  * run-out by several %). The lambdas of each seed alone are printed to show
  * that scatter.
- * GF_TEST_MU overrides mu_c (exploration).
+ * GF_TEST_MU overrides mu_c and GF_TEST_WIDTH the slab width W/D
+ * (exploration: the thesis' dry runs are 12 D wide).
  */
 #include <stdlib.h>
 
@@ -48,6 +49,8 @@ static void collapse(double a, unsigned seed, double *runout, double *h_over_r0,
     spec.contact.t_contact_nd = 0.02;
     GF_CHECK_OK(gf_run_spec_set_param(&ctx, &spec, "aspect_ratio", a), &ctx);
     GF_CHECK_OK(gf_run_spec_set_param(&ctx, &spec, "phi_target", 0.60), &ctx);
+    if (getenv("GF_TEST_WIDTH"))
+        GF_CHECK_OK(gf_run_spec_set_param(&ctx, &spec, "width_over_D", atof(getenv("GF_TEST_WIDTH"))), &ctx);
     double t0 = runner_now_s();
     gf_sim *sim = NULL;
     gf_sim_options opt = {.n_threads = 1};
