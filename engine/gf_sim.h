@@ -45,6 +45,11 @@ typedef struct gf_sim_options {
      * for the other runs of a campaign (io/gf_packing_cache.h); the deposit
      * read back is the one the run would build. NULL: build every time. */
     const char *preparation_dir;
+    /* Steps per call of gf_sim_advance in gf_sim_run. 0: adaptive, about 0.1 s of
+     * wall time each (progress, interrupts). The outputs do not depend on it:
+     * output, checkpoint and done() instants are steps of the clock
+     * (gf_sim_run.c); > 0 fixes it (tests/pipeline/test_run_chunking.c). */
+    int chunk_steps;
 } gf_sim_options;
 
 /* Work a run leaves out because its spec and scene do not need it (issue #6),

@@ -181,6 +181,28 @@ static double next_instant(double every_s, double t_s, double dt_s)
     return next;
 }
 
+/* Steps from now to the first step whose time passes the test the loop
+ * applies, t >= t_stop - dt/2, and never beyond it. The quotient is about
+ * k - 1/2 for an instant on the step grid (robust), and where it falls
+ * within 1e-3 of an integer (an instant near a half step, or the round-off
+ * of the accumulated time) the shorter count is taken: the loop then takes
+ * the one step more that the test asks for. The step that records an
+ * instant is therefore the same however the run was cut into chunks; with
+ * the former ceil((t_stop - t)/dt - 1e-9) it moved by one step with the
+ * wall-clock-sized chunks (the time accumulated over thousands of steps
+ * differs from k dt by 1e-6 dt and more). */
+static long steps_to(const gf_sim *s, double t_stop)
+{
+    double x = (t_stop - 0.5 * s->dt_s - s->t_s) / s->dt_s, k = floor(x);
+    long n = (long)(x - k < 1e-3 ? k : k + 1.0);
+    return n > 0 ? n : 1;
+}
+
+/* Scenes that end themselves (done()) are asked every GF_DONE_EVERY steps
+ * of the clock, at chunk boundaries that do not depend on the wall clock, so
+ * that the last step, and the run's last record, are reproducible. */
+#define GF_DONE_EVERY 100
+
 static gf_status run_loop(gf_sim *s, run_out *o, int resumed)
 {
     const double t_grain = s->scales.t_grain_s;
@@ -188,7 +210,7 @@ static gf_status run_loop(gf_sim *s, run_out *o, int resumed)
     double ck_dt = s->spec.output.checkpoint_interval_nd * t_grain;
     double next_out = out_dt > 0.0 ? s->t_s + out_dt : INFINITY, next_ck = ck_dt > 0.0 ? s->t_s + ck_dt : INFINITY;
     double wall0 = gf_wtime(), last_progress = wall0;
-    long chunk = 16, steps_at_progress = s->step;
+    long chunk = s->opt.chunk_steps > 0 ? s->opt.chunk_steps : 16, steps_at_progress = s->step;
     if (resumed) { /* the records up to now are in the continued files */
         next_out = next_instant(out_dt, s->t_s, s->dt_s);
         next_ck = next_instant(ck_dt, s->t_s, s->dt_s);
@@ -197,9 +219,11 @@ static gf_status run_loop(gf_sim *s, run_out *o, int resumed)
     }
     long written_step = s->step; /* a step count, not a time: steps overshoot an instant by up to dt */
     while (s->t_s < s->t_end_s - 0.5 * s->dt_s) {
-        double t_stop = fmin(fmin(next_out, next_ck), s->t_end_s);
-        long to_stop = (long)ceil((t_stop - s->t_s) / s->dt_s - 1e-9);
-        long n = to_stop < chunk ? (to_stop > 0 ? to_stop : 1) : chunk;
+        long to_stop = steps_to(s, fmin(fmin(next_out, next_ck), s->t_end_s));
+        const long to_check = GF_DONE_EVERY - s->step % GF_DONE_EVERY;
+        if (s->scene->done && to_check < to_stop)
+            to_stop = to_check;
+        long n = to_stop < chunk ? to_stop : chunk;
         double w0 = gf_wtime();
         gf_status st = gf_sim_advance(s, n);
         if (st == GF_ERR_INTERRUPTED) {
@@ -217,7 +241,9 @@ static gf_status run_loop(gf_sim *s, run_out *o, int resumed)
         double w1 = gf_wtime(), took = w1 - w0;
         /* ~0.1 s per chunk; grown only when a whole chunk ran (a chunk cut short by
          * frequent output instants must not double without bound and overflow) */
-        if (took < 0.05 && n == chunk)
+        if (s->opt.chunk_steps > 0)
+            ; /* fixed by the caller */
+        else if (took < 0.05 && n == chunk)
             chunk *= 2;
         else if (took > 0.2 && chunk > 1)
             chunk /= 2;
@@ -235,7 +261,7 @@ static gf_status run_loop(gf_sim *s, run_out *o, int resumed)
             last_progress = w1;
             steps_at_progress = s->step;
         }
-        if (s->scene->done && s->scene->done(s))
+        if (s->scene->done && s->step % GF_DONE_EVERY == 0 && s->scene->done(s))
             break;
     }
     if ((o->diag || o->parts) && s->step != written_step) /* last state, unless just written */

@@ -35,6 +35,7 @@ typedef struct prep {
     size_t *start, *nbr, n_pairs, cap_pairs;
     double *hist;
     double *pair_sqrt_mk;               /* sqrt(m_eff k_n) of each pair, set at the rebuild */
+    size_t *wall_cand, wall_start[PREP_MAX_WALLS + 1]; /* per wall, the grains within the skin at the rebuild */
     int *head, *next;
     size_t n_cells;
 } prep;
@@ -44,6 +45,7 @@ static void prep_free(prep *s)
     free(s->x), free(s->v), free(s->w), free(s->f), free(s->t);
     free(s->r), free(s->m), free(s->inv_i), free(s->x_ref), free(s->wall_hist);
     free(s->start), free(s->nbr), free(s->hist), free(s->head), free(s->next), free(s->pair_sqrt_mk);
+    free(s->wall_cand);
     memset(s, 0, sizeof *s);
 }
 
@@ -74,6 +76,39 @@ static double pair_mass(const prep *s, size_t i, size_t j)
 {
     int gi = i >= s->n_mobile, gj = j >= s->n_mobile;
     return gi ? s->m[j] : (gj ? s->m[i] : s->m[i] * s->m[j] / (s->m[i] + s->m[j]));
+}
+
+/* Lists, for each wall, the mobile grains whose gap to it is below the skin.
+ * A grain moves less than skin/2 between rebuilds, so one farther away
+ * cannot touch the wall before the next rebuild: its wall history, which the
+ * full loop would clear at every step, is cleared here once. The force loop
+ * visits the candidates in ascending order, wall after wall, which adds the
+ * walls' forces to each grain in the order of the full loop. */
+static gf_status wall_candidates(gf_ctx *ctx, prep *s)
+{
+    if (!s->wall_cand) {
+        s->wall_cand = malloc((s->n_mobile * PREP_MAX_WALLS + 1) * sizeof *s->wall_cand);
+        if (!s->wall_cand)
+            return GF_FAIL(ctx, GF_ERR_NOMEM, "packing: cannot allocate the wall candidates");
+    }
+    size_t m = 0;
+    for (int k = 0; k < s->n_walls; ++k) {
+        const prep_wall *wl = &s->wall[k];
+        s->wall_start[k] = m;
+        for (size_t i = 0; i < s->n_mobile; ++i) {
+            double dist = 0.0;
+            for (int c = 0; c < 3; ++c)
+                dist += (s->x[3 * i + c] - wl->point[c]) * wl->normal[c];
+            if (dist < s->r[i] + s->skin) {
+                s->wall_cand[m++] = i;
+            } else {
+                double *h = &s->wall_hist[(i * PREP_MAX_WALLS + (size_t)k) * 3];
+                h[0] = h[1] = h[2] = 0.0;
+            }
+        }
+    }
+    s->wall_start[s->n_walls] = m;
+    return GF_OK;
 }
 
 /* Rebuilds the Verlet table, carrying the tangential history of pairs that persist. */
@@ -213,7 +248,7 @@ static gf_status prep_rebuild(gf_ctx *ctx, prep *s)
     s->start = new_start, s->nbr = new_nbr, s->hist = new_hist, s->pair_sqrt_mk = sqrt_mk;
     s->n_pairs = np, s->cap_pairs = cap;
     memcpy(s->x_ref, s->x, 3 * s->n * sizeof *s->x);
-    return GF_OK;
+    return wall_candidates(ctx, s);
 }
 
 static void cross(const double a[3], const double b[3], double out[3])
@@ -261,6 +296,126 @@ static inline __attribute__((always_inline)) void contact_force(const prep *s, c
         force[c] = fn * n[c] + f_t[c];
 }
 
+/* The pair loop runs in blocks of PREP_BLOCK pairs and three passes, as the
+ * engine's dry loop (engine/gf_sim_pairs.c): (1) scan: distance test of every
+ * pair, contacts appended with their pair vector, separated pairs' histories
+ * cleared; (2) compute: each contact's force (contact_force, written with
+ * selects instead of branches), a loop without dependences between contacts
+ * that GCC vectorises (AVX-512 clone chosen at load time); (3) scatter: forces
+ * and torques added in list order. Every expression and every sum is the one
+ * of the former single loop, so the deposits are bitwise the same. */
+enum { PREP_BLOCK = 256 };
+
+typedef struct prep_block {
+    int64_t i3[PREP_BLOCK], j3[PREP_BLOCK], q3[PREP_BLOCK]; /* 3 i, 3 j, 3 q: offsets into x, v, w, f, t, hist */
+    double dx[PREP_BLOCK], dy[PREP_BLOCK], dz[PREP_BLOCK], d2[PREP_BLOCK], rs[PREP_BLOCK];
+    double ri[PREP_BLOCK], rj[PREP_BLOCK], sqrt_mk[PREP_BLOCK], mu[PREP_BLOCK];
+    double fx[PREP_BLOCK], fy[PREP_BLOCK], fz[PREP_BLOCK], tx[PREP_BLOCK], ty[PREP_BLOCK], tz[PREP_BLOCK];
+} prep_block;
+
+#ifdef _OPENMP
+#define PREP_SIMD _Pragma("omp simd")
+#else
+#define PREP_SIMD
+#endif
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__GLIBC__) /* ifunc */
+#define PREP_CLONES __attribute__((target_clones("arch=x86-64-v4", "default")))
+#else
+#define PREP_CLONES
+#endif
+
+/* Pass 1: pairs [*pq, *pq + PREP_BLOCK) (rows followed in *prow); returns the contacts. */
+static size_t prep_scan(prep *s, size_t *pq, size_t *prow, prep_block *b)
+{
+    size_t q = *pq, i = *prow, nc = 0;
+    const size_t qstop = s->n_pairs - q < PREP_BLOCK ? s->n_pairs : q + PREP_BLOCK;
+    for (; q < qstop; ++q) {
+        while (q >= s->start[i + 1])
+            ++i;
+        size_t j = s->nbr[q];
+        double d[3], d2 = 0.0;
+        for (int c = 0; c < 3; ++c) {
+            d[c] = min_image(s, c, s->x[3 * i + c] - s->x[3 * j + c]);
+            d2 += d[c] * d[c];
+        }
+        double rs = s->r[i] + s->r[j];
+        int in = d2 < rs * rs;
+        if (!in) {
+            double *h = &s->hist[3 * q];
+            h[0] = h[1] = h[2] = 0.0;
+        }
+        int glued = i >= s->n_mobile || j >= s->n_mobile;
+        b->i3[nc] = 3 * (int64_t)i, b->j3[nc] = 3 * (int64_t)j, b->q3[nc] = 3 * (int64_t)q;
+        b->dx[nc] = d[0], b->dy[nc] = d[1], b->dz[nc] = d[2], b->d2[nc] = d2, b->rs[nc] = rs;
+        b->ri[nc] = s->r[i], b->rj[nc] = s->r[j], b->sqrt_mk[nc] = s->pair_sqrt_mk[q];
+        b->mu[nc] = glued ? s->mu_obs : s->mu;
+        nc += (size_t)in;
+    }
+    *pq = q, *prow = i;
+    return nc;
+}
+
+/* Pass 2: contact_force of every contact of the block, with selects. */
+PREP_CLONES static void prep_compute(prep *s, prep_block *restrict b, size_t nc)
+{
+    const double *restrict v = s->v, *restrict w = s->w;
+    double *restrict hist = s->hist;
+    const double k_n = s->k_n, zeta = s->zeta, k_t = s->k_t, dt = s->dt;
+    PREP_SIMD
+    for (size_t c = 0; c < nc; ++c) {
+        const int64_t i3 = b->i3[c], j3 = b->j3[c], q3 = b->q3[c];
+        double dist = sqrt(b->d2[c]);
+        double n0 = b->dx[c] / dist, n1 = b->dy[c] / dist, n2 = b->dz[c] / dist;
+        double ri = b->ri[c], rj = b->rj[c];
+        double a0 = -ri * n0, a1 = -ri * n1, a2 = -ri * n2; /* lever of i: -R_i n */
+        double e0 = rj * n0, e1 = rj * n1, e2 = rj * n2;    /* lever of j: R_j n */
+        double wi0 = w[i3 + 1] * a2 - w[i3 + 2] * a1, wi1 = w[i3 + 2] * a0 - w[i3] * a2,
+               wi2 = w[i3] * a1 - w[i3 + 1] * a0;
+        double wj0 = w[j3 + 1] * e2 - w[j3 + 2] * e1, wj1 = w[j3 + 2] * e0 - w[j3] * e2,
+               wj2 = w[j3] * e1 - w[j3 + 1] * e0;
+        double u0 = v[i3] - v[j3] + wi0 - wj0, u1 = v[i3 + 1] - v[j3 + 1] + wi1 - wj1,
+               u2 = v[i3 + 2] - v[j3 + 2] + wi2 - wj2;
+        /* contact_force: normal spring-dashpot, never attractive */
+        double vn = u0 * n0 + u1 * n1 + u2 * n2;
+        double fn = k_n * (b->rs[c] - dist) - 2.0 * zeta * b->sqrt_mk[c] * vn;
+        fn = fn < 0.0 ? 0.0 : fn;
+        /* history rotated into the tangent plane, its length kept */
+        double h0 = hist[q3], h1 = hist[q3 + 1], h2 = hist[q3 + 2];
+        double hn = h0 * n0 + h1 * n1 + h2 * n2;
+        double len0 = sqrt(h0 * h0 + h1 * h1 + h2 * h2);
+        h0 -= hn * n0, h1 -= hn * n1, h2 -= hn * n2;
+        double len1 = sqrt(h0 * h0 + h1 * h1 + h2 * h2);
+        double ratio = len0 / (len1 > 0.0 ? len1 : 1.0);
+        h0 = len1 > 0.0 ? h0 * ratio : h0, h1 = len1 > 0.0 ? h1 * ratio : h1, h2 = len1 > 0.0 ? h2 * ratio : h2;
+        h0 += (u0 - vn * n0) * dt, h1 += (u1 - vn * n1) * dt, h2 += (u2 - vn * n2) * dt;
+        /* tangential spring with the Coulomb cap */
+        double t0 = -k_t * h0, t1 = -k_t * h1, t2 = -k_t * h2;
+        double ft2 = t0 * t0 + t1 * t1 + t2 * t2, cap = b->mu[c] * fn;
+        int slip = ft2 > cap * cap;
+        double scale = cap / sqrt(ft2 > 0.0 ? ft2 : 1.0);
+        scale = ft2 > 0.0 ? scale : 0.0;
+        t0 = slip ? t0 * scale : t0, t1 = slip ? t1 * scale : t1, t2 = slip ? t2 * scale : t2;
+        hist[q3] = slip ? -t0 / k_t : h0, hist[q3 + 1] = slip ? -t1 / k_t : h1, hist[q3 + 2] = slip ? -t2 / k_t : h2;
+        b->fx[c] = fn * n0 + t0, b->fy[c] = fn * n1 + t1, b->fz[c] = fn * n2 + t2;
+        b->tx[c] = n1 * t2 - n2 * t1, b->ty[c] = n2 * t0 - n0 * t2, b->tz[c] = n0 * t1 - n1 * t0; /* n x F_t */
+    }
+}
+
+/* Pass 3: forces and torques (r_c x F_t = -R n x F_t for both grains) in list order. */
+static void prep_scatter(prep *s, const prep_block *b, size_t nc)
+{
+    for (size_t c = 0; c < nc; ++c) {
+        const int64_t i3 = b->i3[c], j3 = b->j3[c];
+        const double F[3] = {b->fx[c], b->fy[c], b->fz[c]}, T[3] = {b->tx[c], b->ty[c], b->tz[c]};
+        for (int k = 0; k < 3; ++k) {
+            s->f[i3 + k] += F[k];
+            s->f[j3 + k] -= F[k];
+            s->t[i3 + k] -= b->ri[c] * T[k];
+            s->t[j3 + k] -= b->rj[c] * T[k];
+        }
+    }
+}
+
 static void prep_forces(prep *s)
 {
     memset(s->f, 0, 3 * s->n * sizeof *s->f);
@@ -270,44 +425,16 @@ static void prep_forces(prep *s)
         for (int c = 0; c < 3; ++c)
             s->f[3 * i + c] -= s->m[i] * s->v[3 * i + c] / s->tau;
     }
-    for (size_t i = 0; i < s->n; ++i) {
-        for (size_t q = s->start[i]; q < s->start[i + 1]; ++q) {
-            size_t j = s->nbr[q];
-            double d[3], d2 = 0.0;
-            for (int c = 0; c < 3; ++c) {
-                d[c] = min_image(s, c, s->x[3 * i + c] - s->x[3 * j + c]);
-                d2 += d[c] * d[c];
-            }
-            double rs = s->r[i] + s->r[j];
-            double *h = &s->hist[3 * q];
-            if (d2 >= rs * rs) {
-                h[0] = h[1] = h[2] = 0.0;
-                continue;
-            }
-            double dist = sqrt(d2), n[3], wi[3], wj[3], ri[3], rj[3], vrel[3];
-            for (int c = 0; c < 3; ++c) {
-                n[c] = d[c] / dist;
-                ri[c] = -s->r[i] * n[c];
-                rj[c] = s->r[j] * n[c];
-            }
-            cross(&s->w[3 * i], ri, wi);
-            cross(&s->w[3 * j], rj, wj);
-            for (int c = 0; c < 3; ++c)
-                vrel[c] = s->v[3 * i + c] - s->v[3 * j + c] + wi[c] - wj[c];
-            int gi = i >= s->n_mobile, gj = j >= s->n_mobile;
-            double force[3], ft[3], tq[3];
-            contact_force(s, n, rs - dist, vrel, s->pair_sqrt_mk[q], (gi || gj) ? s->mu_obs : s->mu, h, force, ft);
-            cross(n, ft, tq); /* r_c x F_t = -R n x F_t for both grains (force on j is -F_t at +R_j n) */
-            for (int c = 0; c < 3; ++c) {
-                s->f[3 * i + c] += force[c];
-                s->f[3 * j + c] -= force[c];
-                s->t[3 * i + c] -= s->r[i] * tq[c];
-                s->t[3 * j + c] -= s->r[j] * tq[c];
-            }
-        }
+    prep_block blk;
+    size_t row = 0;
+    for (size_t q = 0; q < s->n_pairs;) {
+        size_t nc = prep_scan(s, &q, &row, &blk);
+        prep_compute(s, &blk, nc);
+        prep_scatter(s, &blk, nc);
     }
-    for (size_t i = 0; i < s->n_mobile; ++i)
-        for (int k = 0; k < s->n_walls; ++k) {
+    for (int k = 0; k < s->n_walls; ++k)
+        for (size_t u = s->wall_start[k]; u < s->wall_start[k + 1]; ++u) {
+            const size_t i = s->wall_cand[u];
             const prep_wall *wl = &s->wall[k];
             double dist = 0.0;
             for (int c = 0; c < 3; ++c)
