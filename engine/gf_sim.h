@@ -50,6 +50,10 @@ typedef struct gf_sim_options {
      * output, checkpoint and done() instants are steps of the clock
      * (gf_sim_run.c); > 0 fixes it (tests/pipeline/test_run_chunking.c). */
     int chunk_steps;
+    /* 1: the dry linear law runs in the scalar pair loop (engine/gf_sim_forces.c)
+     * instead of the blocked, vectorised one (gf_sim_pairs.c), which must give
+     * the same bits (tests/dem/test_pair_loops.c). */
+    int generic_pair_loop;
 } gf_sim_options;
 
 /* Work a run leaves out because its spec and scene do not need it (issue #6),

@@ -454,6 +454,8 @@ gf_status gf_sim_compute_forces(gf_sim *s)
                     memset(a->f[q] + i0, 0, (n - i0) * sizeof(double));
             if (s->law->kernel == gf_contact_linear && (s->skips & GF_SKIP_TANGENTIAL))
                 pair_rows_linear_normal(s, i0, i1, f, a);
+            else if (s->law->kernel == gf_contact_linear && s->opt.generic_pair_loop)
+                pair_rows_linear(s, i0, i1, f, a);
             else if (s->law->kernel == gf_contact_linear && !s->lubrication)
                 gf_sim_pair_rows_dry_linear(s, i0, i1, f, a);
             else if (s->law->kernel == gf_contact_linear)

@@ -1,0 +1,65 @@
+/*
+ * The blocked, vectorised pair loop of the dry linear law (engine/
+ * gf_sim_pairs.c: scan, force pass in an AVX-512 clone where the machine has
+ * it, scatter in list order) gives the bits of the scalar loop
+ * (engine/gf_sim_forces.c) it replaces: same expressions, same sums.
+ *
+ * Claim: from the same start, the two loops (gf_sim_options.generic_pair_loop
+ * 0 and 1) leave bitwise identical positions, velocities and spins
+ *   - in a frictional settled bed of 1200 grains, 1 and 2 threads, 2000 steps
+ *     from an unsettled stack (contacts made and broken, Coulomb slip);
+ *   - in a column collapse on a rough base of glued grains (the scan's
+ *     flagged path), 3000 steps after its pre-run settle.
+ */
+#include <stdio.h>
+#include <string.h>
+
+#include "gf_test.h"
+#include "gf_test_sim.h"
+
+static gf_sim *make(gf_ctx *ctx, const gf_run_spec *spec, int threads, int generic)
+{
+    gf_sim_options opt;
+    memset(&opt, 0, sizeof opt);
+    opt.n_threads = threads;
+    opt.generic_pair_loop = generic;
+    gf_sim *s = NULL;
+    GF_CHECK_OK(gf_sim_create(ctx, spec, &opt, &s), ctx);
+    return s;
+}
+
+static void compare(gf_ctx *ctx, const char *what, const gf_run_spec *spec, int threads, long steps)
+{
+    gf_sim *blocked = make(ctx, spec, threads, 0), *generic = make(ctx, spec, threads, 1);
+    if (!blocked || !generic) {
+        gf_sim_destroy(&blocked);
+        gf_sim_destroy(&generic);
+        return;
+    }
+    GF_CHECK_OK(gf_sim_advance(blocked, steps), ctx);
+    GF_CHECK_OK(gf_sim_advance(generic, steps), ctx);
+    int same = gf_test_same_motion(gf_sim_particles(blocked), gf_sim_particles(generic));
+    gf_test_check(same, __FILE__, __LINE__, "%s, %d thread(s), %ld steps, %zu grains: blocked loop bitwise the scalar one",
+                  what, threads, steps, gf_sim_particles(blocked)->n_local);
+    gf_sim_destroy(&blocked);
+    gf_sim_destroy(&generic);
+}
+
+int main(void)
+{
+    gf_ctx ctx = {0};
+    gf_run_spec bed = gf_test_spec("settled_bed");
+    bed.grains.polydispersity = 0.1;
+    bed.contact.friction = 0.5;
+    gf_run_spec_set_param(&ctx, &bed, "n_grains", 1200); /* above the serial threshold: threads really run */
+    gf_run_spec_set_param(&ctx, &bed, "settle_time_nd", 0.0);
+    compare(&ctx, "settling bed", &bed, 1, 2000);
+    compare(&ctx, "settling bed", &bed, 2, 2000);
+
+    gf_run_spec col = gf_test_spec("column_collapse");
+    col.aspect_ratio_a = 1.0;
+    col.contact.friction = 0.5;
+    gf_run_spec_set_param(&ctx, &col, "column_length_over_D", 8.0);
+    compare(&ctx, "column collapse", &col, 1, 3000);
+    return gf_test_finish();
+}
