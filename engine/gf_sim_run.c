@@ -194,6 +194,8 @@ static double next_instant(double every_s, double t_s, double dt_s)
 static long steps_to(const gf_sim *s, double t_stop)
 {
     double x = (t_stop - 0.5 * s->dt_s - s->t_s) / s->dt_s, k = floor(x);
+    if (!(x < 1e15)) /* no instant ahead (infinite or absurd): the chunk decides */
+        return 1L << 50;
     long n = (long)(x - k < 1e-3 ? k : k + 1.0);
     return n > 0 ? n : 1;
 }
