@@ -265,7 +265,8 @@ static void cross(const double a[3], const double b[3], double out[3])
 
 /* Linear spring-dashpot + tangential spring with Coulomb cap (Cundall & Strack 1979), force on i.
  * vrel: relative surface velocity at the contact, n from j to i, sqrt_mk = sqrt(m_eff k_n) of the pair
- * (m_eff its reduced mass). Inlined into the pair loop: a call per contact cost a fifth of the preparation. */
+ * (m_eff its reduced mass). The wall contacts use it; the pair loop's prep_compute writes the same
+ * expressions with selects, so that grain-grain contacts vectorise. */
 static inline __attribute__((always_inline)) void contact_force(const prep *s, const double n[3], double overlap,
                                                                 const double vrel[3], double sqrt_mk, double mu,
                                                                 double *hist, double force[3], double f_t[3])
