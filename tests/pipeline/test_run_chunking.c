@@ -13,7 +13,6 @@
  * bitwise the same diagnostics.nc and particles.nc with chunks of 1, 7 and 64
  * steps and with the adaptive chunks.
  */
-#include <netcdf.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -21,33 +20,10 @@
 
 #include "gf_sim.h"
 #include "gf_test.h"
+#include "gf_test_files.h"
 
 static const char *const diag_vars[] = {"time", "kinetic_energy", "front_position", "deposit_height", "n_contacts"};
 static const char *const part_vars[] = {"time", "x", "y", "z", "u", "v", "w"};
-
-static double *read_var(const char *path, const char *name, size_t *n)
-{
-    int nc, var, ndims, dims[NC_MAX_VAR_DIMS];
-    double *v = NULL;
-    *n = 1;
-    if (nc_open(path, NC_NOWRITE, &nc) != NC_NOERR)
-        return NULL;
-    if (nc_inq_varid(nc, name, &var) == NC_NOERR && nc_inq_varndims(nc, var, &ndims) == NC_NOERR &&
-        nc_inq_vardimid(nc, var, dims) == NC_NOERR) {
-        for (int d = 0; d < ndims; ++d) {
-            size_t len = 0;
-            nc_inq_dimlen(nc, dims[d], &len);
-            *n *= len;
-        }
-        v = malloc(*n * sizeof *v);
-        if (v && nc_get_var_double(nc, var, v) != NC_NOERR) {
-            free(v);
-            v = NULL;
-        }
-    }
-    nc_close(nc);
-    return v;
-}
 
 static void run_into(const char *dir, int chunk_steps, long *steps)
 {
@@ -88,7 +64,7 @@ static void same_file(const char *ref_dir, const char *dir, const char *file, co
     snprintf(b, sizeof b, "%s/%s", dir, file);
     for (int k = 0; k < n_vars; ++k) {
         size_t na = 0, nb = 0;
-        double *x = read_var(a, vars[k], &na), *y = read_var(b, vars[k], &nb);
+        double *x = gf_test_nc_read(a, vars[k], &na), *y = gf_test_nc_read(b, vars[k], &nb);
         int same = x && y && na == nb && memcmp(x, y, na * sizeof *x) == 0;
         gf_test_check(same, __FILE__, __LINE__, "%s %s: %zu / %zu values, chunks of %d steps against 1", file,
                       vars[k], na, nb, chunk_steps);

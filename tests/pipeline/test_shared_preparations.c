@@ -9,13 +9,13 @@
  *   particles.nc (positions and velocities at every output instant, bit for
  *   bit) as the same run alone in an empty directory, which built it.
  */
-#include <netcdf.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "campaign/gf_campaign.h"
 #include "gf_test.h"
+#include "gf_test_files.h"
 #include "schedule/gf_ledger.h"
 #include "schedule/gf_sched.h"
 
@@ -31,45 +31,12 @@ static const char campaign_text[] =
     "  - {label: dull, contact.restitution: 0.5}\n"
     "  - {label: looser, scene.phi_target: 0.56}\n";
 
-static size_t count_files(const char *dir)
-{
-    char cmd[4400];
-    snprintf(cmd, sizeof cmd, "ls %s/*.h5 2>/dev/null | wc -l", dir);
-    FILE *f = popen(cmd, "r");
-    size_t n = 0;
-    if (f) {
-        if (fscanf(f, "%zu", &n) != 1)
-            n = 0;
-        pclose(f);
-    }
-    return n;
-}
-
 /* Variable name of particles.nc in run directory dir, whole; NULL when unreadable. */
 static double *read_var(const char *dir, const char *name, size_t *n)
 {
     char path[4300];
     snprintf(path, sizeof path, "%s/particles.nc", dir);
-    int nc, var, ndims, dims[NC_MAX_VAR_DIMS];
-    *n = 1;
-    if (nc_open(path, NC_NOWRITE, &nc) != NC_NOERR)
-        return NULL;
-    double *v = NULL;
-    if (nc_inq_varid(nc, name, &var) == NC_NOERR && nc_inq_varndims(nc, var, &ndims) == NC_NOERR &&
-        nc_inq_vardimid(nc, var, dims) == NC_NOERR) {
-        for (int d = 0; d < ndims; ++d) {
-            size_t len = 0;
-            nc_inq_dimlen(nc, dims[d], &len);
-            *n *= len;
-        }
-        v = malloc(*n * sizeof *v);
-        if (v && nc_get_var_double(nc, var, v) != NC_NOERR) {
-            free(v);
-            v = NULL;
-        }
-    }
-    nc_close(nc);
-    return v;
+    return gf_test_nc_read(path, name, n);
 }
 
 int main(void)
@@ -88,7 +55,9 @@ int main(void)
     GF_CHECK(n.n_total == 3 && n.n_done == 3);
     char prep[4300];
     snprintf(prep, sizeof prep, "%s/%s/preparations", shared, c->name);
-    size_t n_files = count_files(prep);
+    char pattern[4400];
+    snprintf(pattern, sizeof pattern, "%s/*.h5", prep);
+    size_t n_files = gf_test_count_files(pattern);
     gf_test_check(n_files == 2, __FILE__, __LINE__, "%zu deposits kept for 3 runs over 2 columns", n_files);
 
     const int only_dull[] = {1};

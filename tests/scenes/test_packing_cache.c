@@ -17,6 +17,7 @@
 
 #include "core/gf_timer.h"
 #include "gf_test.h"
+#include "gf_test_files.h"
 #include "io/gf_packing_cache.h"
 
 static const double D = 7.6e-3;
@@ -51,26 +52,14 @@ static int same_deposit(const gf_particles *a, const gf_packing_result *ra, cons
            ra->phi_global == rb->phi_global && ra->mu_prep == rb->mu_prep && ra->top_m == rb->top_m;
 }
 
-static size_t files_in(const char *dir)
-{
-    char cmd[512];
-    snprintf(cmd, sizeof cmd, "ls %s | wc -l", dir);
-    FILE *f = popen(cmd, "r");
-    size_t n = 0;
-    if (f) {
-        if (fscanf(f, "%zu", &n) != 1)
-            n = 0;
-        pclose(f);
-    }
-    return n;
-}
-
 int main(void)
 {
     char dir[] = "/tmp/gf_packing_cache_XXXXXX";
     GF_CHECK(mkdtemp(dir) != NULL);
     char prep_dir[600];
     snprintf(prep_dir, sizeof prep_dir, "%s/preparations", dir);
+    char pattern[700];
+    snprintf(pattern, sizeof pattern, "%s/packing-*.h5", prep_dir);
     gf_ctx ctx = {0};
     gf_psd psd = {D / 2, 0.05};
     gf_particles *base = NULL;
@@ -88,7 +77,7 @@ int main(void)
     printf("built: %zu grains, Phi_i %.4f, %d deposits, %.2f s; read back (reused %d) in %.4f s\n", r_first.n_grains,
            r_first.phi_local, r_first.iterations, r_first.cpu_s, r_again.reused, t_read);
     GF_CHECK(!r_plain.reused && !r_first.reused && r_again.reused);
-    GF_CHECK(files_in(prep_dir) == 1);
+    GF_CHECK(gf_test_count_files(pattern) == 1);
     GF_CHECK(same_deposit(plain, &r_plain, first, &r_first));
     GF_CHECK(same_deposit(plain, &r_plain, again, &r_again));
 
@@ -96,7 +85,7 @@ int main(void)
     gf_packing_spec other = column(base, 5);
     gf_packing_result r_other;
     gf_particles *p_other = prepare(&other, prep_dir, &r_other);
-    GF_CHECK(!r_other.reused && files_in(prep_dir) == 2);
+    GF_CHECK(!r_other.reused && gf_test_count_files(pattern) == 2);
     GF_CHECK(!same_deposit(plain, &r_plain, p_other, &r_other));
 
     /* an obstacle moved by 1 nm: same key text, different base, a miss */
