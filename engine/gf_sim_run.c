@@ -243,12 +243,12 @@ static gf_status run_loop(gf_sim *s, run_out *o, int resumed)
         double w1 = gf_wtime(), took = w1 - w0;
         /* ~0.1 s per chunk; grown only when a whole chunk ran (a chunk cut short by
          * frequent output instants must not double without bound and overflow) */
-        if (s->opt.chunk_steps > 0)
-            ; /* fixed by the caller */
-        else if (took < 0.05 && n == chunk)
-            chunk *= 2;
-        else if (took > 0.2 && chunk > 1)
-            chunk /= 2;
+        if (s->opt.chunk_steps <= 0) { /* > 0: fixed by the caller */
+            if (took < 0.05 && n == chunk)
+                chunk *= 2;
+            else if (took > 0.2 && chunk > 1)
+                chunk /= 2;
+        }
         if (s->t_s >= next_out - 0.5 * s->dt_s) {
             GF_TRY(write_record(s, o));
             written_step = s->step;
