@@ -148,11 +148,7 @@ static void check_collapse(gf_ctx *ctx, const char *path)
 int main(void)
 {
     gf_ctx ctx = {0};
-    gf_run_spec bed = gf_test_spec("settled_bed");
-    bed.grains.polydispersity = 0.1;
-    bed.contact.friction = 0.5;
-    gf_run_spec_set_param(&ctx, &bed, "n_grains", 1200); /* above the serial threshold: threads really run */
-    gf_run_spec_set_param(&ctx, &bed, "settle_time_nd", 3.0);
+    gf_run_spec bed = gf_test_bed_spec(&ctx, 1200, 3.0); /* 1200: above the serial threshold, threads really run */
     char path[512];
     snprintf(path, sizeof path, "%s/dem_restart_bed_%d.h5", getenv("GF_BINARY_DIR") ? getenv("GF_BINARY_DIR") : "/tmp",
              (int)getpid());

@@ -48,11 +48,7 @@ static void compare(gf_ctx *ctx, const char *what, const gf_run_spec *spec, int 
 int main(void)
 {
     gf_ctx ctx = {0};
-    gf_run_spec bed = gf_test_spec("settled_bed");
-    bed.grains.polydispersity = 0.1;
-    bed.contact.friction = 0.5;
-    gf_run_spec_set_param(&ctx, &bed, "n_grains", 1200); /* above the serial threshold: threads really run */
-    gf_run_spec_set_param(&ctx, &bed, "settle_time_nd", 0.0);
+    gf_run_spec bed = gf_test_bed_spec(&ctx, 1200, 0.0); /* 1200: above the serial threshold, threads really run */
     compare(&ctx, "settling bed", &bed, 1, 2000);
     compare(&ctx, "settling bed", &bed, 2, 2000);
 

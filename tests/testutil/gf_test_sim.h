@@ -23,6 +23,18 @@ static inline gf_run_spec gf_test_spec(const char *scene)
     return s;
 }
 
+/* A frictional (mu_c 0.5), 10 % polydisperse settled_bed of n grains with
+ * settle_time_nd = settle_nd: the restart and pair-loop tests' bed. */
+static inline gf_run_spec gf_test_bed_spec(gf_ctx *ctx, int n, double settle_nd)
+{
+    gf_run_spec bed = gf_test_spec("settled_bed");
+    bed.grains.polydispersity = 0.1;
+    bed.contact.friction = 0.5;
+    gf_run_spec_set_param(ctx, &bed, "n_grains", n);
+    gf_run_spec_set_param(ctx, &bed, "settle_time_nd", settle_nd);
+    return bed;
+}
+
 /* Sim with no output directory and `threads` OpenMP threads (0: default). */
 static inline gf_status gf_test_sim(gf_ctx *ctx, const gf_run_spec *spec, int threads, gf_sim **out)
 {
