@@ -166,11 +166,19 @@ static void interrupt_and_resume(gf_ctx *ctx, gf_run_spec *spec, const char *out
     struct itimerval it = {{0, 0}, {0, 0}};
     double frac = first_cut;
     for (int attempt = 0; attempt < 8; ++attempt) {
+        /* each attempt in a clean directory: a run that finished first
+         * leaves its diagnostics.nc, which an interrupted fresh run keeps
+         * (its own files stay .partial) */
+        char cmd[4300];
+        snprintf(cmd, sizeof cmd, "rm -rf '%s'", cut);
+        GF_CHECK(system(cmd) == 0);
         long usec = (long)(frac * ref_wall_s * 1e6) + 1;
         it.it_value.tv_sec = usec / 1000000, it.it_value.tv_usec = usec % 1000000;
         interrupt_flag = 0;
         setitimer(ITIMER_REAL, &it, NULL);
         GF_CHECK_OK(gf_run_execute(ctx, spec, &co, &res), ctx);
+        printf("%s: cut at %.0f %% of the reference's wall time: %s\n", spec->run_id, 100.0 * frac,
+               res.status == GF_OK ? "finished first" : exists(cut, "checkpoint.h5") ? "interrupted" : "interrupted in the preparation");
         if (res.status == GF_OK)
             frac *= 0.5; /* finished first: cut earlier */
         else if (res.status == GF_ERR_INTERRUPTED && !exists(cut, "checkpoint.h5"))
