@@ -27,6 +27,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/gf_soa.h"
 #include "coupling/gf_coupling.h"
 #include "coupling/gf_tier.h"
 #ifdef _OPENMP
@@ -476,9 +477,8 @@ void gf_sim_destroy(gf_sim **ps)
     gf_coupling_destroy(&s->coupling);
     gf_particles_destroy(&s->p);
     gf_nlist_destroy(&s->nl);
-    free(s->x_ref), free(s->y_ref), free(s->z_ref), free(s->wall_hist);
-    free(s->vx_pred), free(s->vy_pred), free(s->vz_pred);
-    free(s->inv_mass), free(s->inv_inertia), free(s->mobile), free(s->contact_inv_mass);
+    gf_soa_free(s->ref_block);
+    free(s->wall_hist);
     free(s->pair_meff), free(s->pair_sqrt_mk), free(s->wall_cand);
     free(s->sleep_quiet_steps);
     for (int t = 0; t < GF_SIM_MAX_THREADS; ++t)

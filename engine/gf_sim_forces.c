@@ -36,6 +36,7 @@
 #endif
 
 #include "contact/gf_contact_kernels.h"
+#include "core/gf_soa.h"
 #include "contact/gf_lubrication.h"
 #include "gf_sim_internal.h"
 #include "integrate/gf_integrate.h"
@@ -47,12 +48,16 @@ gf_status gf_sim_reserve(gf_sim *s, size_t n)
     size_t cap = n + n / 4 + 16, stride = (size_t)s->n_walls + 1;
     double **arr[10] = {&s->x_ref, &s->y_ref, &s->z_ref, &s->vx_pred, &s->vy_pred, &s->vz_pred,
                         &s->inv_mass, &s->inv_inertia, &s->mobile, &s->contact_inv_mass};
-    for (int a = 0; a < 10; ++a) {
-        double *q = realloc(*arr[a], cap * sizeof(double));
-        if (!q)
-            return GF_FAIL(s->ctx, GF_ERR_NOMEM, "sim: cannot allocate per-grain arrays for %zu grains", n);
-        *arr[a] = q;
-    }
+    void *old[10], *fresh[10];
+    for (int a = 0; a < 10; ++a)
+        old[a] = *arr[a];
+    void *block = gf_soa_alloc(10, sizeof(double), cap, GF_SOA_LINE_SIM, fresh, old, s->ref_cap);
+    if (!block)
+        return GF_FAIL(s->ctx, GF_ERR_NOMEM, "sim: cannot allocate per-grain arrays for %zu grains", n);
+    for (int a = 0; a < 10; ++a)
+        *arr[a] = fresh[a];
+    gf_soa_free(s->ref_block);
+    s->ref_block = block;
     double *h = realloc(s->wall_hist, cap * stride * 3 * sizeof(double));
     if (!h)
         return GF_FAIL(s->ctx, GF_ERR_NOMEM, "sim: cannot allocate wall history for %zu grains", n);

@@ -76,6 +76,7 @@ struct gf_sim {
     double *vx_pred, *vy_pred, *vz_pred; /* predicted v(t+dt) for the dashpot (gf_integrate.h) */
     double *inv_mass, *inv_inertia, *mobile; /* integrator factors, refreshed at every neighbour build */
     double *contact_inv_mass;       /* 1/m in contacts, 0 for glued grains (infinite mass) */
+    void *ref_block;                /* owns the ten arrays above, staggered (core/gf_soa.h) */
     double *pair_meff, *pair_sqrt_mk; /* per neighbour pair: m*, sqrt(m* k_n) */
     size_t pair_cap;
     int vp_valid;                   /* set by the drift, consumed by the next force evaluation */

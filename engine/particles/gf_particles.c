@@ -5,6 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/gf_soa.h"
+
 #define GF_DOUBLE_FIELDS(X)                                                                     \
     X(x_m) X(y_m) X(z_m) X(vx_m_s) X(vy_m_s) X(vz_m_s) X(wx_rad_s) X(wy_rad_s) X(wz_rad_s)     \
     X(fx_N) X(fy_N) X(fz_N) X(tx_N_m) X(ty_N_m) X(tz_N_m) X(radius_m) X(mass_kg) X(inertia_kg_m2)
@@ -23,10 +25,7 @@ void gf_particles_destroy(gf_particles **pp)
     if (!pp || !*pp)
         return;
     gf_particles *p = *pp;
-#define GF_FREE_FIELD(f) free(p->f);
-    GF_DOUBLE_FIELDS(GF_FREE_FIELD)
-#undef GF_FREE_FIELD
-    free(p->id);
+    gf_soa_free(p->soa_block);
     free(p->flags);
     free(p);
     *pp = NULL;
@@ -48,12 +47,22 @@ gf_status gf_particles_reserve(gf_ctx *ctx, gf_particles *p, size_t n)
     size_t cap = p->capacity ? p->capacity : 64;
     while (cap < n)
         cap *= 2;
-    int ok = 1;
-#define GF_GROW_FIELD(f) ok = ok && grow((void **)&p->f, sizeof(double), cap);
-    GF_DOUBLE_FIELDS(GF_GROW_FIELD)
-#undef GF_GROW_FIELD
-    ok = ok && grow((void **)&p->id, sizeof(int64_t), cap);
-    ok = ok && grow((void **)&p->flags, sizeof(uint8_t), cap);
+    /* the double arrays and id (8 bytes each) in one staggered block */
+#define GF_FIELD_PTR(f) (void **)&p->f,
+    void **field[] = {GF_DOUBLE_FIELDS(GF_FIELD_PTR)(void **)&p->id};
+#undef GF_FIELD_PTR
+    enum { N_FIELDS = sizeof field / sizeof *field };
+    void *old[N_FIELDS], *fresh[N_FIELDS];
+    for (int a = 0; a < N_FIELDS; ++a)
+        old[a] = *field[a];
+    void *block = gf_soa_alloc(N_FIELDS, sizeof(double), cap, GF_SOA_LINE_PARTICLES, fresh, old, p->n_local + p->n_ghost);
+    int ok = block != NULL && grow((void **)&p->flags, sizeof(uint8_t), cap);
+    if (block) {
+        for (int a = 0; a < N_FIELDS; ++a)
+            *field[a] = fresh[a];
+        gf_soa_free(p->soa_block);
+        p->soa_block = block;
+    }
     if (!ok)
         return GF_FAIL(ctx, GF_ERR_NOMEM, "particles: cannot grow store to %zu grains", cap);
     p->capacity = cap;

@@ -27,8 +27,9 @@
  * ensemble behaviour, and one collapse is chaotic (a 1e-7 change of g moves a
  * run-out by several %). The lambdas of each seed alone are printed to show
  * that scatter.
- * GF_TEST_MU overrides mu_c and GF_TEST_WIDTH the slab width W/D
- * (exploration: the thesis' dry runs are 12 D wide).
+ * GF_TEST_MU overrides mu_c, GF_TEST_WIDTH the slab width W/D and
+ * GF_TEST_TC t_c sqrt(g/D) (exploration: the thesis' dry runs are 12 D wide,
+ * with t_c = 1e-4 s, i.e. t_c sqrt(g/D) = 3.1e-3).
  */
 #include <stdlib.h>
 
@@ -46,7 +47,7 @@ static void collapse(double a, unsigned seed, double *runout, double *h_over_r0,
     spec.contact.restitution = 0.5;
     spec.contact.friction = getenv("GF_TEST_MU") ? atof(getenv("GF_TEST_MU")) : 1.0;
     spec.contact.wall_friction = spec.contact.friction;
-    spec.contact.t_contact_nd = 0.02;
+    spec.contact.t_contact_nd = getenv("GF_TEST_TC") ? atof(getenv("GF_TEST_TC")) : 0.02;
     GF_CHECK_OK(gf_run_spec_set_param(&ctx, &spec, "aspect_ratio", a), &ctx);
     GF_CHECK_OK(gf_run_spec_set_param(&ctx, &spec, "phi_target", 0.60), &ctx);
     if (getenv("GF_TEST_WIDTH"))
