@@ -143,6 +143,39 @@ static void same_file(const char *a, const char *b, const char *name)
     nc_close(fb);
 }
 
+/* Runs spec into co->run_dir and interrupts it after delay_s of wall time
+ * (as SIGTERM from a batch system would): a shorter delay again if a faster
+ * moment of a shared machine finished the run first, a longer one if the cut
+ * fell in the scene's preparation (nothing to continue yet). Ends with *res
+ * of the last attempt. */
+static void interrupt_at(gf_ctx *ctx, const gf_run_spec *spec, const gf_run_exec_opts *co, double delay_s,
+                         gf_run_result *res)
+{
+    const char *dir = co->run_dir;
+    for (int attempt = 0; attempt < 8; ++attempt) {
+        /* each attempt in a clean directory: a run that finished first
+         * leaves its diagnostics.nc, which an interrupted fresh run keeps
+         * (its own files stay .partial) */
+        char cmd[4300];
+        snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+        GF_CHECK(system(cmd) == 0);
+        long usec = (long)(delay_s * 1e6) + 1;
+        struct itimerval it = {{0, 0}, {usec / 1000000, usec % 1000000}};
+        interrupt_flag = 0;
+        setitimer(ITIMER_REAL, &it, NULL);
+        GF_CHECK_OK(gf_run_execute(ctx, spec, co, res), ctx);
+        int in_prep = res->status == GF_ERR_INTERRUPTED && !exists(dir, "checkpoint.h5");
+        printf("%s: cut after %.3f s: %s\n", spec->run_id, delay_s,
+               res->status == GF_OK ? "finished first" : in_prep ? "interrupted in the preparation" : "interrupted");
+        if (res->status == GF_OK)
+            delay_s *= 0.5;
+        else if (in_prep)
+            delay_s *= 1.5;
+        else
+            return;
+    }
+}
+
 /* Reference run, the same run interrupted at first_cut of its wall time
  * (past the scene's preparation) and resumed: the resumed run continues from the checkpoint and its files
  * `names` are bitwise the reference's. */
@@ -159,33 +192,8 @@ static void interrupt_and_resume(gf_ctx *ctx, gf_run_spec *spec, const char *out
     printf("%s, reference: %ld steps, %.2f s wall\n", spec->run_id, res.steps, res.wall_s);
     const double ref_wall_s = res.wall_s;
 
-    /* interrupted at first_cut of the reference's wall time (a shorter delay
-     * again if a faster moment of a shared machine finished it first, a
-     * longer one if the cut fell in the scene's preparation) */
     gf_run_exec_opts co = {.run_dir = cut, .campaign = "continue", .n_threads = 1, .interrupt = &interrupt_flag};
-    struct itimerval it = {{0, 0}, {0, 0}};
-    double frac = first_cut;
-    for (int attempt = 0; attempt < 8; ++attempt) {
-        /* each attempt in a clean directory: a run that finished first
-         * leaves its diagnostics.nc, which an interrupted fresh run keeps
-         * (its own files stay .partial) */
-        char cmd[4300];
-        snprintf(cmd, sizeof cmd, "rm -rf '%s'", cut);
-        GF_CHECK(system(cmd) == 0);
-        long usec = (long)(frac * ref_wall_s * 1e6) + 1;
-        it.it_value.tv_sec = usec / 1000000, it.it_value.tv_usec = usec % 1000000;
-        interrupt_flag = 0;
-        setitimer(ITIMER_REAL, &it, NULL);
-        GF_CHECK_OK(gf_run_execute(ctx, spec, &co, &res), ctx);
-        printf("%s: cut at %.0f %% of the reference's wall time: %s\n", spec->run_id, 100.0 * frac,
-               res.status == GF_OK ? "finished first" : exists(cut, "checkpoint.h5") ? "interrupted" : "interrupted in the preparation");
-        if (res.status == GF_OK)
-            frac *= 0.5; /* finished first: cut earlier */
-        else if (res.status == GF_ERR_INTERRUPTED && !exists(cut, "checkpoint.h5"))
-            frac += 0.5 * (1.0 - frac); /* cut during the preparation (nothing to continue): cut later */
-        else
-            break;
-    }
+    interrupt_at(ctx, spec, &co, first_cut * ref_wall_s, &res);
     GF_CHECK(res.status == GF_ERR_INTERRUPTED);
     GF_CHECK(gf_ledger_state(cut, reason, sizeof reason) == GF_RUN_FAILED);
     gf_test_check(strstr(reason, "checkpoint written") != NULL, __FILE__, __LINE__, "status: %s", reason);
@@ -224,14 +232,11 @@ int main(void)
 
     /* a changed spec is not continued from an old checkpoint */
     gf_run_result res;
-    struct itimerval it = {{0, 0}, {0, 20000}};
     char changed[4300];
     snprintf(changed, sizeof changed, "%s/changed", out);
     gf_run_exec_opts co = {.run_dir = changed, .campaign = "continue", .n_threads = 1, .interrupt = &interrupt_flag};
     spec.end_time_nd = 3.0;
-    interrupt_flag = 0;
-    setitimer(ITIMER_REAL, &it, NULL);
-    GF_CHECK_OK(gf_run_execute(&ctx, &spec, &co, &res), &ctx);
+    interrupt_at(&ctx, &spec, &co, 0.02, &res);
     GF_CHECK(res.status == GF_ERR_INTERRUPTED && res.sim_time_s > 0.0);
     interrupt_flag = 0;
     co.resume = 1;
