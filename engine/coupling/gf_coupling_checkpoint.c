@@ -18,6 +18,7 @@
  * and the cell-centred velocities are rebuilt at the start of every step, so
  * they are not saved. The grid must be the one the spec builds (checked).
  */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -41,6 +42,7 @@ static void held_unpack(const double *v, held_grain *h)
     memcpy(h->uf, &v[1], 3 * sizeof(double));
     memcpy(h->f_other_N, &v[4], 3 * sizeof(double));
     h->eps = v[7], h->mass_kg = v[8];
+    h->phi1_x = NAN; /* evaluated again at the first substep */
 }
 
 static gf_status save_held(const gf_coupling *c, gf_restart *r)

@@ -744,6 +744,7 @@ gf_status gf_coupling_fluid_step(gf_coupling *c, const gf_particles *p, double d
         hg->K_kg_s = K;
         hg->eps = eps_i;
         hg->mass_kg = p->mass_kg[i];
+        hg->phi1_x = NAN;
         gf_average_spread(g, k, K, f->beta);
         gf_average_spread(g, k, K * p->vx_m_s[i], f->beta_v[0]);
         gf_average_spread(g, k, K * p->vy_m_s[i], f->beta_v[1]);
@@ -817,7 +818,7 @@ gf_status gf_coupling_add_forces(gf_coupling *c, gf_particles *p)
         qsort(c->held, c->n_held, sizeof *c->held, cmp_id);
     double dt = c->dt_dem_s;
     for (size_t i = 0; i < p->n_local; ++i) {
-        const held_grain *hg = &c->held[i];
+        held_grain *hg = &c->held[i];
         if (reordered) {
             held_grain key = {.id = p->id[i]};
             hg = bsearch(&key, c->held, c->n_held, sizeof key, cmp_id);
@@ -830,7 +831,11 @@ gf_status gf_coupling_add_forces(gf_coupling *c, gf_particles *p)
          * F_add = phi1 K (u - v) + phi1 F_fluid,other + (phi1 - 1)(F_already + m g) */
         double m = p->mass_kg[i];
         double x = hg->K_kg_s * dt / m;
-        double phi1 = x > 1e-8 ? -expm1(-x) / x : 1.0 - 0.5 * x;
+        if (x != hg->phi1_x) {
+            hg->phi1 = x > 1e-8 ? -expm1(-x) / x : 1.0 - 0.5 * x;
+            hg->phi1_x = x;
+        }
+        const double phi1 = hg->phi1;
         double K = hg->K_kg_s * phi1;
         double *f[3] = {&p->fx_N[i], &p->fy_N[i], &p->fz_N[i]};
         double v[3] = {p->vx_m_s[i], p->vy_m_s[i], p->vz_m_s[i]};

@@ -21,6 +21,10 @@ enum { FLD_EPS, FLD_U, FLD_V, FLD_W, FLD_P, FLD_N };
 typedef struct held_grain {
     int64_t id;
     double K_kg_s, uf[3], f_other_N[3], eps, mass_kg;
+    /* phi1(x) = (1 - exp(-x))/x of the substeps' drag relaxation, for the
+     * x = K dt/m it was evaluated at (NaN: not yet): x is the same in every
+     * substep between two fluid steps, so expm1 runs once per fluid step */
+    double phi1, phi1_x;
 } held_grain;
 
 struct gf_coupling {
