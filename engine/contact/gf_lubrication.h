@@ -30,21 +30,22 @@
 
 #include <math.h>
 
-/* (1 - exp(-x))/x for 0 <= x <= 0.29, Horner form of its Taylor series. */
+/* (1 - exp(-x))/x for 0 <= x <= 0.29: its Taylor series to degree 11 in
+ * Estrin's form (pairs of terms, then pairs of pairs with x^2, x^4, x^8):
+ * a chain of 7 dependent operations where Horner's has 22, which the pair
+ * loop waits on for every lubricated pair (Horner's form took a fifth of
+ * its samples). */
 static inline double gf_lubrication_phi1(double x)
 {
-    double s = -1.0 / 479001600.0;  /* -1/12! */
-    s = 1.0 / 39916800.0 + x * s;   /* 1/11! */
-    s = -1.0 / 3628800.0 + x * s;
-    s = 1.0 / 362880.0 + x * s;
-    s = -1.0 / 40320.0 + x * s;
-    s = 1.0 / 5040.0 + x * s;
-    s = -1.0 / 720.0 + x * s;
-    s = 1.0 / 120.0 + x * s;
-    s = -1.0 / 24.0 + x * s;
-    s = 1.0 / 6.0 + x * s;
-    s = -1.0 / 2.0 + x * s;
-    return 1.0 + x * s;
+    /* c_k = (-1)^k/(k+1)!, k = 0..11 */
+    const double x2 = x * x, x4 = x2 * x2, x8 = x4 * x4;
+    const double q1 = 1.0 / 6.0 + x * (-1.0 / 24.0);
+    const double q2 = 1.0 / 120.0 + x * (-1.0 / 720.0), q3 = 1.0 / 5040.0 + x * (-1.0 / 40320.0);
+    const double q4 = 1.0 / 362880.0 + x * (-1.0 / 3628800.0), q5 = 1.0 / 39916800.0 + x * (-1.0 / 479001600.0);
+    const double r1 = q2 + x2 * q3, r2 = q4 + x2 * q5;
+    /* the small terms first, 1 last: the sum keeps their bits */
+    const double tail = (x2 * q1 + x4 * r1) + x8 * r2;
+    return 1.0 + (x * (-1.0 / 2.0) + tail);
 }
 
 /* Damping coefficient (N s/m) to apply over a step dt_s to a pair of reduced
