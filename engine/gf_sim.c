@@ -482,8 +482,7 @@ void gf_sim_destroy(gf_sim **ps)
     free(s->pair_meff), free(s->pair_sqrt_mk), free(s->wall_cand);
     free(s->sleep_quiet_steps);
     for (int t = 0; t < GF_SIM_MAX_THREADS; ++t)
-        for (int c = 0; c < 6; ++c)
-            free(s->acc[t].f[c]);
+        gf_soa_free(s->acc[t].f_block);
     free(s);
     *ps = NULL;
 }

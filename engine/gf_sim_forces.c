@@ -405,12 +405,16 @@ static gf_status reserve_accumulators(gf_sim *s, size_t n)
         gf_sim_accum *a = &s->acc[t];
         if (a->cap >= n)
             continue;
-        for (int c = 0; c < 6; ++c) {
-            double *q = realloc(a->f[c], (n + 1) * sizeof(double));
-            if (!q)
-                return GF_FAIL(s->ctx, GF_ERR_NOMEM, "sim: cannot allocate thread force buffers");
-            a->f[c] = q;
-        }
+        /* contents need not survive: each chunk clears its buffer before use */
+        void *fresh[6];
+        void *block = gf_soa_alloc(6, sizeof(double), n + 1, GF_SOA_LINE_SIM + 10 + 6 * (size_t)(t - 1), fresh,
+                                   NULL, 0);
+        if (!block)
+            return GF_FAIL(s->ctx, GF_ERR_NOMEM, "sim: cannot allocate thread force buffers");
+        gf_soa_free(a->f_block);
+        a->f_block = block;
+        for (int c = 0; c < 6; ++c)
+            a->f[c] = fresh[c];
         a->cap = n;
     }
     return GF_OK;

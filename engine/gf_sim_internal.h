@@ -33,6 +33,7 @@ typedef struct gf_gauge {
 /* Per-thread force accumulators (thread 0 writes the particle store). */
 typedef struct gf_sim_accum {
     double *f[6];
+    void *f_block; /* owns f[0..5], staggered (core/gf_soa.h) */
     size_t cap;
     double wall_force_N[GF_SIM_MAX_WALLS][3];
     size_t n_contacts;

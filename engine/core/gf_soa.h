@@ -20,9 +20,10 @@
 #include <stddef.h>
 
 /* Lines of shift of the first array of each block: the particle store's 19
- * arrays take lines 0-18, the simulation's own per-grain arrays (predicted
- * velocities, inverse masses...) follow, so that the two blocks do not
- * share sets either. */
+ * arrays take lines 0-18, the simulation's own ten per-grain arrays
+ * (predicted velocities, inverse masses...) lines 20-29 and the force
+ * buffers of the second and later threads six lines each from 30 on, so
+ * that the blocks do not share sets either. */
 enum { GF_SOA_LINE_PARTICLES = 0, GF_SOA_LINE_SIM = 20 };
 
 /* The block for n arrays of cap elements of elem_size bytes (elem_size a
