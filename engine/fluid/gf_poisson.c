@@ -107,30 +107,54 @@ void gf_poisson_solve_const(gf_poisson_plan *pl, const double *rhs, double *phi)
     memcpy(phi, pl->work, g->n_cells * sizeof(double));
 }
 
+/* The neighbour index of cell index m along axis d in direction dir (0: -1,
+ * 1: +1), wrapped on a periodic axis; -1 across a wall (zero flux). */
+static int stencil_neighbour(const gf_grid *g, int d, int m, int dir)
+{
+    if (!g->periodic[d] && (dir ? m == g->n[d] - 1 : m == 0))
+        return -1;
+    return gf_grid_wrap(g, d, m + (dir ? 1 : -1));
+}
+
+/* y = div(a grad x) on the cells, one row along x at a time: the y and z
+ * neighbour rows and face rows are found once per row, the x neighbours
+ * wrap only at the row's ends. The terms are summed in the same order for
+ * every cell (x-, x+, y-, y+, z-, z+), each a_f (x_nb - x_c)/h^2. */
 void gf_poisson_apply_var(const gf_grid *g, const double *const a[3], const double *x, double *y)
 {
+    const int n0 = g->n[0];
+    double ih2[3];
+    for (int d = 0; d < 3; ++d)
+        ih2[d] = 1.0 / (g->h_m[d] * g->h_m[d]);
+    const int xm0 = stencil_neighbour(g, 0, 0, 0), xp_last = stencil_neighbour(g, 0, n0 - 1, 1);
     for (int k = 0; k < g->n[2]; ++k)
-        for (int j = 0; j < g->n[1]; ++j)
-            for (int i = 0; i < g->n[0]; ++i) {
-                int idx[3] = {i, j, k};
-                size_t c = gf_grid_cell(g, i, j, k);
-                double s = 0.0;
-                for (int d = 0; d < 3; ++d) {
-                    double ih2 = 1.0 / (g->h_m[d] * g->h_m[d]);
-                    for (int dir = 0; dir < 2; ++dir) {
-                        int m = idx[d] + (dir ? 1 : -1);
-                        int face = idx[d] + dir;  /* face index along d */
-                        if (!g->periodic[d] && (face == 0 || face == g->n[d]))
-                            continue;  /* wall: zero flux */
-                        int nb[3] = {i, j, k}, fi[3] = {i, j, k};
-                        nb[d] = gf_grid_wrap(g, d, m);
-                        fi[d] = face;
-                        double af = a[d][gf_grid_face(g, d, fi[0], fi[1], fi[2])];
-                        s += af * (x[gf_grid_cell(g, nb[0], nb[1], nb[2])] - x[c]) * ih2;
-                    }
-                }
-                y[c] = s;
+        for (int j = 0; j < g->n[1]; ++j) {
+            const double *xr = x + gf_grid_cell(g, 0, j, k);
+            const double *ax = a[0] + gf_grid_face(g, 0, 0, j, k);
+            int nb[4] = {stencil_neighbour(g, 1, j, 0), stencil_neighbour(g, 1, j, 1), stencil_neighbour(g, 2, k, 0),
+                         stencil_neighbour(g, 2, k, 1)};
+            const double *xn[4], *an[4];
+            for (int q = 0; q < 4; ++q) {
+                int d = 1 + q / 2, dir = q % 2, jj = d == 1 ? nb[q] : j, kk = d == 2 ? nb[q] : k;
+                int fj = d == 1 ? j + dir : j, fk = d == 2 ? k + dir : k;
+                xn[q] = nb[q] < 0 ? NULL : x + gf_grid_cell(g, 0, jj, kk);
+                an[q] = a[d] + gf_grid_face(g, d, 0, fj, fk);
             }
+            double *yr = y + gf_grid_cell(g, 0, j, k);
+            for (int i = 0; i < n0; ++i) {
+                const double xc = xr[i];
+                double s = 0.0;
+                int im = i > 0 ? i - 1 : xm0, ip = i < n0 - 1 ? i + 1 : xp_last;
+                if (im >= 0)
+                    s += ax[i] * (xr[im] - xc) * ih2[0];
+                if (ip >= 0)
+                    s += ax[i + 1] * (xr[ip] - xc) * ih2[0];
+                for (int q = 0; q < 4; ++q)
+                    if (xn[q])
+                        s += an[q][i] * (xn[q][i] - xc) * ih2[1 + q / 2];
+                yr[i] = s;
+            }
+        }
 }
 
 static double dot(const double *a, const double *b, size_t n)
