@@ -42,6 +42,12 @@ typedef struct gf_kernel {
 void gf_average_kernel(const gf_grid *g, double sigma_m, const double x_m[3], gf_kernel *k);
 /* sum_cells w field[cell] */
 double gf_average_interpolate(const gf_grid *g, const gf_kernel *k, const double *field);
+/* out[f] = gf_average_interpolate(g, k, fields[f]) for f < n_fields (at most
+ * GF_AVERAGE_MAX_FIELDS), bitwise, in one pass over the kernel's support:
+ * the weights are formed once for all fields. */
+enum { GF_AVERAGE_MAX_FIELDS = 8 };
+void gf_average_interpolate_fields(const gf_grid *g, const gf_kernel *k, const double *const *fields, int n_fields,
+                                   double *out);
 /* field[cell] += value w / V_cell (a density) */
 void gf_average_spread(const gf_grid *g, const gf_kernel *k, double value, double *field);
 /* sum_cells w^2 (self-overlap of the kernel, 1/cells) */

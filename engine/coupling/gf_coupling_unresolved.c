@@ -730,10 +730,11 @@ gf_status gf_coupling_fluid_step(gf_coupling *c, const gf_particles *p, double d
     double vc = g->h_m[0] * g->h_m[1] * g->h_m[2];
     for (size_t i = 0; i < p->n_local; ++i) {
         const gf_kernel *k = &c->kern[i];
-        double uf[3];
-        for (int a = 0; a < 3; ++a)
-            uf[a] = gf_average_interpolate(g, k, c->uc[a]);
-        double eps_i = gf_average_interpolate(g, k, f->eps);
+        const double *const at_grain[4] = {c->uc[0], c->uc[1], c->uc[2], f->eps};
+        double v[4];
+        gf_average_interpolate_fields(g, k, at_grain, 4, v);
+        double uf[3] = {v[0], v[1], v[2]};
+        double eps_i = v[3];
         double vi = grain_volume(p, i);
         double own = vi * gf_average_self_overlap(k) / vc;  /* own contribution to 1 - eps at the centre */
         double phi_i = 1.0 - eps_i;
@@ -772,9 +773,12 @@ gf_status gf_coupling_fluid_step(gf_coupling *c, const gf_particles *p, double d
         const gf_kernel *k = &c->kern[i];
         held_grain *hg = &c->held[i];
         double vi = grain_volume(p, i);
+        const double *const at_grain[6] = {c->uc[0], c->uc[1], c->uc[2], c->gp[0], c->gp[1], c->gp[2]};
+        double v[6];
+        gf_average_interpolate_fields(g, k, at_grain, 6, v);
         for (int a = 0; a < 3; ++a) {
-            hg->uf[a] = gf_average_interpolate(g, k, c->uc[a]);
-            double gpa = gf_average_interpolate(g, k, c->gp[a]);
+            hg->uf[a] = v[a];
+            double gpa = v[3 + a];
             /* -V grad p' - V rho_f g (hydrostatic part) + V G (mean gradient) */
             hg->f_other_N[a] = vi * (-gpa - c->rho_f * c->setup.gravity_m_s2[a] + c->mean_gradp[a]);
         }
