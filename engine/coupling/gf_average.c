@@ -57,15 +57,8 @@ void gf_average_kernel(const gf_grid *g, double sigma_m, const double x_m[3], gf
 
 double gf_average_interpolate(const gf_grid *g, const gf_kernel *k, const double *field)
 {
-    double s = 0.0;
-    const gf_kernel_1d *kx = &k->ax[0], *ky = &k->ax[1], *kz = &k->ax[2];
-    for (int c = 0; c < kz->n; ++c)
-        for (int b = 0; b < ky->n; ++b) {
-            double wyz = ky->w[b] * kz->w[c];
-            size_t row = gf_grid_cell(g, 0, ky->cell[b], kz->cell[c]);
-            for (int a = 0; a < kx->n; ++a)
-                s += wyz * kx->w[a] * field[row + (size_t)kx->cell[a]];
-        }
+    double s;
+    gf_average_interpolate_fields(g, k, &field, 1, &s);
     return s;
 }
 

@@ -55,7 +55,8 @@ gf_status gf_particles_reserve(gf_ctx *ctx, gf_particles *p, size_t n)
     void *old[N_FIELDS], *fresh[N_FIELDS];
     for (int a = 0; a < N_FIELDS; ++a)
         old[a] = *field[a];
-    void *block = gf_soa_alloc(N_FIELDS, sizeof(double), cap, GF_SOA_LINE_PARTICLES, fresh, old, p->n_local + p->n_ghost);
+    void *block =
+        gf_soa_alloc(N_FIELDS, sizeof(double), cap, GF_SOA_LINE_PARTICLES, fresh, old, p->n_local + p->n_ghost);
     int ok = block != NULL && grow((void **)&p->flags, sizeof(uint8_t), cap);
     if (block) {
         for (int a = 0; a < N_FIELDS; ++a)
