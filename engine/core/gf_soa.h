@@ -8,11 +8,11 @@
  * 64 sets on Zen 5; 32 KiB, 8 ways on most others). A kernel that touches
  * element i of more arrays than the cache has ways (the integrator reads
  * and writes 15-20 per grain; the contact force reads 10 of each partner)
- * then evicts its own lines, and loads that follow stores 4 KiB apart stall
- * on false store-forwarding ("4K aliasing", Intel optimisation manual
- * §3.6.8; AMD software optimisation guide for family 1Ah, §2.12).
- * Staggering the arrays by one line each puts element i of up to 64 arrays
- * in distinct sets.
+ * then evicts its own lines, and loads that follow stores 4 KiB apart may
+ * stall on a false store-forwarding match ("4K aliasing" in the x86 vendors'
+ * optimisation manuals). Staggering the arrays by one line each puts
+ * element i of up to 64 arrays in distinct sets (docs/benchmarks.md, "Per-grain
+ * arrays staggered by a cache line": about +5 % on a bed of 1e5 grains).
  */
 #ifndef GF_SOA_H
 #define GF_SOA_H
