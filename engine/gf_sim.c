@@ -354,6 +354,7 @@ static gf_status create_coupling(gf_sim *s)
                                                            : GF_BC_NO_SLIP;
     }
     GF_TRY(gf_coupling_create(s->ctx, &s->spec, &setup, &s->coupling));
+    gf_coupling_set_threads(s->coupling, s->n_threads);
     choose_substeps(s);
     s->next_fluid_step = s->step;
     return GF_OK;

@@ -34,6 +34,11 @@ typedef struct gf_coupling_setup {
 gf_status gf_coupling_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_coupling_setup *setup,
                              gf_coupling **out);
 void gf_coupling_destroy(gf_coupling **c);
+/* OpenMP threads for the fluid step's per-grain loops (default 1). The
+ * results do not depend on it: each grain's values are computed alone, and
+ * what is summed over grains (the drag spread to the cells) stays in grain
+ * order on one thread. */
+void gf_coupling_set_threads(gf_coupling *c, int n_threads);
 
 /* Largest stable fluid step for the current state (CFL, viscous, drag relaxation), s. */
 double gf_coupling_dt_max_s(const gf_coupling *c, const gf_particles *p);

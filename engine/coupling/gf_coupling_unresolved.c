@@ -105,6 +105,8 @@
 
 #define EPS_FLOOR 0.25  /* below any random packing's fluid fraction (0.36) after smoothing */
 #define SELF_CAP 0.5
+/* below this many grains the per-grain loops of the fluid step stay on one thread (thread start-up) */
+#define PARALLEL_MIN_GRAINS 1000
 #define OSEEN_LOG_RE0 (-3.0)
 #define OSEEN_DLOG_RE (7.0 / (OSEEN_N - 1))
 
@@ -289,6 +291,7 @@ gf_status gf_coupling_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_coup
     c->rho_f = fs->density_kg_m3;
     c->mu = fs->viscosity_Pa_s;
     c->first_step = 1;
+    c->n_threads = 1;
     c->dt_dem_s = gf_run_spec_dt_s(spec);
 
     gf_fluid_params fp = {.density_kg_m3 = c->rho_f, .viscosity_Pa_s = c->mu};
@@ -347,6 +350,11 @@ gf_status gf_coupling_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_coup
            g->n[0], g->n[1], g->n[2], g->h_m[0], g->h_m[1], g->h_m[2], c->sigma_m, gf_drag_name(law));
     *out = c;
     return GF_OK;
+}
+
+void gf_coupling_set_threads(gf_coupling *c, int n_threads)
+{
+    c->n_threads = n_threads > 1 ? n_threads : 1;
 }
 
 void gf_coupling_destroy(gf_coupling **pc)
@@ -728,24 +736,30 @@ gf_status gf_coupling_fluid_step(gf_coupling *c, const gf_particles *p, double d
     for (int a = 0; a < 3; ++a)
         memset(f->beta_v[a], 0, g->n_cells * sizeof(double));
     double vc = g->h_m[0] * g->h_m[1] * g->h_m[2];
-    for (size_t i = 0; i < p->n_local; ++i) {
+    const long n_grains = (long)p->n_local;
+#pragma omp parallel for num_threads(c->n_threads) if (c->n_threads > 1 && n_grains >= PARALLEL_MIN_GRAINS) \
+    schedule(static)
+    for (long i = 0; i < n_grains; ++i) {
         const gf_kernel *k = &c->kern[i];
         const double *const at_grain[4] = {c->uc[0], c->uc[1], c->uc[2], f->eps};
         double v[4];
         gf_average_interpolate_fields(g, k, at_grain, 4, v);
         double uf[3] = {v[0], v[1], v[2]};
         double eps_i = v[3];
-        double vi = grain_volume(p, i);
+        double vi = grain_volume(p, (size_t)i);
         double own = vi * gf_average_self_overlap(k) / vc;  /* own contribution to 1 - eps at the centre */
         double phi_i = 1.0 - eps_i;
         double share = phi_i > own ? own / phi_i : 1.0;
-        double K = grain_drag(c, p, i, uf, fmin(1.0, eps_i + own), share);
         held_grain *hg = &c->held[i];
         hg->id = p->id[i];
-        hg->K_kg_s = K;
+        hg->K_kg_s = grain_drag(c, p, (size_t)i, uf, fmin(1.0, eps_i + own), share);
         hg->eps = eps_i;
         hg->mass_kg = p->mass_kg[i];
         hg->phi1_x = NAN;
+    }
+    for (size_t i = 0; i < p->n_local; ++i) {  /* sums over grains: in grain order */
+        const gf_kernel *k = &c->kern[i];
+        const double K = c->held[i].K_kg_s;
         gf_average_spread(g, k, K, f->beta);
         gf_average_spread(g, k, K * p->vx_m_s[i], f->beta_v[0]);
         gf_average_spread(g, k, K * p->vy_m_s[i], f->beta_v[1]);
@@ -769,10 +783,12 @@ gf_status gf_coupling_fluid_step(gf_coupling *c, const gf_particles *p, double d
     /* 4. held fluid velocity and non-drag forces at each grain */
     cell_fields(c);
     pressure_gradient(c);
-    for (size_t i = 0; i < p->n_local; ++i) {
+#pragma omp parallel for num_threads(c->n_threads) if (c->n_threads > 1 && n_grains >= PARALLEL_MIN_GRAINS) \
+    schedule(static)
+    for (long i = 0; i < n_grains; ++i) {
         const gf_kernel *k = &c->kern[i];
         held_grain *hg = &c->held[i];
-        double vi = grain_volume(p, i);
+        double vi = grain_volume(p, (size_t)i);
         const double *const at_grain[6] = {c->uc[0], c->uc[1], c->uc[2], c->gp[0], c->gp[1], c->gp[2]};
         double v[6];
         gf_average_interpolate_fields(g, k, at_grain, 6, v);

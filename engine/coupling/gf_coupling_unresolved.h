@@ -41,6 +41,7 @@ struct gf_coupling {
     double mean_gradp[3];
     int ref_axis, ref_side;       /* pressure reference: mean p' = 0 over this face's cell layer (-1: domain mean) */
     int first_step;
+    int n_threads;                /* for the per-grain loops of the fluid step (gf_coupling_set_threads) */
     gf_kernel *kern;
     held_grain *held;
     size_t cap, n_held;

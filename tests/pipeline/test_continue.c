@@ -146,13 +146,13 @@ static void same_file(const char *a, const char *b, const char *name)
 /* Runs spec into co->run_dir and interrupts it after delay_s of wall time
  * (as SIGTERM from a batch system would): a shorter delay again if a faster
  * moment of a shared machine finished the run first, a longer one if the cut
- * fell in the scene's preparation (nothing to continue yet). Ends with *res
- * of the last attempt. */
+ * came before the first step (nothing to continue yet). Ends with *res of
+ * the last attempt. */
 static void interrupt_at(gf_ctx *ctx, const gf_run_spec *spec, const gf_run_exec_opts *co, double delay_s,
                          gf_run_result *res)
 {
     const char *dir = co->run_dir;
-    for (int attempt = 0; attempt < 8; ++attempt) {
+    for (int attempt = 0; attempt < 12; ++attempt) {
         /* each attempt in a clean directory: a run that finished first
          * leaves its diagnostics.nc, which an interrupted fresh run keeps
          * (its own files stay .partial) */
@@ -164,13 +164,15 @@ static void interrupt_at(gf_ctx *ctx, const gf_run_spec *spec, const gf_run_exec
         interrupt_flag = 0;
         setitimer(ITIMER_REAL, &it, NULL);
         GF_CHECK_OK(gf_run_execute(ctx, spec, co, res), ctx);
-        int in_prep = res->status == GF_ERR_INTERRUPTED && !exists(dir, "checkpoint.h5");
+        /* a cut before the first step (in the preparation, or with a checkpoint at t = 0) leaves nothing to
+         * tell a continued run from a fresh one */
+        int early = res->status == GF_ERR_INTERRUPTED && (!exists(dir, "checkpoint.h5") || !(res->sim_time_s > 0.0));
         printf("%s: cut after %.3f s: %s\n", spec->run_id, delay_s,
-               res->status == GF_OK ? "finished first" : in_prep ? "interrupted in the preparation" : "interrupted");
+               res->status == GF_OK ? "finished first" : early ? "interrupted before the first step" : "interrupted");
         if (res->status == GF_OK)
             delay_s *= 0.5;
-        else if (in_prep)
-            delay_s *= 1.5;
+        else if (early)
+            delay_s *= 2.0;
         else
             return;
     }
