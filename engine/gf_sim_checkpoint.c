@@ -103,8 +103,11 @@ gf_status gf_sim_checkpoint(gf_sim *s, const char *path)
     gf_restart *r = NULL;
     GF_TRY(gf_restart_create(s->ctx, path, &r));
     gf_status st = write_all(s, r);
-    gf_status st2 = gf_restart_close(&r);
-    return st != GF_OK ? st : st2;
+    if (st != GF_OK) {
+        gf_restart_abort(&r); /* the previous checkpoint stays */
+        return st;
+    }
+    return gf_restart_close(&r);
 }
 
 static gf_status read_all(gf_sim *s, gf_restart *r)

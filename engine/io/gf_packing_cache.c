@@ -120,12 +120,10 @@ static gf_status load(gf_ctx *ctx, const char *path, const char *key, const doub
 static gf_status store(gf_ctx *ctx, const char *path, const char *key, const double *obs, size_t n_obs,
                        const gf_particles *out, size_t first, const gf_packing_result *res)
 {
-    char tmp[4240];
-    snprintf(tmp, sizeof tmp, "%s.%ld", path, (long)getpid());
     size_t n = out->n_local - first;
     double rv[RESULT_LEN] = {res->phi_global, res->phi_local, res->mu_prep, res->iterations, res->top_m, res->cpu_s};
     gf_restart *r = NULL;
-    GF_TRY(gf_restart_create(ctx, tmp, &r));
+    GF_TRY(gf_restart_create(ctx, path, &r)); /* written aside, renamed complete (io/gf_restart.h) */
     gf_status st = gf_restart_put_u8(r, "key", strlen(key), (const uint8_t *)key);
     if (st == GF_OK)
         st = gf_restart_put_f64(r, "obstacles", n_obs, obs);
@@ -139,13 +137,11 @@ static gf_status store(gf_ctx *ctx, const char *path, const char *key, const dou
         st = gf_restart_put_f64(r, "z", n, out->z_m + first);
     if (st == GF_OK)
         st = gf_restart_put_f64(r, "radius", n, out->radius_m + first);
-    gf_status cst = gf_restart_close(&r);
-    st = st != GF_OK ? st : cst;
-    if (st == GF_OK && rename(tmp, path) != 0)
-        st = GF_FAIL(ctx, GF_ERR_IO, "preparations: cannot rename %s to %s: %s", tmp, path, strerror(errno));
-    if (st != GF_OK)
-        remove(tmp);
-    return st;
+    if (st != GF_OK) {
+        gf_restart_abort(&r);
+        return st;
+    }
+    return gf_restart_close(&r);
 }
 
 gf_status gf_packing_build_cached(gf_ctx *ctx, const gf_packing_spec *sp, const char *dir, gf_particles *out,

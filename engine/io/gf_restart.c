@@ -5,12 +5,13 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 struct gf_restart {
     gf_ctx *ctx;
     hid_t file;
-    int writing;
-    char path[1024], tmp[1040];
+    int writing, failed; /* failed: a dataset could not be written, the file is not committed */
+    char path[1024], tmp[1064];
 };
 
 gf_status gf_restart_create(gf_ctx *ctx, const char *path, gf_restart **out)
@@ -22,7 +23,9 @@ gf_status gf_restart_create(gf_ctx *ctx, const char *path, gf_restart **out)
     r->ctx = ctx;
     r->writing = 1;
     snprintf(r->path, sizeof r->path, "%s", path);
-    snprintf(r->tmp, sizeof r->tmp, "%s.tmp", path);
+    /* one temporary name per process: workers of a campaign may write the
+     * same shared preparation at once, each renaming a complete file */
+    snprintf(r->tmp, sizeof r->tmp, "%s.tmp.%ld", path, (long)getpid());
     H5Eset_auto2(H5E_DEFAULT, NULL, NULL); /* errors become status codes, not stderr dumps */
     r->file = H5Fcreate(r->tmp, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
     if (r->file < 0) {
@@ -51,7 +54,7 @@ gf_status gf_restart_open(gf_ctx *ctx, const char *path, gf_restart **out)
     return GF_OK;
 }
 
-gf_status gf_restart_close(gf_restart **pr)
+static gf_status finish(gf_restart **pr, int commit)
 {
     if (!pr || !*pr)
         return GF_OK;
@@ -59,11 +62,28 @@ gf_status gf_restart_close(gf_restart **pr)
     gf_status st = GF_OK;
     if (H5Fclose(r->file) < 0)
         st = GF_FAIL(r->ctx, GF_ERR_IO, "checkpoint: cannot close %s", r->path);
-    if (st == GF_OK && r->writing && rename(r->tmp, r->path) != 0)
-        st = GF_FAIL(r->ctx, GF_ERR_IO, "checkpoint: cannot rename %s to %s", r->tmp, r->path);
+    if (r->writing) {
+        if (commit && r->failed && st == GF_OK)
+            st = GF_FAIL(r->ctx, GF_ERR_IO, "checkpoint: %s left as it was (a dataset could not be written)",
+                         r->path);
+        if (commit && st == GF_OK && rename(r->tmp, r->path) != 0)
+            st = GF_FAIL(r->ctx, GF_ERR_IO, "checkpoint: cannot rename %s to %s", r->tmp, r->path);
+        if (!commit || st != GF_OK)
+            remove(r->tmp);
+    }
     free(r);
     *pr = NULL;
     return st;
+}
+
+gf_status gf_restart_close(gf_restart **pr)
+{
+    return finish(pr, 1);
+}
+
+void gf_restart_abort(gf_restart **pr)
+{
+    finish(pr, 0);
 }
 
 static gf_status put(gf_restart *r, const char *name, size_t n, hid_t file_type, hid_t mem_type, const void *v)
@@ -75,8 +95,10 @@ static gf_status put(gf_restart *r, const char *name, size_t n, hid_t file_type,
     if (set >= 0)
         H5Dclose(set);
     H5Sclose(space);
-    if (set < 0 || e < 0)
+    if (set < 0 || e < 0) {
+        r->failed = 1;
         return GF_FAIL(r->ctx, GF_ERR_IO, "checkpoint %s: cannot write dataset '%s'", r->path, name);
+    }
     return GF_OK;
 }
 
