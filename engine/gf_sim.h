@@ -50,9 +50,9 @@ typedef struct gf_sim_options {
      * output, checkpoint and done() instants are steps of the clock
      * (gf_sim_run.c); > 0 fixes it (tests/pipeline/test_run_chunking.c). */
     int chunk_steps;
-    /* 1: the dry linear law runs in the scalar pair loop (engine/gf_sim_forces.c)
-     * instead of the blocked, vectorised one (gf_sim_pairs.c), which must give
-     * the same bits (tests/dem/test_pair_loops.c). */
+    /* 1: the linear law (with or without lubrication) runs in the scalar pair
+     * loop (engine/gf_sim_forces.c) instead of the blocked, vectorised one
+     * (gf_sim_pairs.c), which must give the same bits (tests/engine/test_pair_loops.c). */
     int generic_pair_loop;
 } gf_sim_options;
 
@@ -121,6 +121,13 @@ double gf_sim_excess_pressure_Pa(const gf_sim *sim, const double x_m[3]);
  * do not. S[6 k + c], c = xx, yy, zz, xy, xz, yz. Then P_G = tr(S)/3 and the
  * shear stress in the flow plane is -S_xy (> 0 resisting a flow towards +x). */
 gf_status gf_sim_stress_tensor_slabs(gf_sim *sim, double y0_m, double dy_m, int n_slabs, double *S_Pa);
+/* The same over the footprint {x_lo, x_hi, z_lo, z_hi} only: each branch
+ * segment counts by the fraction of its length inside the footprint and the
+ * slab (so contacts with grains outside, e.g. the glued grains of a wall
+ * behind the footprint's edge, count up to the edge), the kinetic part by
+ * grain centre, V_k = footprint area x dy. */
+gf_status gf_sim_stress_tensor_slabs_in(gf_sim *sim, const double footprint_m[4], double y0_m, double dy_m,
+                                        int n_slabs, double *S_Pa);
 
 /* Mechanical energy of the mobile grains (gf_sim_energy.c): kinetic,
  * rotational, buoyant-weight potential, and the elastic energy stored in the

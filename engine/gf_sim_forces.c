@@ -465,10 +465,8 @@ gf_status gf_sim_compute_forces(gf_sim *s)
                 pair_rows_linear_normal(s, i0, i1, f, a);
             else if (s->law->kernel == gf_contact_linear && s->opt.generic_pair_loop)
                 pair_rows_linear(s, i0, i1, f, a);
-            else if (s->law->kernel == gf_contact_linear && !s->lubrication)
-                gf_sim_pair_rows_dry_linear(s, i0, i1, f, a);
             else if (s->law->kernel == gf_contact_linear)
-                pair_rows_linear(s, i0, i1, f, a);
+                gf_sim_pair_rows_blocked_linear(s, i0, i1, f, a);
             else
                 pair_rows_table(s, i0, i1, f, a);
             wall_rows(s, i0, i1, f, a);

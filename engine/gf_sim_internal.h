@@ -115,10 +115,10 @@ struct gf_sim {
 /* Evaluates contact (+ lubrication) forces and wall forces at the current
  * state into the particle store (cleared first). gf_sim_forces.c. */
 gf_status gf_sim_compute_forces(gf_sim *s);
-/* Grain-grain contacts of rows [i0, i1) of the list into f[0..5] (fx..tz),
- * for the linear law without lubrication: the blocked, vectorised loop of
- * gf_sim_pairs.c, bitwise the generic loop's results. */
-void gf_sim_pair_rows_dry_linear(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_sim_accum *acc);
+/* Grain-grain contacts (and lubrication, when on) of rows [i0, i1) of the
+ * list into f[0..5] (fx..tz), for the linear law: the blocked, vectorised
+ * loop of gf_sim_pairs.c, bitwise the generic loop's results. */
+void gf_sim_pair_rows_blocked_linear(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_sim_accum *acc);
 /* Rebuilds the neighbour list from the current positions (wrapping periodic
  * axes first). gf_sim_forces.c. */
 gf_status gf_sim_rebuild(gf_sim *s);

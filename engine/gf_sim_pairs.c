@@ -1,15 +1,17 @@
 /*
- * The dry linear pair loop (the seeds' law without lubrication), in blocks of
- * GF_PAIR_BLOCK contacts and three passes per block, so that the costly part
- * runs without branches and without scattered stores:
+ * The linear pair loop (the seeds' law, with or without Brenner lubrication),
+ * in blocks of GF_PAIR_BLOCK candidates and three passes per block, so that
+ * the costly part runs without branches and without scattered stores:
  *   1. scan: distance test of every neighbour pair of the rows; pairs in
- *      contact are appended (branch-free compaction) with their pair vector;
- *      separated pairs forget their history (gf_nlist.h);
+ *      contact (or, with lubrication, within the lubrication range) are
+ *      appended (branch-free compaction) with their pair vector; pairs beyond
+ *      it forget their history (gf_nlist.h);
  *   2. compute: geometry, linear normal force and tangential spring of each
- *      contact (the same expressions, in the same order, as
- *      gf_contact_linear_inline: bitwise the results of the generic loop),
- *      with selects instead of branches, into per-contact arrays; a loop with
- *      no dependence between contacts, vectorised (`omp simd`);
+ *      contact, and the lubrication damping of each candidate within its range
+ *      (the same expressions, in the same order, as gf_contact_linear_inline
+ *      and gf_lubrication_damping: bitwise the results of the generic loop),
+ *      with selects instead of branches, into per-candidate arrays; a loop with
+ *      no dependence between candidates, vectorised (`omp simd`);
  *   3. scatter: the forces and torques are added to i (row sums) and
  *      subtracted from j in list order, exactly the order of the generic
  *      loop (gf_sim_forces.c), so the sums are bitwise the same.
@@ -17,9 +19,11 @@
  * Glued and sleeping grains (rare) take the decisions of the generic loop in
  * the scan; pairs of two frozen grains are skipped with their history kept.
  */
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
+#include "contact/gf_lubrication.h"
 #include "gf_sim_internal.h"
 
 #ifdef _OPENMP
@@ -67,6 +71,7 @@ typedef struct row_sums {
 static inline __attribute__((always_inline)) size_t scan_impl(const gf_sim *s, size_t *pk, size_t k1, pair_block *b,
                                                               const int flagged)
 {
+    const double lub_cut = s->lubrication ? s->lub_cutoff_m : 0.0; /* rsum + 0.0 is rsum: the dry test unchanged */
     const gf_particles *p = s->p;
     const gf_nlist *nl = s->nl;
     const double *x = p->x_m, *y = p->y_m, *z = p->z_m, *R = p->radius_m;
@@ -79,8 +84,8 @@ static inline __attribute__((always_inline)) size_t scan_impl(const gf_sim *s, s
         const int32_t i = nl->i[k], j = nl->j[k];
         const double *sh = nl->shift_m[nl->image[k]];
         double dx = x[i] - x[j] + sh[0], dy = y[i] - y[j] + sh[1], dz = z[i] - z[j] + sh[2];
-        double r2 = dx * dx + dy * dy + dz * dz, rsum = R[i] + R[j];
-        int in = r2 < rsum * rsum;
+        double r2 = dx * dx + dy * dy + dz * dz, rsum = R[i] + R[j], reach = rsum + lub_cut;
+        int in = r2 < reach * reach;
         const uint8_t fi = flagged ? flags[i] : 0, fl = flagged ? fi | flags[j] : 0;
         if (fl) { /* glued or sleeping: the generic loop's decisions */
             const uint8_t frozen = GF_P_GLUED | GF_P_SLEEPING;
@@ -114,14 +119,16 @@ static size_t scan_flagged(const gf_sim *s, size_t *pk, size_t k1, pair_block *b
  * gf_contact_tangential_inline, equations in gf_contact.h, written with
  * selects). A candidate whose overlap rounds to <= 0 gets no force and a
  * zero history, as in the generic loop. */
-GF_PAIR_CLONES static void compute(const gf_sim *s, pair_block *restrict b, size_t nc)
+static inline __attribute__((always_inline)) void compute_impl(const gf_sim *s, pair_block *restrict b, size_t nc,
+                                                               const int lub)
 {
     const gf_particles *p = s->p;
     const double *restrict R = p->radius_m;
     const double *restrict vpx = s->vx_pred, *restrict vpy = s->vy_pred, *restrict vpz = s->vz_pred;
     const double *restrict vx = p->vx_m_s, *restrict vy = p->vy_m_s, *restrict vz = p->vz_m_s;
     const double *restrict wx = p->wx_rad_s, *restrict wy = p->wy_rad_s, *restrict wz = p->wz_rad_s;
-    const double *restrict sqrt_mk = s->pair_sqrt_mk;
+    const double *restrict sqrt_mk = s->pair_sqrt_mk, *restrict meff = s->pair_meff;
+    const double lub_cut = s->lub_cutoff_m, eta = s->lub_eta_Pa_s, rough = s->lub_roughness_m;
     double *restrict hx = s->nl->hist, *restrict hy = hx + 1, *restrict hz = hx + 2; /* disjoint elements */
     const double dt = s->dt_s, mu = s->cp.mu_grain, k_n = s->cp.k_n_N_m, two_zeta = 2.0 * s->cp.zeta;
     const double k_t = s->cp.kt_over_kn * s->cp.k_n_N_m, inv_k = k_t > 0.0 ? 1.0 / k_t : 0.0;
@@ -167,12 +174,35 @@ GF_PAIR_CLONES static void compute(const gf_sim *s, pair_block *restrict b, size
         f_n = touch ? f_n : 0.0;
         t0 = touch ? t0 : 0.0, t1 = touch ? t1 : 0.0, t2 = touch ? t2 : 0.0;
         hx[k3] = touch ? h0 : 0.0, hy[k3] = touch ? h1 : 0.0, hz[k3] = touch ? h2 : 0.0;
-        b->fx[c] = f_n * n0 + t0, b->fy[c] = f_n * n1 + t1, b->fz[c] = f_n * n2 + t2;
+        double F0 = f_n * n0 + t0, F1 = f_n * n1 + t1, F2 = f_n * n2 + t2;
+        if (lub) { /* Brenner damping, gf_lubrication_damping with selects (gap clamped at 0 in overlap) */
+            double gap = overlap > 0.0 ? 0.0 : -overlap, reff = ri * rj / b->rsum[c], m = meff[k];
+            double c_b = 6.0 * M_PI * eta * reff * reff / (gap + rough);
+            double xl = c_b * dt / m, cap = 0.25 * m / dt;
+            double c_eff = c_b * gf_lubrication_phi1(xl);
+            c_eff = c_eff < cap ? c_eff : cap;
+            c_eff = xl >= 0.29 ? cap : c_eff;
+            c_eff = (m > 0.0 && m <= DBL_MAX) ? c_eff : c_b; /* not a finite positive mass: undamped Brenner */
+            double cl = -c_eff * v_n;
+            int in_range = gap <= lub_cut;
+            F0 = in_range ? F0 + cl * n0 : F0, F1 = in_range ? F1 + cl * n1 : F1, F2 = in_range ? F2 + cl * n2 : F2;
+        }
+        b->fx[c] = F0, b->fy[c] = F1, b->fz[c] = F2;
         double x0 = n1 * t2 - n2 * t1, x1 = n2 * t0 - n0 * t2, x2 = n0 * t1 - n1 * t0; /* n x F_t */
         b->ti[0][c] = ri * x0, b->ti[1][c] = ri * x1, b->ti[2][c] = ri * x2;
         b->tj[0][c] = rj * x0, b->tj[1][c] = rj * x1, b->tj[2][c] = rj * x2;
         b->overlap[c] = overlap;
     }
+}
+
+GF_PAIR_CLONES static void compute_dry(const gf_sim *s, pair_block *restrict b, size_t nc)
+{
+    compute_impl(s, b, nc, 0);
+}
+
+GF_PAIR_CLONES static void compute_lub(const gf_sim *s, pair_block *restrict b, size_t nc)
+{
+    compute_impl(s, b, nc, 1);
 }
 
 /* Pass 3: forces on i into the row sums, on j subtracted in place, in list order. */
@@ -204,7 +234,7 @@ static void scatter(const gf_sim *s, const pair_block *b, size_t nc, double *con
     acc->max_overlap_m = max_overlap;
 }
 
-void gf_sim_pair_rows_dry_linear(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_sim_accum *acc)
+void gf_sim_pair_rows_blocked_linear(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_sim_accum *acc)
 {
     pair_block b;
     row_sums rs = {.i = -1};
@@ -214,7 +244,10 @@ void gf_sim_pair_rows_dry_linear(gf_sim *s, size_t i0, size_t i1, double *const 
         any |= s->p->flags[g];
     while (k < k1) {
         size_t nc = any ? scan_flagged(s, &k, k1, &b) : scan_plain(s, &k, k1, &b);
-        compute(s, &b, nc);
+        if (s->lubrication)
+            compute_lub(s, &b, nc);
+        else
+            compute_dry(s, &b, nc);
         scatter(s, &b, nc, f, &rs, acc);
     }
 }

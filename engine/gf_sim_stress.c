@@ -14,7 +14,36 @@ static void add_dyad(double *S, double w, const double f[3], const double b[3])
     S[5] += w * 0.5 * (f[1] * b[2] + f[2] * b[1]);
 }
 
+/* Parameter interval [*t0, *t1] (narrowed) of the segment c0 + t dc, t in [0, 1], inside [lo, hi]. */
+static void clip_axis(double c0, double dc, double lo, double hi, double *t0, double *t1)
+{
+    if (dc == 0.0) {
+        if (c0 < lo || c0 > hi)
+            *t1 = *t0 - 1.0; /* empty */
+        return;
+    }
+    double ta = (lo - c0) / dc, tb = (hi - c0) / dc;
+    double a = ta < tb ? ta : tb, b = ta < tb ? tb : ta;
+    *t0 = a > *t0 ? a : *t0, *t1 = b < *t1 ? b : *t1;
+}
+
+static gf_status stress_slabs(gf_sim *s, const double *fp, double y0, double dy, int n, double *S);
+
 gf_status gf_sim_stress_tensor_slabs(gf_sim *s, double y0, double dy, int n, double *S)
+{
+    return stress_slabs(s, NULL, y0, dy, n, S);
+}
+
+gf_status gf_sim_stress_tensor_slabs_in(gf_sim *s, const double footprint_m[4], double y0, double dy, int n, double *S)
+{
+    if (!(footprint_m[1] > footprint_m[0]) || !(footprint_m[3] > footprint_m[2]))
+        return GF_FAIL(s->ctx, GF_ERR_ARG, "measure: stress footprint needs x_lo < x_hi and z_lo < z_hi");
+    return stress_slabs(s, footprint_m, y0, dy, n, S);
+}
+
+/* fp: NULL for the whole x-z footprint of the domain, else {x_lo, x_hi, z_lo, z_hi}: branch segments
+ * clipped to it, grains counted by centre. */
+static gf_status stress_slabs(gf_sim *s, const double *fp, double y0, double dy, int n, double *S)
 {
     gf_ctx *ctx = s->ctx;
     if (n < 1 || !(dy > 0.0))
@@ -23,7 +52,8 @@ gf_status gf_sim_stress_tensor_slabs(gf_sim *s, double y0, double dy, int n, dou
     const gf_nlist *nl = s->nl;
     if (!nl || nl->n != p->n_local)
         return GF_FAIL(ctx, GF_ERR_UNSUPPORTED, "measure: stress tensor needs a current neighbour list");
-    double area = (s->hi_m[0] - s->lo_m[0]) * (s->hi_m[2] - s->lo_m[2]), vol = area * dy;
+    double area = fp ? (fp[1] - fp[0]) * (fp[3] - fp[2]) : (s->hi_m[0] - s->lo_m[0]) * (s->hi_m[2] - s->lo_m[2]);
+    double vol = area * dy;
     memset(S, 0, (size_t)n * 6 * sizeof *S);
     /* contact part */
     gf_contact_params cp = s->cp;
@@ -60,6 +90,18 @@ gf_status gf_sim_stress_tensor_slabs(gf_sim *s, double y0, double dy, int n, dou
             double h[3] = {nl->hist[3 * k], nl->hist[3 * k + 1], nl->hist[3 * k + 2]}, f_n, f_t[3];
             s->law->kernel(&cp, &g, 0.0, h, &f_n, f_t); /* dt = 0: the stored spring, no increment */
             double f[3] = {f_n * g.n[0] + f_t[0], f_n * g.n[1] + f_t[1], f_n * g.n[2] + f_t[2]};
+            if (fp) { /* the part of the branch segment inside the footprint, shared among the slabs */
+                double t0 = 0.0, t1 = 1.0;
+                clip_axis(p->x_m[j], d[0], fp[0], fp[1], &t0, &t1);
+                clip_axis(p->z_m[j], d[2], fp[2], fp[3], &t0, &t1);
+                for (int q = 0; t1 > t0 && q < n; ++q) {
+                    double u0 = t0, u1 = t1;
+                    clip_axis(p->y_m[j], d[1], y0 + q * dy, y0 + (q + 1) * dy, &u0, &u1);
+                    if (u1 > u0)
+                        add_dyad(&S[6 * q], (u1 - u0) / vol, f, d);
+                }
+                continue;
+            }
             /* share f (x) b among the slabs the branch segment crosses */
             double ya = p->y_m[j], yb = p->y_m[j] + d[1];
             double lo = ya < yb ? ya : yb, hi = ya < yb ? yb : ya, len = hi - lo;
@@ -81,6 +123,8 @@ gf_status gf_sim_stress_tensor_slabs(gf_sim *s, double y0, double dy, int n, dou
         return GF_FAIL(ctx, GF_ERR_NOMEM, "measure: cannot allocate %d slabs", n);
     for (size_t i = 0; i < p->n_local; ++i) {
         if (p->flags[i] & GF_P_GLUED)
+            continue;
+        if (fp && (p->x_m[i] < fp[0] || p->x_m[i] > fp[1] || p->z_m[i] < fp[2] || p->z_m[i] > fp[3]))
             continue;
         int k = (int)floor((p->y_m[i] - y0) / dy);
         if (k < 0 || k >= n)

@@ -9,7 +9,10 @@
  *   - in a frictional settled bed of 1200 grains, 1 and 2 threads, 2000 steps
  *     from an unsettled stack (contacts made and broken, Coulomb slip);
  *   - in a column collapse on a rough base of glued grains (the scan's
- *     flagged path), 3000 steps after its pre-run settle.
+ *     flagged path), 3000 steps after its pre-run settle;
+ *   - in the same collapse immersed (unresolved fluid, Brenner lubrication
+ *     of every pair closer than R/2: the candidates then include near pairs
+ *     that do not touch), 1 and 2 threads.
  */
 #include <stdio.h>
 #include <string.h>
@@ -57,5 +60,13 @@ int main(void)
     col.contact.friction = 0.5;
     gf_run_spec_set_param(&ctx, &col, "column_length_over_D", 8.0);
     compare(&ctx, "column collapse", &col, 1, 3000);
+
+    gf_run_spec wet = col; /* the immersed collapse's fluid (configs/column_collapse_immersed.yaml) */
+    snprintf(wet.fluid.model, sizeof wet.fluid.model, "unresolved");
+    wet.fluid.density_kg_m3 = 0.125 * wet.grains.density_kg_m3, wet.fluid.viscosity_Pa_s = 0.05;
+    wet.fluid.lubrication = 1;
+    wet.fluid.roughness_over_R = 2e-4, wet.fluid.lub_cutoff_over_R = 0.5;
+    compare(&ctx, "immersed column collapse", &wet, 1, 3000);
+    compare(&ctx, "immersed column collapse", &wet, 2, 3000);
     return gf_test_finish();
 }

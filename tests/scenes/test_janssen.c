@@ -63,6 +63,7 @@ typedef struct {
     double c_tot, phi_int, top, side_eff, rho_e;     /* packing and effective section (m, kg/m3) */
     double s_inf, lambda, rms;                       /* Janssen fit (Pa, m, Pa) */
     double fpk, fpk_inv, fpk_inv_pg, fp, kk, loc;    /* f_p K: fit, inverse (2.13) two ways, local (2.14)-(2.15) */
+    double k_bulk, k_inner, loc_bulk;                /* K from the granular stress tensor (section, interior), f_p K */
     double s_low, d_low;                             /* lower half: mean stress (Pa) at mean depth (m) */
     double sig[NP];                                  /* vertical stress per 1 D slab */
     int n;                                           /* slabs */
@@ -182,6 +183,31 @@ static void local(double D, const double *shear, const double *normal, silo *o)
     o->loc = o->fp * o->kk;
 }
 
+/* K as the redirection of the granular stress tensor (2.11), sigma^p_xx = sigma^p_zz = K sigma^p_yy, with
+ * sigma^p coarse-grained (2.16)-(2.20) over footprint fp, summed over the 1 D slabs of the lower half that
+ * local() uses: (S_xx + S_zz) / (2 S_yy). */
+static double tensor_k(gf_sim *sim, const double fp[4], double D, const silo *o)
+{
+    static double S[6 * NP];
+    gf_ctx ctx = {0};
+    GF_CHECK_OK(gf_sim_stress_tensor_slabs_in(sim, fp, 0.0, D, o->n, S), &ctx);
+    double h = 0.0, v = 0.0;
+    for (int k = 3; k < o->n; ++k)
+        if ((k + 0.5) * D < 0.5 * o->top && o->sig[k] > 0.0)
+            h += 0.5 * (S[6 * k] + S[6 * k + 2]), v += S[6 * k + 1];
+    return h / v;
+}
+
+/* K from the tensor over the column's section [0, S]^2 (contacts with the glued grains counted up to the
+ * wall face) and over the interior 1.5 D inside the walls; f_p K with the former. */
+static void bulk_k(gf_sim *sim, double D, double S, silo *o)
+{
+    const double section[4] = {0.0, S, 0.0, S}, inner[4] = {1.5 * D, S - 1.5 * D, 1.5 * D, S - 1.5 * D};
+    o->k_bulk = tensor_k(sim, section, D, o);
+    o->k_inner = tensor_k(sim, inner, D, o);
+    o->loc_bulk = o->fp * o->k_bulk;
+}
+
 /* Measures one settled column: section, stress profile, the three f_p K estimates. */
 static void measure(gf_sim *sim, double side, silo *o)
 {
@@ -195,6 +221,7 @@ static void measure(gf_sim *sim, double side, silo *o)
     wall_loads(sim, S, o->n, shear, normal);
     fit(D, S, o);
     local(D, shear, normal, o);
+    bulk_k(sim, D, S, o);
     o->fpk = A / (perim * o->lambda);
     o->fpk_inv = o->rho_e * g * A / (o->s_inf * perim); /* the seed's inverse method (2.13), from the plateau */
     /* the seed's plateau is the mean pressure P_G = tr(sigma^p)/3; with Janssen's redirection
@@ -217,6 +244,9 @@ static void print_silo(double side, double fill, unsigned seed, double D, double
     printf("  local (2.14)-(2.15), lower half: f_p = wall shear / normal = %.3f (mu_c 0.25), K = wall normal / "
            "vertical = %.3f, f_p K = %.3f; seed 0.30 +- 0.06\n",
            o->fp, o->kk, o->loc);
+    printf("  K from the granular stress tensor (2.11), lower half: (S_xx + S_zz) / (2 S_yy) = %.3f over the "
+           "section, %.3f 1.5 D inside the walls; f_p K = %.3f with the section's\n",
+           o->k_bulk, o->k_inner, o->loc_bulk);
     printf("  sigma_yy by depth (d/D: Pa):");
     for (int k = o->n - 1; k >= 0; --k) {
         double dk = o->top - (k + 0.5) * D;
@@ -278,6 +308,9 @@ int main(int argc, char **argv)
     double fpk = over_seeds(o, ns, offsetof(silo, fpk), "f_p K fit (A / (P lambda))", 3);
     double inv = over_seeds(o, ns, offsetof(silo, fpk_inv), "f_p K inverse (2.13)", 3);
     double loc = over_seeds(o, ns, offsetof(silo, loc), "f_p K local (2.14)-(2.15)", 3);
+    over_seeds(o, ns, offsetof(silo, k_bulk), "K from sigma^p, section", 3);
+    over_seeds(o, ns, offsetof(silo, k_inner), "K from sigma^p, interior", 3);
+    over_seeds(o, ns, offsetof(silo, loc_bulk), "f_p K, K from sigma^p", 3);
     GF_CHECK(fpk >= 0.24 && fpk <= 0.36);
     GF_CHECK(inv >= 0.24 && inv <= 0.36);
     GF_CHECK(loc >= 0.24 && loc <= 0.36);
