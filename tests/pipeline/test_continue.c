@@ -146,13 +146,16 @@ static void same_file(const char *a, const char *b, const char *name)
 /* Runs spec into co->run_dir and interrupts it after delay_s of wall time
  * (as SIGTERM from a batch system would): a shorter delay again if a faster
  * moment of a shared machine finished the run first, a longer one if the cut
- * came before the first step (nothing to continue yet). Ends with *res of
- * the last attempt. */
+ * came before the first step (nothing to continue yet); once both have
+ * happened, the delay halfway between the latest of each (the stepping can
+ * be a short window after a long preparation, which doubling and halving
+ * would step over). Ends with *res of the last attempt. */
 static void interrupt_at(gf_ctx *ctx, const gf_run_spec *spec, const gf_run_exec_opts *co, double delay_s,
                          gf_run_result *res)
 {
     const char *dir = co->run_dir;
-    for (int attempt = 0; attempt < 12; ++attempt) {
+    double too_early = 0.0, too_late = 0.0; /* latest delays that cut before the first step / finished first */
+    for (int attempt = 0; attempt < 16; ++attempt) {
         /* each attempt in a clean directory: a run that finished first
          * leaves its diagnostics.nc, which an interrupted fresh run keeps
          * (its own files stay .partial) */
@@ -170,11 +173,15 @@ static void interrupt_at(gf_ctx *ctx, const gf_run_spec *spec, const gf_run_exec
         printf("%s: cut after %.3f s: %s\n", spec->run_id, delay_s,
                res->status == GF_OK ? "finished first" : early ? "interrupted before the first step" : "interrupted");
         if (res->status == GF_OK)
-            delay_s *= 0.5;
+            too_late = delay_s;
         else if (early)
-            delay_s *= 2.0;
+            too_early = delay_s;
         else
             return;
+        if (too_early > 0.0 && too_late > 0.0)
+            delay_s = 0.5 * (too_early + too_late);
+        else
+            delay_s *= res->status == GF_OK ? 0.5 : 2.0;
     }
 }
 
