@@ -69,9 +69,9 @@ typedef struct row_sums {
  * flagged = 0: no grain the rows reach is glued or sleeping (the common
  * case), so the flag tests are compiled out. */
 static inline __attribute__((always_inline)) size_t scan_impl(const gf_sim *s, size_t *pk, size_t k1, pair_block *b,
-                                                              const int flagged)
+                                                              const int flagged, const int lub)
 {
-    const double lub_cut = s->lubrication ? s->lub_cutoff_m : 0.0; /* rsum + 0.0 is rsum: the dry test unchanged */
+    const double lub_cut = s->lub_cutoff_m;
     const gf_particles *p = s->p;
     const gf_nlist *nl = s->nl;
     const double *x = p->x_m, *y = p->y_m, *z = p->z_m, *R = p->radius_m;
@@ -84,7 +84,7 @@ static inline __attribute__((always_inline)) size_t scan_impl(const gf_sim *s, s
         const int32_t i = nl->i[k], j = nl->j[k];
         const double *sh = nl->shift_m[nl->image[k]];
         double dx = x[i] - x[j] + sh[0], dy = y[i] - y[j] + sh[1], dz = z[i] - z[j] + sh[2];
-        double r2 = dx * dx + dy * dy + dz * dz, rsum = R[i] + R[j], reach = rsum + lub_cut;
+        double r2 = dx * dx + dy * dy + dz * dz, rsum = R[i] + R[j], reach = lub ? rsum + lub_cut : rsum;
         int in = r2 < reach * reach;
         const uint8_t fi = flagged ? flags[i] : 0, fl = flagged ? fi | flags[j] : 0;
         if (fl) { /* glued or sleeping: the generic loop's decisions */
@@ -105,14 +105,12 @@ static inline __attribute__((always_inline)) size_t scan_impl(const gf_sim *s, s
     return nc;
 }
 
-static size_t scan_plain(const gf_sim *s, size_t *pk, size_t k1, pair_block *b)
+/* The four cases compiled apart (flags seen or not, lubrication range or contact only). */
+static size_t scan(const gf_sim *s, size_t *pk, size_t k1, pair_block *b, int flagged)
 {
-    return scan_impl(s, pk, k1, b, 0);
-}
-
-static size_t scan_flagged(const gf_sim *s, size_t *pk, size_t k1, pair_block *b)
-{
-    return scan_impl(s, pk, k1, b, 1);
+    if (s->lubrication)
+        return flagged ? scan_impl(s, pk, k1, b, 1, 1) : scan_impl(s, pk, k1, b, 0, 1);
+    return flagged ? scan_impl(s, pk, k1, b, 1, 0) : scan_impl(s, pk, k1, b, 0, 0);
 }
 
 /* Pass 2: the force of each candidate (gf_contact_linear_inline and
@@ -243,7 +241,7 @@ void gf_sim_pair_rows_blocked_linear(gf_sim *s, size_t i0, size_t i1, double *co
     for (size_t g = i0; g < s->nl->n; ++g)
         any |= s->p->flags[g];
     while (k < k1) {
-        size_t nc = any ? scan_flagged(s, &k, k1, &b) : scan_plain(s, &k, k1, &b);
+        size_t nc = scan(s, &k, k1, &b, any != 0);
         if (s->lubrication)
             compute_lub(s, &b, nc);
         else
