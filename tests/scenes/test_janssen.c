@@ -63,6 +63,7 @@ enum { NP = 2000, NS = 16 };
 
 /* What one realisation measures. */
 typedef struct {
+    double shear[NP], normal[NP];                    /* wall loads per 1 D slab (N) */
     double c_tot, phi_int, top, side_eff, rho_e;     /* packing and effective section (m, kg/m3) */
     double s_inf, lambda, rms;                       /* Janssen fit (Pa, m, Pa) */
     double fpk, fpk_inv, fpk_inv_pg, fp, kk, loc;    /* f_p K: fit, inverse (2.13) two ways, local (2.14)-(2.15) */
@@ -220,10 +221,9 @@ static void measure(gf_sim *sim, double side, silo *o)
     double A = o->side_eff * o->side_eff, perim = 4.0 * o->side_eff;
     gf_ctx ctx = {0};
     GF_CHECK_OK(gf_measure_silo_vertical_stress(&ctx, gf_sim_particles(sim), g, A, 0.0, D, o->n, o->sig), &ctx);
-    static double shear[NP], normal[NP];
-    wall_loads(sim, S, o->n, shear, normal);
+    wall_loads(sim, S, o->n, o->shear, o->normal);
     fit(D, S, o);
-    local(D, shear, normal, o);
+    local(D, o->shear, o->normal, o);
     bulk_k(sim, D, S, o);
     o->fpk = A / (perim * o->lambda);
     o->fpk_inv = o->rho_e * g * A / (o->s_inf * perim); /* the seed's inverse method (2.13), from the plateau */
@@ -255,6 +255,15 @@ static void print_silo(double side, double fill, unsigned seed, double D, double
         double dk = o->top - (k + 0.5) * D;
         if (dk > 0 && ((int)(dk / D) % 4 == 0))
             printf(" %.0f:%.0f", dk / D, o->sig[k]);
+    }
+    /* bins of 11 slabs hold 10 glued rows (spacing 1.1 D) each */
+    printf("\n  local f_p K by height, bins of 11 D (y/D from-to: f_p, K, f_p K):");
+    for (int b0 = 3; b0 + 11 <= o->n && (b0 + 11) * D < o->top; b0 += 11) {
+        double sh = 0.0, no = 0.0, sg = 0.0;
+        for (int k = b0; k < b0 + 11; ++k)
+            sh += o->shear[k], no += o->normal[k], sg += o->sig[k];
+        double kk = no / (4.0 * o->side_eff * D * sg);
+        printf(" %d-%d: %.3f, %.3f, %.3f", b0, b0 + 11, sh / no, kk, sh / no * kk);
     }
     printf("\n  lower half: mean sigma %.1f Pa at mean depth %.1f D (hydrostatic %.1f Pa)\n", o->s_low,
            o->d_low / D, o->rho_e * g * o->d_low);
