@@ -48,6 +48,23 @@ double gf_average_interpolate(const gf_grid *g, const gf_kernel *k, const double
 enum { GF_AVERAGE_MAX_FIELDS = 8 };
 void gf_average_interpolate_fields(const gf_grid *g, const gf_kernel *k, const double *const *fields, int n_fields,
                                    double *out);
+/* The per-grain transfers of a fluid step with the cell fields interleaved,
+ * GF_AVERAGE_LANES values per cell (one cache line, one AVX-512 vector;
+ * unused lanes zero), so that each cell of a kernel is read or written once
+ * for all its fields. Bitwise the results of gf_average_interpolate_fields and
+ * of one gf_average_spread per field: every lane forms the same products and
+ * sums them in the same order. `lanes` holds n_cells * GF_AVERAGE_LANES
+ * doubles. */
+enum { GF_AVERAGE_LANES = 8 };
+/* lanes[cell][f] = fields[f][cell] for f < n_fields, 0 beyond */
+void gf_average_interleave(size_t n_cells, const double *const *fields, int n_fields, double *lanes);
+/* fields[f][cell] = lanes[cell][f] for f < n_fields */
+void gf_average_deinterleave(size_t n_cells, const double *lanes, int n_fields, double *const *fields);
+/* out[f] = sum_cells w lanes[cell][f], every lane */
+void gf_average_interpolate_lanes(const gf_grid *g, const gf_kernel *k, const double *lanes,
+                                  double out[GF_AVERAGE_LANES]);
+/* lanes[cell][f] += value[f] w / V_cell, every lane */
+void gf_average_spread_lanes(const gf_grid *g, const gf_kernel *k, const double value[GF_AVERAGE_LANES], double *lanes);
 /* field[cell] += value w / V_cell (a density) */
 void gf_average_spread(const gf_grid *g, const gf_kernel *k, double value, double *field);
 /* sum_cells w^2 (self-overlap of the kernel, 1/cells) */

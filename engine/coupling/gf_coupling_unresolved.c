@@ -334,6 +334,8 @@ gf_status gf_coupling_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_coup
     }
     for (int v = 0; v < FLD_N; ++v)
         ok &= (c->fields[v] = calloc(g->n_cells, sizeof(double))) != NULL;
+    /* a cell's lanes are one cache line: 64-byte aligned */
+    ok &= (c->lanes = aligned_alloc(64, g->n_cells * GF_AVERAGE_LANES * sizeof(double))) != NULL;
     if (!ok) {
         gf_coupling_destroy(&c);
         return GF_FAIL(ctx, GF_ERR_NOMEM, "coupling: out of memory for %zu cells", g->n_cells);
@@ -369,6 +371,7 @@ void gf_coupling_destroy(gf_coupling **pc)
     }
     for (int v = 0; v < FLD_N; ++v)
         free(c->fields[v]);
+    free(c->lanes);
     free(c->kern);
     free(c->held);
     free(c);
@@ -732,18 +735,16 @@ gf_status gf_coupling_fluid_step(gf_coupling *c, const gf_particles *p, double d
 
     /* 2. drag coefficients at the current state, spread to beta and beta v */
     cell_fields(c);
-    memset(f->beta, 0, g->n_cells * sizeof(double));
-    for (int a = 0; a < 3; ++a)
-        memset(f->beta_v[a], 0, g->n_cells * sizeof(double));
     double vc = g->h_m[0] * g->h_m[1] * g->h_m[2];
     const long n_grains = (long)p->n_local;
+    const double *const at_grain[4] = {c->uc[0], c->uc[1], c->uc[2], f->eps};
+    gf_average_interleave(g->n_cells, at_grain, 4, c->lanes);
 #pragma omp parallel for num_threads(c->n_threads) if (c->n_threads > 1 && n_grains >= PARALLEL_MIN_GRAINS) \
     schedule(static)
     for (long i = 0; i < n_grains; ++i) {
         const gf_kernel *k = &c->kern[i];
-        const double *const at_grain[4] = {c->uc[0], c->uc[1], c->uc[2], f->eps};
-        double v[4];
-        gf_average_interpolate_fields(g, k, at_grain, 4, v);
+        double v[GF_AVERAGE_LANES];
+        gf_average_interpolate_lanes(g, k, c->lanes, v);
         double uf[3] = {v[0], v[1], v[2]};
         double eps_i = v[3];
         double vi = grain_volume(p, (size_t)i);
@@ -757,14 +758,14 @@ gf_status gf_coupling_fluid_step(gf_coupling *c, const gf_particles *p, double d
         hg->mass_kg = p->mass_kg[i];
         hg->phi1_x = NAN;
     }
+    memset(c->lanes, 0, g->n_cells * GF_AVERAGE_LANES * sizeof(double));
     for (size_t i = 0; i < p->n_local; ++i) {  /* sums over grains: in grain order */
-        const gf_kernel *k = &c->kern[i];
         const double K = c->held[i].K_kg_s;
-        gf_average_spread(g, k, K, f->beta);
-        gf_average_spread(g, k, K * p->vx_m_s[i], f->beta_v[0]);
-        gf_average_spread(g, k, K * p->vy_m_s[i], f->beta_v[1]);
-        gf_average_spread(g, k, K * p->vz_m_s[i], f->beta_v[2]);
+        const double value[GF_AVERAGE_LANES] = {K, K * p->vx_m_s[i], K * p->vy_m_s[i], K * p->vz_m_s[i]};
+        gf_average_spread_lanes(g, &c->kern[i], value, c->lanes);
     }
+    double *const beta_fields[4] = {f->beta, f->beta_v[0], f->beta_v[1], f->beta_v[2]};
+    gf_average_deinterleave(g->n_cells, c->lanes, 4, beta_fields);
     c->n_held = p->n_local;
 
     /* 3. fluid: body force = mean pressure gradient only (gravity is in p_h) */
@@ -783,15 +784,16 @@ gf_status gf_coupling_fluid_step(gf_coupling *c, const gf_particles *p, double d
     /* 4. held fluid velocity and non-drag forces at each grain */
     cell_fields(c);
     pressure_gradient(c);
+    const double *const at_grain_after[6] = {c->uc[0], c->uc[1], c->uc[2], c->gp[0], c->gp[1], c->gp[2]};
+    gf_average_interleave(g->n_cells, at_grain_after, 6, c->lanes);
 #pragma omp parallel for num_threads(c->n_threads) if (c->n_threads > 1 && n_grains >= PARALLEL_MIN_GRAINS) \
     schedule(static)
     for (long i = 0; i < n_grains; ++i) {
         const gf_kernel *k = &c->kern[i];
         held_grain *hg = &c->held[i];
         double vi = grain_volume(p, (size_t)i);
-        const double *const at_grain[6] = {c->uc[0], c->uc[1], c->uc[2], c->gp[0], c->gp[1], c->gp[2]};
-        double v[6];
-        gf_average_interpolate_fields(g, k, at_grain, 6, v);
+        double v[GF_AVERAGE_LANES];
+        gf_average_interpolate_lanes(g, k, c->lanes, v);
         for (int a = 0; a < 3; ++a) {
             hg->uf[a] = v[a];
             double gpa = v[3 + a];

@@ -47,6 +47,7 @@ struct gf_coupling {
     size_t cap, n_held;
     double *uc[3], *gp[3];        /* cell-centred velocity and excess-pressure gradient */
     double *fields[FLD_N];
+    double *lanes;                /* cell fields interleaved for the per-grain transfers (gf_average.h) */
     gf_coupling_stats stats;
 };
 
