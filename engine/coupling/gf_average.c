@@ -57,29 +57,16 @@ void gf_average_kernel(const gf_grid *g, double sigma_m, const double x_m[3], gf
 
 double gf_average_interpolate(const gf_grid *g, const gf_kernel *k, const double *field)
 {
-    double s;
-    gf_average_interpolate_fields(g, k, &field, 1, &s);
-    return s;
-}
-
-void gf_average_interpolate_fields(const gf_grid *g, const gf_kernel *k, const double *const *fields, int n_fields,
-                                   double *out)
-{
-    double s[GF_AVERAGE_MAX_FIELDS] = {0.0};
+    double s = 0.0;
     const gf_kernel_1d *kx = &k->ax[0], *ky = &k->ax[1], *kz = &k->ax[2];
     for (int c = 0; c < kz->n; ++c)
         for (int b = 0; b < ky->n; ++b) {
             double wyz = ky->w[b] * kz->w[c];
             size_t row = gf_grid_cell(g, 0, ky->cell[b], kz->cell[c]);
-            for (int a = 0; a < kx->n; ++a) {
-                const double w = wyz * kx->w[a];
-                const size_t cell = row + (size_t)kx->cell[a];
-                for (int f = 0; f < n_fields; ++f)
-                    s[f] += w * fields[f][cell];
-            }
+            for (int a = 0; a < kx->n; ++a)
+                s += wyz * kx->w[a] * field[row + (size_t)kx->cell[a]];
         }
-    for (int f = 0; f < n_fields; ++f)
-        out[f] = s[f];
+    return s;
 }
 
 /* The lane loops vectorise in an AVX-512 clone chosen at load time (one

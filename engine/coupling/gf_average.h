@@ -42,17 +42,11 @@ typedef struct gf_kernel {
 void gf_average_kernel(const gf_grid *g, double sigma_m, const double x_m[3], gf_kernel *k);
 /* sum_cells w field[cell] */
 double gf_average_interpolate(const gf_grid *g, const gf_kernel *k, const double *field);
-/* out[f] = gf_average_interpolate(g, k, fields[f]) for f < n_fields (at most
- * GF_AVERAGE_MAX_FIELDS), bitwise, in one pass over the kernel's support:
- * the weights are formed once for all fields. */
-enum { GF_AVERAGE_MAX_FIELDS = 8 };
-void gf_average_interpolate_fields(const gf_grid *g, const gf_kernel *k, const double *const *fields, int n_fields,
-                                   double *out);
 /* The per-grain transfers of a fluid step with the cell fields interleaved,
  * GF_AVERAGE_LANES values per cell (one cache line, one AVX-512 vector;
  * unused lanes zero), so that each cell of a kernel is read or written once
- * for all its fields. Bitwise the results of gf_average_interpolate_fields and
- * of one gf_average_spread per field: every lane forms the same products and
+ * for all its fields. Bitwise the results of one gf_average_interpolate and
+ * one gf_average_spread per field: every lane forms the same products and
  * sums them in the same order. `lanes` holds n_cells * GF_AVERAGE_LANES
  * doubles. */
 enum { GF_AVERAGE_LANES = 8 };

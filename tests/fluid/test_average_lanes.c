@@ -1,8 +1,8 @@
 /*
  * The interleaved grain <-> grid transfers of the unresolved fluid step
  * (gf_average_interpolate_lanes, gf_average_spread_lanes) against the
- * per-field ones they replace (gf_average_interpolate_fields, one
- * gf_average_spread per field): bitwise equal for kernels of random grains
+ * per-field ones (one gf_average_interpolate and one gf_average_spread per
+ * field): bitwise equal for kernels of random grains
  * on grids with walls and periodic axes, a kernel wider than the box
  * included (mirror images folded back), with 4 and 6 fields as the fluid
  * step uses; and the spread conserves: sum over cells of each lane times
@@ -49,9 +49,10 @@ static void check_grid(const int n[3], const gf_grid_bc bc[3][2], double sigma_o
         gf_kernel k;
         gf_average_kernel(&g, sigma_over_h * 0.02, x, &k);
         for (int nf = 4; nf <= 6; nf += 2) {
-            double ref[GF_AVERAGE_MAX_FIELDS], got[GF_AVERAGE_LANES];
+            double ref[GF_AVERAGE_LANES], got[GF_AVERAGE_LANES];
             gf_average_interleave(nc, (const double *const *)field, nf, lanes);
-            gf_average_interpolate_fields(&g, &k, (const double *const *)field, nf, ref);
+            for (int f = 0; f < nf; ++f)
+                ref[f] = gf_average_interpolate(&g, &k, field[f]);
             gf_average_interpolate_lanes(&g, &k, lanes, got);
             interp_mismatch += memcmp(ref, got, (size_t)nf * sizeof(double)) != 0;
         }
