@@ -474,12 +474,13 @@ gf_status gf_sim_compute_forces(gf_sim *s)
         if (nc > 1) {
 #ifdef _OPENMP
 #pragma omp barrier
-#pragma omp for schedule(static)
 #endif
-            for (size_t i = 0; i < n; ++i)
-                for (int u = 1; u < nc && s->nl->chunk_row[u] <= i; ++u)
-                    for (int q = 0; q < 6; ++q)
-                        store[q][i] += s->acc[u].f[q][i];
+            /* each chunk's rows summed by its thread (the one that integrates them) */
+            for (int c = t; c < nc; c += m)
+                for (size_t i = s->nl->chunk_row[c]; i < s->nl->chunk_row[c + 1]; ++i)
+                    for (int u = 1; u <= c; ++u)
+                        for (int q = 0; q < 6; ++q)
+                            store[q][i] += s->acc[u].f[q][i];
         }
     }
     const int nt = nc;

@@ -31,8 +31,11 @@ typedef struct gf_gauge {
 } gf_gauge;
 
 /* Per-thread force accumulators (thread 0 writes the particle store). */
+/* One per chunk of the pair loop, each on cache lines of its own: the
+ * counters a thread updates while it runs its chunk must not share a line
+ * with the next chunk's pointers, which the other thread reads. */
 typedef struct gf_sim_accum {
-    double *f[6];
+    _Alignas(64) double *f[6];
     void *f_block; /* owns f[0..5], staggered (core/gf_soa.h) */
     size_t cap;
     double wall_force_N[GF_SIM_MAX_WALLS][3];

@@ -21,13 +21,26 @@
  * through the list's transfer (gf_nlist.h); outputs and the fluid coupling
  * find grains by id.
  *
- * Determinism and restart: the order is a function of the positions and the
- * current order only (stable radix sort, no threads), and the schedule of
- * the rebuild count, which the checkpoint stores (dataset sort_state): a
+ * With threads (and a store large enough to run its chunks in parallel) the
+ * order is another: layers of cells across one axis, Morton order of the
+ * other two within a layer. The threads' chunks are contiguous ranges of the
+ * store, so each cut between two chunks is then a plane across that axis,
+ * the one with the smallest cross-section (cut_axis), and the grains next to
+ * it lie together in memory. Those grains are read by one core and written
+ * by the other at every step; in 3-D Morton order the cut is a jagged surface
+ * and, on the settled bed of 1e4 grains, twice as many grains cross it,
+ * spread over many more cache lines (docs/benchmarks.md, "Two cores: the cut
+ * between the chunks").
+ *
+ * Determinism and restart: the order is a function of the positions, the
+ * current order and the configured thread count only (stable radix sort),
+ * and the schedule of the rebuild count, which the checkpoint stores
+ * (dataset sort_state): a
  * restarted run sorts at the same rebuilds as the uninterrupted one and is
  * bitwise identical to it. The sort changes which grain of a pair owns it and
  * the order of the force sums: results change at round-off with sort_every.
  */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -43,6 +56,44 @@ static uint32_t spread3(uint32_t v)
     v = (v | (v << 4)) & 0x030c30c3u;
     v = (v | (v << 2)) & 0x09249249u;
     return v;
+}
+
+/* 10 bits of v spread to every second bit (v < 1024). */
+static uint32_t spread2(uint32_t v)
+{
+    v &= 0x3ffu;
+    v = (v | (v << 8)) & 0x00ff00ffu;
+    v = (v | (v << 4)) & 0x0f0f0f0fu;
+    v = (v | (v << 2)) & 0x33333333u;
+    v = (v | (v << 1)) & 0x55555555u;
+    return v;
+}
+
+/* With threads, the axis along which the store is cut into the threads'
+ * chunks: the one whose cut planes cross the fewest grains, i.e. the
+ * smallest cross-section of the grains' bounding box, counted twice along a
+ * periodic axis (the wrap is one more cut between the first and the last
+ * chunk). The grains near a cut are read by one core and written by the
+ * other at every step; between the two cores of the test machine a cache
+ * line takes ~240 ns (gf-core-latency, docs/benchmarks.md). */
+static int cut_axis(const gf_sim *s, size_t n)
+{
+    double lo[3] = {DBL_MAX, DBL_MAX, DBL_MAX}, hi[3] = {-DBL_MAX, -DBL_MAX, -DBL_MAX};
+    const double *c[3] = {s->p->x_m, s->p->y_m, s->p->z_m};
+    for (int a = 0; a < 3; ++a)
+        for (size_t i = 0; i < n; ++i) {
+            lo[a] = c[a][i] < lo[a] ? c[a][i] : lo[a];
+            hi[a] = c[a][i] > hi[a] ? c[a][i] : hi[a];
+        }
+    int best = 0;
+    double best_area = DBL_MAX;
+    for (int a = 0; a < 3; ++a) {
+        int b = (a + 1) % 3, d = (a + 2) % 3;
+        double area = (hi[b] - lo[b]) * (hi[d] - lo[d]) * (s->periodic[a] ? 2.0 : 1.0);
+        if (area < best_area)
+            best = a, best_area = area;
+    }
+    return best;
 }
 
 static uint32_t cell_of(double v, double lo, double L, int nc)
@@ -81,11 +132,25 @@ gf_status gf_sim_sort_grains(gf_sim *s)
         free(key), free(perm), free(count), free(tmp);
         return GF_FAIL(s->ctx, GF_ERR_NOMEM, "sim: cannot allocate the grain sort (%zu grains)", n);
     }
-    for (size_t i = 0; i < n; ++i) {
-        key[i] = spread3(cell_of(p->x_m[i], s->lo_m[0], L[0], nc[0])) |
-                 spread3(cell_of(p->y_m[i], s->lo_m[1], L[1], nc[1])) << 1 |
-                 spread3(cell_of(p->z_m[i], s->lo_m[2], L[2], nc[2])) << 2;
-        perm[i] = i;
+    const double *c[3] = {p->x_m, p->y_m, p->z_m};
+    if (s->n_threads > 1 && n >= GF_SIM_PARALLEL_MIN_GRAINS) {
+        /* layers of cells across the cut axis, Morton order within a layer:
+         * any split of the store into chunks is then a plane, and the grains
+         * next to it lie together in memory (few cache lines to exchange) */
+        const int a = cut_axis(s, n), b = (a + 1) % 3, d = (a + 2) % 3;
+        for (size_t i = 0; i < n; ++i) {
+            key[i] = cell_of(c[a][i], s->lo_m[a], L[a], nc[a]) << 20 |
+                     spread2(cell_of(c[b][i], s->lo_m[b], L[b], nc[b])) |
+                     spread2(cell_of(c[d][i], s->lo_m[d], L[d], nc[d])) << 1;
+            perm[i] = i;
+        }
+    } else {
+        for (size_t i = 0; i < n; ++i) {
+            key[i] = spread3(cell_of(c[0][i], s->lo_m[0], L[0], nc[0])) |
+                     spread3(cell_of(c[1][i], s->lo_m[1], L[1], nc[1])) << 1 |
+                     spread3(cell_of(c[2][i], s->lo_m[2], L[2], nc[2])) << 2;
+            perm[i] = i;
+        }
     }
     /* stable LSD radix sort of the 30-bit keys, two digits of 15 bits */
     uint32_t *k_in = key, *k_out = key + n;

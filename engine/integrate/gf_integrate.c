@@ -101,8 +101,16 @@ static inline __attribute__((always_inline)) double kick_drift_impl(gf_particles
     return d2_max;
 }
 
+/* Compiled for AVX-512 too, chosen at load time (as the pair loop,
+ * gf_sim_pairs.c); element-wise without fused multiply-adds: the same bits. */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__GLIBC__) /* ifunc */
+#define GF_INTEGRATE_CLONES __attribute__((target_clones("arch=x86-64-v4", "default")))
+#else
+#define GF_INTEGRATE_CLONES
+#endif
+
 /* The four cases compiled apart, so that each loop is straight-line (vectorised). */
-double gf_integrate_kick_drift(gf_particles *p, size_t i0, size_t i1, int n_kicks, double dt_s, const double g_m_s2[3],
+GF_INTEGRATE_CLONES double gf_integrate_kick_drift(gf_particles *p, size_t i0, size_t i1, int n_kicks, double dt_s, const double g_m_s2[3],
                                double *const ref[3], double *const vp[3], const gf_integrate_factors *k)
 {
     if (k->inv_inertia)

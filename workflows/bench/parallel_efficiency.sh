@@ -14,7 +14,11 @@
 #   speed-up over the faster core  R2 / max(R0, R1),
 #   parallel efficiency            R2 / (R0 + R1)
 # (efficiency 0.9 is the 1.8x of two equal cores; with unequal cores the
-# speed-up over the faster one cannot exceed 1 + min/max).
+# speed-up over the faster one cannot exceed 1 + min/max), and, measured
+# just before R2, the time a cache line takes from one core to the other
+# (gf-core-latency, one-way, ns): the grains at the boundary between the two
+# threads' chunks are exchanged through the caches at every step, so a large
+# latency lowers the efficiency of a small bed whatever the code does.
 #
 # usage: parallel_efficiency.sh [N] [STEPS] [ROUNDS] [BUILD_DIR]
 #        (defaults 10000 3000 3 build)
@@ -28,8 +32,11 @@ ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${4:-build}
 case $BUILD in /*) ;; *) BUILD=$ROOT/$BUILD ;; esac
 BENCH=$BUILD/workflows/bench/gf-bench-dem
+LATENCY=$BUILD/workflows/bench/gf-core-latency
 BED=${GF_BED:-/tmp/gfbed}
-[ -x "$BENCH" ] || { echo "parallel_efficiency.sh: $BENCH not built (cmake --build $BUILD --target gf-bench-dem)" >&2; exit 1; }
+for exe in "$BENCH" "$LATENCY"; do
+    [ -x "$exe" ] || { echo "parallel_efficiency.sh: $exe not built (cmake --build $BUILD --target gf-bench-dem gf-core-latency)" >&2; exit 1; }
+done
 [ "$(nproc)" -ge 2 ] || { echo "parallel_efficiency.sh: needs 2 cores, this machine has $(nproc)" >&2; exit 1; }
 
 rate() { # cpus threads -> particle-steps per wall second
@@ -39,14 +46,15 @@ rate() { # cpus threads -> particle-steps per wall second
 
 rate 0 1 >/dev/null # settles and keeps the bed on the first call
 echo "N = $N, $STEPS steps, $ROUNDS rounds, OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-(unset)}"
-printf '%-6s %-11s %-11s %-11s %-9s %-9s %s\n' round R0_cpu0 R1_cpu1 R2_both max/min speed-up efficiency
+printf '%-6s %-11s %-11s %-11s %-9s %-9s %-10s %s\n' round R0_cpu0 R1_cpu1 R2_both max/min speed-up efficiency line_ns
 r=1
 while [ "$r" -le "$ROUNDS" ]; do
     R0=$(rate 0 1)
     R1=$(rate 1 1)
+    LAT=$("$LATENCY" 0 1 | sed -n 's/.*one-way \([0-9.]*\) ns.*/\1/p')
     R2=$(rate 0,1 2)
-    awk -v r="$r" -v a="$R0" -v b="$R1" -v c="$R2" 'BEGIN {
+    awk -v r="$r" -v a="$R0" -v b="$R1" -v c="$R2" -v l="$LAT" 'BEGIN {
         hi = a > b ? a : b; lo = a > b ? b : a;
-        printf "%-6d %-11.4g %-11.4g %-11.4g %-9.3f %-9.3f %.3f\n", r, a, b, c, hi / lo, c / hi, c / (a + b) }'
+        printf "%-6d %-11.4g %-11.4g %-11.4g %-9.3f %-9.3f %-10.3f %s\n", r, a, b, c, hi / lo, c / hi, c / (a + b), l }'
     r=$((r + 1))
 done
