@@ -460,10 +460,9 @@ gf_status gf_sim_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_sim_optio
     /* aligned: the per-chunk accumulators inside are on cache lines of their own */
     size_t bytes = (sizeof(gf_sim) + _Alignof(gf_sim) - 1) / _Alignof(gf_sim) * _Alignof(gf_sim);
     gf_sim *s = aligned_alloc(_Alignof(gf_sim), bytes);
-    if (s)
-        memset(s, 0, bytes);
     if (!s)
         return GF_FAIL(ctx, GF_ERR_NOMEM, "gf_sim_create: cannot allocate");
+    memset(s, 0, bytes);
     s->ctx = ctx;
     gf_status st = create_inner(s, spec, opt);
     if (st != GF_OK) {

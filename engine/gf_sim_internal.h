@@ -30,10 +30,10 @@ typedef struct gf_gauge {
     double x_m[3];
 } gf_gauge;
 
-/* Per-thread force accumulators (thread 0 writes the particle store). */
-/* One per chunk of the pair loop, each on cache lines of its own: the
- * counters a thread updates while it runs its chunk must not share a line
- * with the next chunk's pointers, which the other thread reads. */
+/* Force accumulators, one per chunk of the pair loop (chunk 0 writes the
+ * particle store), each on cache lines of its own: the counters a thread
+ * updates while it runs its chunk must not share a line with the next
+ * chunk's pointers, which the other thread reads. */
 typedef struct gf_sim_accum {
     _Alignas(64) double *f[6];
     void *f_block; /* owns f[0..5], staggered (core/gf_soa.h) */

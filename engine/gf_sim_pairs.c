@@ -23,6 +23,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "core/gf_clones.h"
 #include "contact/gf_lubrication.h"
 #include "gf_sim_internal.h"
 
@@ -39,11 +40,6 @@
  * selects: GCC vectorises the loop there and not for AVX2, which lacks
  * masked stores), chosen at load time. -ffp-contract=off (ISO C mode) keeps
  * both clones free of fused multiply-adds: they give the same bits. */
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__GLIBC__) /* ifunc */
-#define GF_PAIR_CLONES __attribute__((target_clones("arch=x86-64-v4", "default")))
-#else
-#define GF_PAIR_CLONES
-#endif
 
 /* Candidate contacts of one block (pass 1) and their results (pass 2). */
 typedef struct pair_block {
@@ -193,12 +189,12 @@ static inline __attribute__((always_inline)) void compute_impl(const gf_sim *s, 
     }
 }
 
-GF_PAIR_CLONES static void compute_dry(const gf_sim *s, pair_block *restrict b, size_t nc)
+GF_AVX512_CLONES static void compute_dry(const gf_sim *s, pair_block *restrict b, size_t nc)
 {
     compute_impl(s, b, nc, 0);
 }
 
-GF_PAIR_CLONES static void compute_lub(const gf_sim *s, pair_block *restrict b, size_t nc)
+GF_AVX512_CLONES static void compute_lub(const gf_sim *s, pair_block *restrict b, size_t nc)
 {
     compute_impl(s, b, nc, 1);
 }

@@ -35,9 +35,8 @@
  * Determinism and restart: the order is a function of the positions, the
  * current order and the configured thread count only (stable radix sort),
  * and the schedule of the rebuild count, which the checkpoint stores
- * (dataset sort_state): a
- * restarted run sorts at the same rebuilds as the uninterrupted one and is
- * bitwise identical to it. The sort changes which grain of a pair owns it and
+ * (dataset sort_state): a restarted run sorts at the same rebuilds as the
+ * uninterrupted one and is bitwise identical to it. The sort changes which grain of a pair owns it and
  * the order of the force sums: results change at round-off with sort_every.
  */
 #include <float.h>

@@ -3,6 +3,8 @@
 
 #include <math.h>
 
+#include "core/gf_clones.h"
+
 static int fold(const gf_grid *g, int d, int m)
 {
     int n = g->n[d];
@@ -72,11 +74,6 @@ double gf_average_interpolate(const gf_grid *g, const gf_kernel *k, const double
 /* The lane loops vectorise in an AVX-512 clone chosen at load time (one
  * vector per cell); ISO C mode keeps fused multiply-adds out of both clones,
  * so they give the same bits. */
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__GLIBC__) /* ifunc */
-#define GF_LANE_CLONES __attribute__((target_clones("arch=x86-64-v4", "default")))
-#else
-#define GF_LANE_CLONES
-#endif
 #ifdef _OPENMP
 #define GF_LANE_SIMD _Pragma("omp simd")
 #else
@@ -97,7 +94,7 @@ void gf_average_deinterleave(size_t n_cells, const double *lanes, int n_fields, 
             fields[f][c] = lanes[c * GF_AVERAGE_LANES + (size_t)f];
 }
 
-GF_LANE_CLONES void gf_average_interpolate_lanes(const gf_grid *g, const gf_kernel *k, const double *lanes,
+GF_AVX512_CLONES void gf_average_interpolate_lanes(const gf_grid *g, const gf_kernel *k, const double *lanes,
                                                  double out[GF_AVERAGE_LANES])
 {
     double s[GF_AVERAGE_LANES] = {0.0};
@@ -117,7 +114,7 @@ GF_LANE_CLONES void gf_average_interpolate_lanes(const gf_grid *g, const gf_kern
         out[f] = s[f];
 }
 
-GF_LANE_CLONES void gf_average_spread_lanes(const gf_grid *g, const gf_kernel *k, const double value[GF_AVERAGE_LANES],
+GF_AVX512_CLONES void gf_average_spread_lanes(const gf_grid *g, const gf_kernel *k, const double value[GF_AVERAGE_LANES],
                                             double *lanes)
 {
     double v[GF_AVERAGE_LANES], wyz[GF_AVERAGE_LANES];

@@ -1,5 +1,6 @@
 /* Kick-drift-kick velocity Verlet; see gf_integrate.h. */
 #include "integrate/gf_integrate.h"
+#include "core/gf_clones.h"
 
 /* The loops are element-wise: `omp simd` lets the compiler use vector
  * instructions (it does not prove the absence of aliasing between the store
@@ -101,17 +102,11 @@ static inline __attribute__((always_inline)) double kick_drift_impl(gf_particles
     return d2_max;
 }
 
-/* Compiled for AVX-512 too, chosen at load time (as the pair loop,
- * gf_sim_pairs.c); element-wise without fused multiply-adds: the same bits. */
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__GLIBC__) /* ifunc */
-#define GF_INTEGRATE_CLONES __attribute__((target_clones("arch=x86-64-v4", "default")))
-#else
-#define GF_INTEGRATE_CLONES
-#endif
-
-/* The four cases compiled apart, so that each loop is straight-line (vectorised). */
-GF_INTEGRATE_CLONES double gf_integrate_kick_drift(gf_particles *p, size_t i0, size_t i1, int n_kicks, double dt_s, const double g_m_s2[3],
-                               double *const ref[3], double *const vp[3], const gf_integrate_factors *k)
+/* The four cases compiled apart, so that each loop is straight-line
+ * (vectorised), in an AVX-512 clone too (core/gf_clones.h: the same bits). */
+GF_AVX512_CLONES double gf_integrate_kick_drift(gf_particles *p, size_t i0, size_t i1, int n_kicks, double dt_s,
+                                                   const double g_m_s2[3], double *const ref[3], double *const vp[3],
+                                                   const gf_integrate_factors *k)
 {
     if (k->inv_inertia)
         return n_kicks > 1 ? kick_drift_impl(p, i0, i1, 1, 1, dt_s, g_m_s2, ref, vp, k)

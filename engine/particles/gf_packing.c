@@ -6,6 +6,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "core/gf_clones.h"
 #include "core/gf_rng.h"
 
 /* Preparation constants (see gf_packing.h): contact duration and step in
@@ -324,11 +325,6 @@ typedef struct prep_block {
 #else
 #define PREP_SIMD
 #endif
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__GLIBC__) /* ifunc */
-#define PREP_CLONES __attribute__((target_clones("arch=x86-64-v4", "default")))
-#else
-#define PREP_CLONES
-#endif
 
 /* Pass 1: pairs [*pq, *pq + PREP_BLOCK) (rows followed in *prow); returns the contacts. */
 static size_t prep_scan(prep *s, size_t *pq, size_t *prow, prep_block *b)
@@ -362,7 +358,7 @@ static size_t prep_scan(prep *s, size_t *pq, size_t *prow, prep_block *b)
 }
 
 /* Pass 2: contact_force of every contact of the block, with selects. */
-PREP_CLONES static void prep_compute(prep *s, prep_block *restrict b, size_t nc)
+GF_AVX512_CLONES static void prep_compute(prep *s, prep_block *restrict b, size_t nc)
 {
     const double *restrict v = s->v, *restrict w = s->w;
     double *restrict hist = s->hist;
