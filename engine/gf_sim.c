@@ -483,10 +483,10 @@ void gf_sim_destroy(gf_sim **ps)
     gf_nlist_destroy(&s->nl);
     gf_soa_free(s->ref_block);
     free(s->wall_hist);
-    free(s->pair_meff), free(s->pair_sqrt_mk), free(s->wall_cand);
+    free(s->pair_meff), free(s->pair_sqrt_mk), free(s->wall_cand), free(s->wall_contacts);
     free(s->sleep_quiet_steps);
     for (int t = 0; t < GF_SIM_MAX_THREADS; ++t)
-        gf_soa_free(s->acc[t].f_block);
+        gf_soa_free(s->acc[t].buf_block);
     free(s);
     *ps = NULL;
 }
@@ -570,6 +570,8 @@ static double kick_drift(gf_sim *s, double h)
         gf_integrate_factors k = {s->inv_mass, (s->skips & GF_SKIP_TANGENTIAL) ? NULL : s->inv_inertia, s->mobile};
         d2[t] = gf_integrate_kick_drift(p, i0, i1, pending ? 2 : 1, s->dt_s, s->gravity_m_s2, ref, vp, &k);
     }
+    s->forces_zeroed = (size_t)n; /* gf_integrate_kick_drift zeroes what it read */
+    s->forces_valid = 0;
     double mx = 0.0;
     for (int t = 0; t < used; ++t)
         mx = d2[t] > mx ? d2[t] : mx;

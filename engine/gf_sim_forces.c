@@ -21,10 +21,13 @@
  * §3 rebound model, digest §4.2 [I]); wall: R_eff^2 -> R_i^2.
  *
  * OpenMP: a half list races on j, so the rows are cut into one pair-balanced
- * chunk per configured thread and each chunk accumulates into its own
- * force/torque arrays (chunk 0 directly into the particle store); the buffers
- * are then summed in chunk order (per-thread accumulators, not a full list:
- * a full list would compute every contact twice). Each pair's history belongs
+ * chunk per configured thread. Each chunk adds into the particle store the
+ * forces on its own rows and on partners inside it, and into a buffer of its
+ * own those on partners in later chunks (j > i: a chunk never reaches back);
+ * after a barrier each thread adds the earlier chunks' buffers to its grains,
+ * over the runs of grains they reach (gf_nlist reach runs: on a store sorted
+ * across the cut, one layer of grains). Not a full list, which would compute
+ * every contact twice. Each pair's history belongs
  * to its row's chunk. With a fixed thread count the result is bitwise
  * reproducible (restart identity relies on it).
  */
@@ -138,13 +141,46 @@ static gf_status build_wall_candidates(gf_sim *s)
     return GF_OK;
 }
 
+/* The walls each grain touches at the build positions, for the balance of
+ * the threads' chunks (a floor's contacts all fall in the bottom chunk).
+ * NULL when there is one chunk or no wall. */
+static gf_status count_wall_contacts(gf_sim *s, const uint8_t **out)
+{
+    const gf_particles *p = s->p;
+    const size_t n = p->n_local;
+    *out = NULL;
+    if (s->n_threads < 2 || s->n_walls == 0)
+        return GF_OK;
+    if (n > s->wall_contacts_cap) {
+        uint8_t *c = realloc(s->wall_contacts, n);
+        if (!c)
+            return GF_FAIL(s->ctx, GF_ERR_NOMEM, "sim: cannot allocate wall contact counts (%zu)", n);
+        s->wall_contacts = c, s->wall_contacts_cap = n;
+    }
+    memset(s->wall_contacts, 0, n);
+    for (int w = 0; w < s->n_walls; ++w) {
+        const double *nw = s->walls[w].normal, *pw = s->walls[w].point_m;
+        if (!s->walls[w].active)
+            continue;
+        for (size_t i = 0; i < n; ++i) {
+            double gap = (s->x_ref[i] - pw[0]) * nw[0] + (s->y_ref[i] - pw[1]) * nw[1] + (s->z_ref[i] - pw[2]) * nw[2] -
+                         p->radius_m[i];
+            s->wall_contacts[i] += gap < 0.0;
+        }
+    }
+    *out = s->wall_contacts;
+    return GF_OK;
+}
+
 gf_status gf_sim_rebuild_from_ref(gf_sim *s)
 {
     gf_particles *p = s->p;
     gf_nlist_geom g = list_geom(s);
     GF_TRY(gf_sim_reserve(s, p->n_local));
+    const uint8_t *wall_contacts;
+    GF_TRY(count_wall_contacts(s, &wall_contacts));
     GF_TRY(gf_nlist_build(s->ctx, s->nl, &g, p->n_local, s->x_ref, s->y_ref, s->z_ref, p->radius_m, p->id,
-                          s->n_threads));
+                          wall_contacts, s->n_threads));
     /* flags (glued, sleeping) and masses are read here, at every build */
     gf_integrate_factors_fill(p, p->n_local, s->inv_mass, s->inv_inertia, s->mobile);
     if (s->rotation_locked)
@@ -210,8 +246,6 @@ static inline __attribute__((always_inline)) void pair_rows_impl(gf_sim *s, size
     const gf_particles *p = s->p;
     const gf_nlist *nl = s->nl;
     const double *x = p->x_m, *y = p->y_m, *z = p->z_m, *R = p->radius_m;
-    double *restrict fx = f[0], *restrict fy = f[1], *restrict fz = f[2];
-    double *restrict tx = f[3], *restrict ty = f[4], *restrict tz = f[5];
     const double *restrict pair_meff = s->pair_meff, *restrict pair_sqrt_mk = s->pair_sqrt_mk;
     uint8_t *restrict touching = nl->touching;
     double *restrict hist = nl->hist;
@@ -235,6 +269,7 @@ static inline __attribute__((always_inline)) void pair_rows_impl(gf_sim *s, size
             if (frozen_i && (p->flags[j] & (GF_P_GLUED | GF_P_SLEEPING)) &&
                 ((p->flags[i] | p->flags[j]) & GF_P_SLEEPING))
                 continue;
+            double *const *fj = j < acc->far_from ? f : acc->far; /* partner in a later chunk: its buffer */
             const double *sh = nl->shift_m[nl->image[k]];
             double d[3] = {xi - x[j] + sh[0], yi - y[j] + sh[1], zi - z[j] + sh[2]};
             double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
@@ -281,7 +316,7 @@ static inline __attribute__((always_inline)) void pair_rows_impl(gf_sim *s, size
                 double nxt[3];
                 cross(g.n, f_t, nxt);
                 txi -= ri * nxt[0], tyi -= ri * nxt[1], tzi -= ri * nxt[2];
-                tx[j] -= R[j] * nxt[0], ty[j] -= R[j] * nxt[1], tz[j] -= R[j] * nxt[2];
+                fj[3][j] -= R[j] * nxt[0], fj[4][j] -= R[j] * nxt[1], fj[5][j] -= R[j] * nxt[2];
                 n_contacts++;
                 max_overlap = g.overlap_m > max_overlap ? g.overlap_m : max_overlap;
             } else if (touching[k]) {
@@ -298,10 +333,10 @@ static inline __attribute__((always_inline)) void pair_rows_impl(gf_sim *s, size
                 }
             }
             fxi += F[0], fyi += F[1], fzi += F[2];
-            fx[j] -= F[0], fy[j] -= F[1], fz[j] -= F[2];
+            fj[0][j] -= F[0], fj[1][j] -= F[1], fj[2][j] -= F[2];
         }
-        fx[i] += fxi, fy[i] += fyi, fz[i] += fzi;
-        tx[i] += txi, ty[i] += tyi, tz[i] += tzi;
+        f[0][i] += fxi, f[1][i] += fyi, f[2][i] += fzi;
+        f[3][i] += txi, f[4][i] += tyi, f[5][i] += tzi;
     }
     acc->n_contacts += n_contacts;
     acc->max_overlap_m = max_overlap;
@@ -401,23 +436,63 @@ static void wall_rows(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_si
 
 static gf_status reserve_accumulators(gf_sim *s, size_t n)
 {
-    for (int t = 1; t < s->nl->n_chunks; ++t) {
+    for (int t = 0; t + 1 < s->nl->n_chunks; ++t) { /* the last chunk has no partners beyond it */
         gf_sim_accum *a = &s->acc[t];
         if (a->cap >= n)
             continue;
         /* contents need not survive: each chunk clears its buffer before use */
         void *fresh[6];
-        void *block = gf_soa_alloc(6, sizeof(double), n + 1, GF_SOA_LINE_SIM + 10 + 6 * (size_t)(t - 1), fresh,
-                                   NULL, 0);
+        void *block = gf_soa_alloc(6, sizeof(double), n + 1, GF_SOA_LINE_SIM + 10 + 6 * (size_t)t, fresh, NULL, 0);
         if (!block)
             return GF_FAIL(s->ctx, GF_ERR_NOMEM, "sim: cannot allocate thread force buffers");
-        gf_soa_free(a->f_block);
-        a->f_block = block;
+        gf_soa_free(a->buf_block);
+        a->buf_block = block;
         for (int c = 0; c < 6; ++c)
-            a->f[c] = fresh[c];
+            a->buf[c] = fresh[c];
         a->cap = n;
     }
     return GF_OK;
+}
+
+/* Chunk c's destinations: the store for its rows and the partners before
+ * its end; its buffer, cleared over the reach runs, for the partners beyond
+ * (the last chunk has none: everything into the store). */
+static void open_chunk(gf_sim *s, int c, double *const store[6], size_t n)
+{
+    const gf_nlist *nl = s->nl;
+    gf_sim_accum *a = &s->acc[c];
+    a->n_contacts = 0;
+    a->max_overlap_m = 0.0;
+    memset(a->wall_force_N, 0, sizeof a->wall_force_N);
+    const int last = c + 1 == nl->n_chunks;
+    a->far_from = last ? n : nl->chunk_row[c + 1];
+    for (int q = 0; q < 6; ++q)
+        a->far[q] = last ? store[q] : a->buf[q];
+    if (last)
+        return;
+    for (size_t r = 0; r < nl->n_reach_runs; ++r) {
+        size_t b = nl->reach_run[2 * r], e = nl->reach_run[2 * r + 1];
+        b = b > a->far_from ? b : a->far_from;
+        for (int q = 0; q < 6 && b < e; ++q)
+            memset(a->far[q] + b, 0, (e - b) * sizeof(double));
+    }
+}
+
+/* Adds to the grains of chunk c what the chunks before it sent them, in
+ * chunk order, over the reach runs: by the thread that integrates chunk c,
+ * once every chunk has run. */
+static void add_from_earlier_chunks(const gf_sim *s, int c, double *const store[6])
+{
+    const gf_nlist *nl = s->nl;
+    const size_t lo = nl->chunk_row[c], hi = nl->chunk_row[c + 1];
+    for (size_t r = 0; r < nl->n_reach_runs; ++r) {
+        size_t b = nl->reach_run[2 * r], e = nl->reach_run[2 * r + 1];
+        b = b > lo ? b : lo, e = e < hi ? e : hi;
+        for (size_t j = b; j < e; ++j)
+            for (int u = 0; u < c; ++u)
+                for (int q = 0; q < 6; ++q)
+                    store[q][j] += s->acc[u].far[q][j];
+    }
 }
 
 gf_status gf_sim_compute_forces(gf_sim *s)
@@ -434,9 +509,14 @@ gf_status gf_sim_compute_forces(gf_sim *s)
         memcpy(s->vz_pred, p->vz_m_s, n * sizeof(double));
     }
     s->vp_valid = 0;
-    gf_particles_clear_forces(p);
-    /* chunk c of the list (pair-balanced rows) accumulates into buffer c
-     * (chunk 0 into the store); buffers are summed in chunk order. The result
+    if (s->forces_zeroed == 0)
+        gf_particles_clear_forces(p);
+    else /* the drift zeroed [0, forces_zeroed) on the threads that own them */
+        gf_particles_clear_forces_from(p, s->forces_zeroed);
+    s->forces_zeroed = 0;
+    /* chunk c of the list (pair-balanced rows) accumulates into the store,
+     * and its partners in later chunks into buffer c, added to them in chunk
+     * order (open_chunk, add_from_earlier_chunks). The result
      * depends on the chunk count (the configured thread count) only, not on
      * how many threads actually run: small systems run the chunks serially,
      * which avoids fork/join costs that exceed the work below ~1000 grains. */
@@ -453,14 +533,9 @@ gf_status gf_sim_compute_forces(gf_sim *s)
 #endif
         for (int c = t; c < nc; c += m) {
             gf_sim_accum *a = &s->acc[c];
-            a->n_contacts = 0;
-            a->max_overlap_m = 0.0;
-            memset(a->wall_force_N, 0, sizeof a->wall_force_N);
-            double *const *f = c == 0 ? store : a->f;
+            double *const *f = store;
             size_t i0 = s->nl->chunk_row[c], i1 = s->nl->chunk_row[c + 1];
-            if (c > 0) /* a chunk's rows i >= i0 only reach grains >= i0 (half list: j > i) */
-                for (int q = 0; q < 6; ++q)
-                    memset(a->f[q] + i0, 0, (n - i0) * sizeof(double));
+            open_chunk(s, c, store, n);
             if (s->law->kernel == gf_contact_linear && (s->skips & GF_SKIP_TANGENTIAL))
                 pair_rows_linear_normal(s, i0, i1, f, a);
             else if (s->law->kernel == gf_contact_linear && s->opt.generic_pair_loop)
@@ -477,10 +552,7 @@ gf_status gf_sim_compute_forces(gf_sim *s)
 #endif
             /* each chunk's rows summed by its thread (the one that integrates them) */
             for (int c = t; c < nc; c += m)
-                for (size_t i = s->nl->chunk_row[c]; i < s->nl->chunk_row[c + 1]; ++i)
-                    for (int u = 1; u <= c; ++u)
-                        for (int q = 0; q < 6; ++q)
-                            store[q][i] += s->acc[u].f[q][i];
+                add_from_earlier_chunks(s, c, store);
         }
     }
     const int nt = nc;

@@ -30,13 +30,17 @@ typedef struct gf_gauge {
     double x_m[3];
 } gf_gauge;
 
-/* Force accumulators, one per chunk of the pair loop (chunk 0 writes the
- * particle store), each on cache lines of its own: the counters a thread
- * updates while it runs its chunk must not share a line with the next
- * chunk's pointers, which the other thread reads. */
+/* Force accumulators, one per chunk of the pair loop, each on cache lines
+ * of its own: the counters a thread updates while it runs its chunk must not
+ * share a line with the next chunk's pointers, which the other thread reads.
+ * A chunk adds the forces on its own rows, and on partners before far_from,
+ * into the particle store; those on partners at or beyond far_from (grains
+ * of later chunks, which their own thread is writing) into far. */
 typedef struct gf_sim_accum {
-    _Alignas(64) double *f[6];
-    void *f_block; /* owns f[0..5], staggered (core/gf_soa.h) */
+    _Alignas(64) double *far[6];
+    size_t far_from;  /* the chunk's end; n for the last chunk, whose far is the store */
+    double *buf[6];   /* the chunk's own far buffer (not for the last chunk) */
+    void *buf_block;  /* owns buf[0..5], staggered (core/gf_soa.h) */
     size_t cap;
     double wall_force_N[GF_SIM_MAX_WALLS][3];
     size_t n_contacts;
@@ -66,6 +70,8 @@ struct gf_sim {
     int32_t *wall_cand;
     size_t wall_cand_start[GF_SIM_MAX_WALLS + 1], wall_cand_cap, wall_cand_grains;
     int wall_cand_walls;
+    uint8_t *wall_contacts;     /* walls each grain touches at the last build (cost of its row), n */
+    size_t wall_contacts_cap;
     gf_gauge gauges[GF_SIM_MAX_GAUGES];
     int n_gauges;
     int fluid_bc[3][2], fluid_bc_set[3][2];
@@ -84,6 +90,7 @@ struct gf_sim {
     double *pair_meff, *pair_sqrt_mk; /* per neighbour pair: m*, sqrt(m* k_n) */
     size_t pair_cap;
     int vp_valid;                   /* set by the drift, consumed by the next force evaluation */
+    size_t forces_zeroed;           /* grains [0, forces_zeroed) had F, T zeroed by the drift (0: none) */
     int kick_pending;               /* the last step's closing half-kick is deferred (gf_sim.c: dem_step) */
     size_t ref_cap;
     double skin_m, extra_m;

@@ -216,8 +216,9 @@ static void scatter(const gf_sim *s, const pair_block *b, size_t nc, double *con
             f[q][i] = rs->base[q] + rs->f[q];
         }
         rs->i = b->i[c];
-        f[3][j] -= b->tj[0][c], f[4][j] -= b->tj[1][c], f[5][j] -= b->tj[2][c];
-        f[0][j] -= b->fx[c], f[1][j] -= b->fy[c], f[2][j] -= b->fz[c];
+        double *const *fj = j < acc->far_from ? f : acc->far; /* partner in a later chunk: its buffer */
+        fj[3][j] -= b->tj[0][c], fj[4][j] -= b->tj[1][c], fj[5][j] -= b->tj[2][c];
+        fj[0][j] -= b->fx[c], fj[1][j] -= b->fy[c], fj[2][j] -= b->fz[c];
         const double ov = b->overlap[c];
         const int touch = ov > 0.0;
         touching[b->k[c]] = (uint8_t)touch;

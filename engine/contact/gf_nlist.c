@@ -20,10 +20,11 @@ void gf_nlist_destroy(gf_nlist **pnl)
     if (!pnl || !*pnl)
         return;
     gf_nlist *nl = *pnl;
-    free(nl->row_start), free(nl->i), free(nl->j), free(nl->image), free(nl->hist), free(nl->touching);
+    free(nl->row_start), free(nl->contacts_before), free(nl->i), free(nl->j), free(nl->image), free(nl->hist), free(nl->touching);
     free(nl->cell_start), free(nl->cell_grains), free(nl->grain_cell);
     free(nl->old_row_start), free(nl->old_j), free(nl->old_hist), free(nl->old_row_id), free(nl->row_id);
     free(nl->id_to_index);
+    free(nl->reach_run), free(nl->reach_mark);
     free(nl);
     *pnl = NULL;
 }
@@ -217,12 +218,15 @@ static void min_image(const gf_nlist *nl, double d[3], int s[3])
 }
 
 static gf_status fill_rows(gf_ctx *ctx, gf_nlist *nl, const gf_nlist_geom *g, size_t n, const double *x,
-                           const double *y, const double *z, const double *r)
+                           const double *y, const double *z, const double *r, const uint8_t *wall_contacts)
 {
     nl->n_pairs = 0;
     int nb[27];
+    size_t touching = 0;
     for (size_t i = 0; i < n; ++i) {
         nl->row_start[i] = nl->n_pairs;
+        nl->contacts_before[i] = touching;
+        touching += wall_contacts ? wall_contacts[i] : 0;
         int c = nl->grain_cell[i];
         int cz = c % nl->nc[2], cy = (c / nl->nc[2]) % nl->nc[1], cx = c / (nl->nc[2] * nl->nc[1]);
         int m = neighbour_cells(nl, cx, cy, cz, nb);
@@ -235,11 +239,14 @@ static gf_status fill_rows(gf_ctx *ctx, gf_nlist *nl, const gf_nlist_geom *g, si
                 int s[3];
                 min_image(nl, d, s);
                 double reach = r[i] + r[j] + g->extra_m + g->skin_m;
-                if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < reach * reach)
+                double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2], forced = r[i] + r[j] + g->extra_m;
+                if (r2 < reach * reach)
                     GF_TRY(push_pair(ctx, nl, (int32_t)i, j, (uint8_t)((s[0] + 1) * 9 + (s[1] + 1) * 3 + (s[2] + 1))));
+                touching += r2 < forced * forced; /* a force to compute: contact or lubrication */
             }
     }
     nl->row_start[n] = nl->n_pairs;
+    nl->contacts_before[n] = touching;
     return GF_OK;
 }
 
@@ -312,6 +319,23 @@ static void carry_history(gf_nlist *nl, const int64_t *id)
         }
 }
 
+/* Cost of the rows before i in the force pass, in units of the scan of one
+ * candidate: each candidate 1, each contact (pair or wall; a pair within the
+ * lubrication range counts as one) GF_NLIST_CONTACT_COST more, each row 2. Measured on the settled 1e4 bed (docs/benchmarks.md):
+ * ~6 ns to scan a candidate, ~24 ns more for a contact's force and scatter,
+ * and the floor's wall contacts about as dear as pairs; counting candidates
+ * alone left the bottom chunk (its contacts pressed by the weight above, and
+ * the floor) 9-10 % dearer than the top one. */
+#define GF_NLIST_CONTACT_COST 4.0
+static double rows_cost(const gf_nlist *nl, size_t i)
+{
+    return (double)nl->row_start[i] + GF_NLIST_CONTACT_COST * (double)nl->contacts_before[i] + 2.0 * (double)i;
+}
+
+/* Chunk boundaries at equal cost, each rounded down to a multiple of a
+ * cache line of doubles: a chunk then starts on a line in every per-grain
+ * array, and its thread's vector loops (integration) do no split loads or
+ * stores (a boundary 2 doubles off a line made them 1.5-2x slower). */
 static void split_rows(gf_nlist *nl, size_t n, int n_chunks)
 {
     if (n_chunks < 1)
@@ -319,21 +343,65 @@ static void split_rows(gf_nlist *nl, size_t n, int n_chunks)
     if (n_chunks > 64)
         n_chunks = 64;
     nl->n_chunks = n_chunks;
-    /* balance pairs + a per-row cost (walls, integration) */
-    double total = (double)nl->n_pairs + 2.0 * (double)n, per = total / n_chunks;
+    const double per = rows_cost(nl, n) / n_chunks;
+    const size_t line = 64 / sizeof(double);
     size_t i = 0;
     nl->chunk_row[0] = 0;
     for (int c = 1; c < n_chunks; ++c) {
-        while (i < n && (double)nl->row_start[i] + 2.0 * (double)i < c * per)
+        while (i < n && rows_cost(nl, i) < c * per)
             ++i;
-        nl->chunk_row[c] = i;
+        nl->chunk_row[c] = i / line * line;
     }
     nl->chunk_row[n_chunks] = n;
 }
 
+static gf_status append_reach_run(gf_ctx *ctx, gf_nlist *nl, size_t i)
+{
+    if (nl->n_reach_runs == nl->cap_reach_runs) {
+        size_t cap = nl->cap_reach_runs ? 2 * nl->cap_reach_runs : 64;
+        if (!grow((void **)&nl->reach_run, 2 * sizeof(size_t), cap))
+            return GF_FAIL(ctx, GF_ERR_NOMEM, "nlist: cannot allocate the reach runs");
+        nl->cap_reach_runs = cap;
+    }
+    nl->reach_run[2 * nl->n_reach_runs] = i, nl->reach_run[2 * nl->n_reach_runs + 1] = i + 1;
+    nl->n_reach_runs++;
+    return GF_OK;
+}
+
+/* The grains each chunk's rows reach beyond the chunk (j >= its end): the
+ * force loop sends those contributions to the chunk's own buffer, and the
+ * owner of the grain adds them after the chunks have run, over these runs
+ * only (on a store sorted across the cut, a layer of grains per boundary). */
+static gf_status find_reach_runs(gf_ctx *ctx, gf_nlist *nl, size_t n)
+{
+    nl->n_reach_runs = 0;
+    if (nl->n_chunks < 2)
+        return GF_OK;
+    if (!grow((void **)&nl->reach_mark, 1, n))
+        return GF_FAIL(ctx, GF_ERR_NOMEM, "nlist: cannot allocate the reach marks");
+    memset(nl->reach_mark, 0, n);
+    for (int c = 0; c + 1 < nl->n_chunks; ++c) {
+        size_t end = nl->chunk_row[c + 1];
+        for (size_t k = nl->row_start[nl->chunk_row[c]]; k < nl->row_start[end]; ++k)
+            if ((size_t)nl->j[k] >= end)
+                nl->reach_mark[nl->j[k]] = 1;
+    }
+    const size_t line = 64 / sizeof(double);
+    for (size_t i = 0; i < n; ++i) {
+        if (!nl->reach_mark[i])
+            continue;
+        size_t *last_end = nl->n_reach_runs ? &nl->reach_run[2 * nl->n_reach_runs - 1] : NULL;
+        if (last_end && i < *last_end + line)
+            *last_end = i + 1;
+        else
+            GF_TRY(append_reach_run(ctx, nl, i));
+    }
+    return GF_OK;
+}
+
 gf_status gf_nlist_build(gf_ctx *ctx, gf_nlist *nl, const gf_nlist_geom *g, size_t n, const double *x,
                          const double *y, const double *z, const double *radius_m, const int64_t *id,
-                         int n_chunks)
+                         const uint8_t *wall_contacts, int n_chunks)
 {
     double r_max = 0.0;
     for (size_t i = 0; i < n; ++i)
@@ -342,9 +410,9 @@ gf_status gf_nlist_build(gf_ctx *ctx, gf_nlist *nl, const gf_nlist_geom *g, size
     GF_TRY(keep_old(ctx, nl));
     GF_TRY(setup_cells(ctx, nl, g, 2.0 * r_max + g->extra_m + g->skin_m));
     GF_TRY(sort_into_cells(ctx, nl, n, x, y, z));
-    if (!grow((void **)&nl->row_start, sizeof(size_t), n + 1))
+    if (!grow((void **)&nl->row_start, sizeof(size_t), n + 1) || !grow((void **)&nl->contacts_before, sizeof(size_t), n + 1))
         return GF_FAIL(ctx, GF_ERR_NOMEM, "nlist: cannot allocate rows");
-    GF_TRY(fill_rows(ctx, nl, g, n, x, y, z, radius_m));
+    GF_TRY(fill_rows(ctx, nl, g, n, x, y, z, radius_m, wall_contacts));
     nl->n = n;
     GF_TRY(map_ids(ctx, nl, n, id));
     carry_history(nl, id);
@@ -353,6 +421,7 @@ gf_status gf_nlist_build(gf_ctx *ctx, gf_nlist *nl, const gf_nlist_geom *g, size
         return GF_FAIL(ctx, GF_ERR_NOMEM, "nlist: cannot allocate row ids");
     memcpy(nl->row_id, id, n * sizeof(int64_t));
     split_rows(nl, n, n_chunks);
+    GF_TRY(find_reach_runs(ctx, nl, n));
     nl->n_builds++;
     return GF_OK;
 }

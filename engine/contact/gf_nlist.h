@@ -34,6 +34,7 @@ typedef struct gf_nlist {
     size_t n;                /* grains the list was built for */
     size_t n_pairs, cap_pairs;
     size_t *row_start;       /* n + 1 */
+    size_t *contacts_before; /* n + 1: contacts of the rows before i at the build (pairs with r < R_i + R_j + extra, walls) */
     int32_t *i;              /* row of each pair (lets the force loop run flat over pairs) */
     int32_t *j;              /* partner index */
     uint8_t *image;          /* index into shift_m */
@@ -60,6 +61,12 @@ typedef struct gf_nlist {
     /* split of rows into balanced chunks for threads */
     int n_chunks;
     size_t chunk_row[65];
+    /* the grains that rows of an earlier chunk reach (partners beyond that
+     * chunk's last row), as runs [reach_run[2r], reach_run[2r + 1]) in index
+     * order; runs closer than a cache line of doubles are merged */
+    size_t n_reach_runs, cap_reach_runs;
+    size_t *reach_run;
+    uint8_t *reach_mark;     /* scratch, n */
     size_t n_builds;
 } gf_nlist;
 
@@ -75,10 +82,12 @@ void gf_nlist_destroy(gf_nlist **nl);
 
 /* Builds the list for grains [0, n) at positions x,y,z (which the caller has
  * wrapped into the periodic box), keeping the history of surviving pairs
- * (ids: global ids). n_chunks: number of balanced row ranges wanted (threads). */
+ * (ids: global ids). n_chunks: number of cost-balanced row ranges wanted
+ * (threads); wall_contacts (NULL: none): the walls each grain touches, which
+ * the balance counts as contacts of its row. */
 gf_status gf_nlist_build(gf_ctx *ctx, gf_nlist *nl, const gf_nlist_geom *g, size_t n, const double *x,
                          const double *y, const double *z, const double *radius_m, const int64_t *id,
-                         int n_chunks);
+                         const uint8_t *wall_contacts, int n_chunks);
 
 /* Sets the history of pair (id_a, id_b) if it is in the list (restart).
  * Returns 1 when found. Needs the ids passed to the last build. */

@@ -67,8 +67,8 @@ static inline __attribute__((always_inline)) double kick_drift_impl(gf_particles
     double *restrict x = p->x_m, *restrict y = p->y_m, *restrict z = p->z_m;
     double *restrict vx = p->vx_m_s, *restrict vy = p->vy_m_s, *restrict vz = p->vz_m_s;
     double *restrict wx = p->wx_rad_s, *restrict wy = p->wy_rad_s, *restrict wz = p->wz_rad_s;
-    const double *restrict fx = p->fx_N, *restrict fy = p->fy_N, *restrict fz = p->fz_N;
-    const double *restrict tx = p->tx_N_m, *restrict ty = p->ty_N_m, *restrict tz = p->tz_N_m;
+    double *restrict fx = p->fx_N, *restrict fy = p->fy_N, *restrict fz = p->fz_N;
+    double *restrict tx = p->tx_N_m, *restrict ty = p->ty_N_m, *restrict tz = p->tz_N_m;
     const double *restrict xr = ref[0], *restrict yr = ref[1], *restrict zr = ref[2];
     double *restrict px = vp[0], *restrict py = vp[1], *restrict pz = vp[2];
     const double h = 0.5 * dt_s, gx = g_m_s2[0] * h, gy = g_m_s2[1] * h, gz = g_m_s2[2] * h;
@@ -95,6 +95,8 @@ static inline __attribute__((always_inline)) double kick_drift_impl(gf_particles
         px[i] = u + fx[i] * a + gx * m; /* not u + ax: the drift's order of additions */
         py[i] = v + fy[i] * a + gy * m;
         pz[i] = w + fz[i] * a + gz * m;
+        fx[i] = fy[i] = fz[i] = 0.0;
+        tx[i] = ty[i] = tz[i] = 0.0;
         double dx = x[i] - xr[i], dy = y[i] - yr[i], dz = z[i] - zr[i];
         double d2 = dx * dx + dy * dy + dz * dz;
         d2_max = d2 > d2_max ? d2 : d2_max;

@@ -47,7 +47,11 @@ void gf_integrate_kick(gf_particles *p, size_t i0, size_t i1, double dt_half_s, 
  * v* = v + (F/m + g) dt/2 (F still the previous step's force) into vp[3].
  * Per grain, the operations and their order are those of the separate
  * passes, so the results are bitwise theirs; the store is read once instead
- * of two or three times. Returns the largest squared displacement from the
+ * of two or three times. The forces and torques of [i0, i1) are zeroed
+ * once read: the next force evaluation accumulates into them, and zeroing
+ * them here, by the thread that integrates them, spares it a pass over the
+ * store (on two threads, one that moved every chunk's force lines to the
+ * core clearing them). Returns the largest squared displacement from the
  * reference positions ref[3] (last neighbour build), m^2. */
 double gf_integrate_kick_drift(gf_particles *p, size_t i0, size_t i1, int n_kicks, double dt_s, const double g_m_s2[3],
                                double *const ref[3], double *const vp[3], const gf_integrate_factors *k);

@@ -135,13 +135,17 @@ void gf_particles_permute(gf_particles *p, const size_t *perm, double *tmp)
 
 void gf_particles_clear_forces(gf_particles *p)
 {
+    gf_particles_clear_forces_from(p, 0);
+}
+
+void gf_particles_clear_forces_from(gf_particles *p, size_t first)
+{
     size_t n = p->n_local + p->n_ghost;
-    memset(p->fx_N, 0, n * sizeof(double));
-    memset(p->fy_N, 0, n * sizeof(double));
-    memset(p->fz_N, 0, n * sizeof(double));
-    memset(p->tx_N_m, 0, n * sizeof(double));
-    memset(p->ty_N_m, 0, n * sizeof(double));
-    memset(p->tz_N_m, 0, n * sizeof(double));
+    if (first >= n)
+        return;
+    double *a[6] = {p->fx_N, p->fy_N, p->fz_N, p->tx_N_m, p->ty_N_m, p->tz_N_m};
+    for (int c = 0; c < 6; ++c)
+        memset(a[c] + first, 0, (n - first) * sizeof(double));
 }
 
 double gf_particles_kinetic_energy(const gf_particles *p)

@@ -56,6 +56,8 @@ void gf_particles_remove(gf_particles *p, size_t i);
 void gf_particles_permute(gf_particles *p, const size_t *perm, double *tmp);
 /* Zeroes force and torque accumulators of locals and ghosts. */
 void gf_particles_clear_forces(gf_particles *p);
+/* The same for grains [first, n_local + n_ghost) only. */
+void gf_particles_clear_forces_from(gf_particles *p, size_t first);
 /* Total kinetic energy (translation + rotation) of mobile locals, J. */
 double gf_particles_kinetic_energy(const gf_particles *p);
 /* Total momentum of mobile locals, kg m/s. */
