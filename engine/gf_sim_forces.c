@@ -522,6 +522,9 @@ gf_status gf_sim_compute_forces(gf_sim *s)
      * which avoids fork/join costs that exceed the work below ~1000 grains. */
     const int nc = s->nl->n_chunks;
     double *store[6] = {p->fx_N, p->fy_N, p->fz_N, p->tx_N_m, p->ty_N_m, p->tz_N_m};
+    const int drift = s->drift_with_forces;
+    double d2[GF_SIM_MAX_THREADS] = {0.0}, drift_t0 = 0.0;
+    int used = 1;
 #ifdef _OPENMP
 #pragma omp parallel num_threads(s->n_threads) if (s->n_threads > 1 && n >= GF_SIM_PARALLEL_MIN_GRAINS)
 #endif
@@ -554,6 +557,22 @@ gf_status gf_sim_compute_forces(gf_sim *s)
             for (int c = t; c < nc; c += m)
                 add_from_earlier_chunks(s, c, store);
         }
+        if (drift) { /* the next step's closing and opening kicks and drift (gf_sim.c: dem_step) */
+#ifdef _OPENMP
+            if (m > 1 && m != nc) { /* a thread drifts grains other than those it summed */
+#pragma omp barrier
+            }
+#endif
+            if (t == 0)
+                used = m, drift_t0 = gf_wtime();
+            d2[t] = gf_sim_kick_drift_share(s, t, m, 2);
+        }
+    }
+    if (drift) {
+        s->drift_s = gf_wtime() - drift_t0;
+        s->drift_d2 = 0.0;
+        for (int t = 0; t < used; ++t)
+            s->drift_d2 = d2[t] > s->drift_d2 ? d2[t] : s->drift_d2;
     }
     const int nt = nc;
     s->n_contacts = 0;
@@ -568,6 +587,13 @@ gf_status gf_sim_compute_forces(gf_sim *s)
             for (int c = 0; c < 3; ++c)
                 s->walls[w].force_N[c] += s->acc[t].wall_force_N[w][c];
     }
-    s->forces_valid = 1;
+    if (drift) { /* F(t + dt) is spent: the drift zeroed it, and v* is the next step's */
+        s->drift_done = 1;
+        s->forces_valid = 0;
+        s->forces_zeroed = n;
+        s->vp_valid = 1;
+    } else {
+        s->forces_valid = 1;
+    }
     return GF_OK;
 }

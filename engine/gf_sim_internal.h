@@ -92,6 +92,12 @@ struct gf_sim {
     int vp_valid;                   /* set by the drift, consumed by the next force evaluation */
     size_t forces_zeroed;           /* grains [0, forces_zeroed) had F, T zeroed by the drift (0: none) */
     int kick_pending;               /* the last step's closing half-kick is deferred (gf_sim.c: dem_step) */
+    /* the next step's kick-drift done at the end of the force pass's parallel
+     * region (gf_sim.c: dem_step): asked for (drift_with_forces), done
+     * (drift_done, with its largest squared displacement and the first
+     * thread's wall time in it) */
+    int drift_with_forces, drift_done;
+    double drift_d2, drift_s;
     size_t ref_cap;
     double skin_m, extra_m;
     int need_build;
@@ -125,6 +131,11 @@ struct gf_sim {
 /* Evaluates contact (+ lubrication) forces and wall forces at the current
  * state into the particle store (cleared first). gf_sim_forces.c. */
 gf_status gf_sim_compute_forces(gf_sim *s);
+
+/* Thread t of m's share of the kick-drift (gf_integrate_kick_drift) with
+ * n_kicks half-kicks: the grains of its chunk. Returns their largest squared
+ * displacement since the last build. */
+double gf_sim_kick_drift_share(gf_sim *s, int t, int m, int n_kicks);
 /* Grain-grain contacts (and lubrication, when on) of rows [i0, i1) of the
  * list into f[0..5] (fx..tz), for the linear law: the blocked, vectorised
  * loop of gf_sim_pairs.c, bitwise the generic loop's results. */
