@@ -537,13 +537,18 @@ static void flush_kick(gf_sim *s)
     s->kick_pending = 0;
 }
 
+double gf_sim_kick_drift_range(gf_sim *s, size_t i0, size_t i1, int n_kicks)
+{
+    double *ref[3] = {s->x_ref, s->y_ref, s->z_ref}, *vp[3] = {s->vx_pred, s->vy_pred, s->vz_pred};
+    gf_integrate_factors k = {s->inv_mass, (s->skips & GF_SKIP_TANGENTIAL) ? NULL : s->inv_inertia, s->mobile};
+    return gf_integrate_kick_drift(s->p, i0, i1, n_kicks, s->dt_s, s->gravity_m_s2, ref, vp, &k);
+}
+
 double gf_sim_kick_drift_share(gf_sim *s, int t, int m, int n_kicks)
 {
     size_t i0, i1;
     thread_grains(s, s->p->n_local, t, m, &i0, &i1);
-    double *ref[3] = {s->x_ref, s->y_ref, s->z_ref}, *vp[3] = {s->vx_pred, s->vy_pred, s->vz_pred};
-    gf_integrate_factors k = {s->inv_mass, (s->skips & GF_SKIP_TANGENTIAL) ? NULL : s->inv_inertia, s->mobile};
-    return gf_integrate_kick_drift(s->p, i0, i1, n_kicks, s->dt_s, s->gravity_m_s2, ref, vp, &k);
+    return gf_sim_kick_drift_range(s, i0, i1, n_kicks);
 }
 
 /* The previous step's deferred closing half-kick, this step's opening

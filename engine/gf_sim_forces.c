@@ -32,6 +32,7 @@
  * reproducible (restart identity relies on it).
  */
 #include <math.h>
+#include <sched.h>
 #include <stdlib.h>
 #include <string.h>
 #ifdef _OPENMP
@@ -495,6 +496,35 @@ static void add_from_earlier_chunks(const gf_sim *s, int c, double *const store[
     }
 }
 
+/* Kick-drift of the grains of chunk c outside the reach runs (in_runs 0) or
+ * inside them (1), where the runs and the chunk start on cache lines. */
+static double drift_chunk(gf_sim *s, int c, int in_runs)
+{
+    const gf_nlist *nl = s->nl;
+    const size_t lo = nl->chunk_row[c], hi = nl->chunk_row[c + 1];
+    size_t at = lo;
+    double d2 = 0.0;
+    for (size_t r = 0; r <= nl->n_reach_runs; ++r) {
+        size_t b = r < nl->n_reach_runs ? nl->reach_run[2 * r] : hi, e = r < nl->n_reach_runs ? nl->reach_run[2 * r + 1] : hi;
+        b = b < lo ? lo : b > hi ? hi : b, e = e < lo ? lo : e > hi ? hi : e;
+        const size_t from = in_runs ? b : at, to = in_runs ? e : b;
+        if (from < to)
+            d2 = fmax(d2, gf_sim_kick_drift_range(s, from, to, 2));
+        at = e > at ? e : at;
+    }
+    return d2;
+}
+
+/* Waits until every chunk before c has finished its pair rows of force
+ * evaluation `count` (a short wait: the thread drifts its own grains first). */
+static void wait_for_earlier_chunks(gf_sim *s, int c, unsigned long count)
+{
+    for (int u = 0; u < c; ++u)
+        for (unsigned spins = 0; atomic_load_explicit(&s->acc[u].pairs_done, memory_order_acquire) != count; ++spins)
+            if (spins > 1u << 12)
+                sched_yield();
+}
+
 gf_status gf_sim_compute_forces(gf_sim *s)
 {
     gf_particles *p = s->p;
@@ -525,6 +555,7 @@ gf_status gf_sim_compute_forces(gf_sim *s)
     const int drift = s->drift_with_forces;
     double d2[GF_SIM_MAX_THREADS] = {0.0}, drift_t0 = 0.0;
     int used = 1;
+    const unsigned long count = ++s->force_count;
 #ifdef _OPENMP
 #pragma omp parallel num_threads(s->n_threads) if (s->n_threads > 1 && n >= GF_SIM_PARALLEL_MIN_GRAINS)
 #endif
@@ -534,6 +565,13 @@ gf_status gf_sim_compute_forces(gf_sim *s)
 #else
         int t = 0, m = 1;
 #endif
+        /* one chunk per thread and the drift to do: no barrier. The grains of
+         * a chunk outside the reach runs get no force from other chunks and are
+         * read by none, so its thread drifts them as soon as its own rows are
+         * done; it then waits for the earlier chunks' rows only, adds their
+         * buffers and drifts the rest (a thread that waited at a barrier for the
+         * slower chunk drifts meanwhile) */
+        const int own_chunk = drift && m == nc && m > 1;
         for (int c = t; c < nc; c += m) {
             gf_sim_accum *a = &s->acc[c];
             double *const *f = store;
@@ -548,8 +586,16 @@ gf_status gf_sim_compute_forces(gf_sim *s)
             else
                 pair_rows_table(s, i0, i1, f, a);
             wall_rows(s, i0, i1, f, a);
+            atomic_store_explicit(&a->pairs_done, count, memory_order_release);
         }
-        if (nc > 1) {
+        if (own_chunk) {
+            if (t == 0)
+                used = m, drift_t0 = gf_wtime();
+            d2[t] = drift_chunk(s, t, 0);
+            wait_for_earlier_chunks(s, t, count);
+            add_from_earlier_chunks(s, t, store);
+            d2[t] = fmax(d2[t], drift_chunk(s, t, 1));
+        } else if (nc > 1) {
 #ifdef _OPENMP
 #pragma omp barrier
 #endif
@@ -557,7 +603,7 @@ gf_status gf_sim_compute_forces(gf_sim *s)
             for (int c = t; c < nc; c += m)
                 add_from_earlier_chunks(s, c, store);
         }
-        if (drift) { /* the next step's closing and opening kicks and drift (gf_sim.c: dem_step) */
+        if (drift && !own_chunk) { /* the next step's closing and opening kicks and drift (gf_sim.c: dem_step) */
 #ifdef _OPENMP
             if (m > 1 && m != nc) { /* a thread drifts grains other than those it summed */
 #pragma omp barrier

@@ -7,6 +7,8 @@
 #ifndef GF_SIM_INTERNAL_H
 #define GF_SIM_INTERNAL_H
 
+#include <stdatomic.h>
+
 #include "contact/gf_contact.h"
 #include "contact/gf_nlist.h"
 #include "coupling/gf_coupling.h"
@@ -45,6 +47,9 @@ typedef struct gf_sim_accum {
     double wall_force_N[GF_SIM_MAX_WALLS][3];
     size_t n_contacts;
     double max_overlap_m;
+    /* the number of the force evaluation whose pair rows this chunk has
+     * finished (its buffer is complete, and it reads no grain any more) */
+    _Atomic unsigned long pairs_done;
 } gf_sim_accum;
 
 struct gf_sim {
@@ -98,6 +103,7 @@ struct gf_sim {
      * thread's wall time in it) */
     int drift_with_forces, drift_done;
     double drift_d2, drift_s;
+    unsigned long force_count;      /* force evaluations so far (gf_sim_accum.pairs_done) */
     size_t ref_cap;
     double skin_m, extra_m;
     int need_build;
@@ -136,6 +142,8 @@ gf_status gf_sim_compute_forces(gf_sim *s);
  * n_kicks half-kicks: the grains of its chunk. Returns their largest squared
  * displacement since the last build. */
 double gf_sim_kick_drift_share(gf_sim *s, int t, int m, int n_kicks);
+/* The same over grains [i0, i1). */
+double gf_sim_kick_drift_range(gf_sim *s, size_t i0, size_t i1, int n_kicks);
 /* Grain-grain contacts (and lubrication, when on) of rows [i0, i1) of the
  * list into f[0..5] (fx..tz), for the linear law: the blocked, vectorised
  * loop of gf_sim_pairs.c, bitwise the generic loop's results. */

@@ -386,15 +386,20 @@ static gf_status find_reach_runs(gf_ctx *ctx, gf_nlist *nl, size_t n)
             if ((size_t)nl->j[k] >= end)
                 nl->reach_mark[nl->j[k]] = 1;
     }
+    /* whole cache lines of doubles: loops over the runs, and over the gaps
+     * between them, start and end on lines (see split_rows) */
     const size_t line = 64 / sizeof(double);
     for (size_t i = 0; i < n; ++i) {
         if (!nl->reach_mark[i])
             continue;
+        size_t first = i / line * line, end = first + line < n ? first + line : n;
         size_t *last_end = nl->n_reach_runs ? &nl->reach_run[2 * nl->n_reach_runs - 1] : NULL;
-        if (last_end && i < *last_end + line)
-            *last_end = i + 1;
+        if (last_end && first <= *last_end)
+            *last_end = end;
         else
-            GF_TRY(append_reach_run(ctx, nl, i));
+            GF_TRY(append_reach_run(ctx, nl, first));
+        nl->reach_run[2 * nl->n_reach_runs - 1] = end;
+        i = end - 1;
     }
     return GF_OK;
 }

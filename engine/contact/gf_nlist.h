@@ -63,7 +63,7 @@ typedef struct gf_nlist {
     size_t chunk_row[65];
     /* the grains that rows of an earlier chunk reach (partners beyond that
      * chunk's last row), as runs [reach_run[2r], reach_run[2r + 1]) in index
-     * order; runs closer than a cache line of doubles are merged */
+     * order, made of whole cache lines of doubles (8 grains) */
     size_t n_reach_runs, cap_reach_runs;
     size_t *reach_run;
     uint8_t *reach_mark;     /* scratch, n */

@@ -13,7 +13,8 @@
  * its neighbour):
  *   - every partner a chunk's rows reach beyond the chunk lies in a reach
  *     run (the list's own bookkeeping);
- *   - every chunk boundary is a multiple of 8 rows (a cache line of doubles);
+ *   - every chunk boundary, and every end of a reach run, is a multiple of 8
+ *     rows (a cache line of doubles);
  *   - the force and torque on every grain (matched by id) equal those of one
  *     chunk to round-off: within 1e-12 of the largest force (torque) on any
  *     grain; one contact left out or counted twice would be ~1e-2 of it
@@ -58,10 +59,15 @@ static size_t partners_outside_runs(const gf_nlist *nl)
     return missing;
 }
 
+/* Chunk boundaries and reach runs on cache lines of doubles (the end of the
+ * store excepted). */
 static int boundaries_on_lines(const gf_nlist *nl)
 {
     for (int c = 1; c < nl->n_chunks; ++c)
         if (nl->chunk_row[c] % 8 != 0)
+            return 0;
+    for (size_t r = 0; r < 2 * nl->n_reach_runs; ++r)
+        if (nl->reach_run[r] % 8 != 0 && nl->reach_run[r] != nl->n)
             return 0;
     return 1;
 }
@@ -121,7 +127,7 @@ int main(void)
                nl->n_reach_runs, reached, s->n_contacts, df, dt);
         gf_test_check(missing == 0, __FILE__, __LINE__, "%d chunks: every partner beyond a chunk in a reach run (%zu not)",
                       chunks[k], missing);
-        gf_test_check(boundaries_on_lines(nl), __FILE__, __LINE__, "%d chunks: boundaries on multiples of 8 rows",
+        gf_test_check(boundaries_on_lines(nl), __FILE__, __LINE__, "%d chunks: boundaries and reach runs on multiples of 8 rows",
                       chunks[k]);
         gf_test_check(s->n_contacts == one->n_contacts, __FILE__, __LINE__, "%d chunks: %zu contacts, one chunk %zu",
                       chunks[k], s->n_contacts, one->n_contacts);
