@@ -537,18 +537,25 @@ static void flush_kick(gf_sim *s)
     s->kick_pending = 0;
 }
 
-double gf_sim_kick_drift_range(gf_sim *s, size_t i0, size_t i1, int n_kicks)
+static double kick_drift_range(gf_sim *s, size_t i0, size_t i1, int n_kicks)
 {
     double *ref[3] = {s->x_ref, s->y_ref, s->z_ref}, *vp[3] = {s->vx_pred, s->vy_pred, s->vz_pred};
     gf_integrate_factors k = {s->inv_mass, (s->skips & GF_SKIP_TANGENTIAL) ? NULL : s->inv_inertia, s->mobile};
     return gf_integrate_kick_drift(s->p, i0, i1, n_kicks, s->dt_s, s->gravity_m_s2, ref, vp, &k);
 }
 
-double gf_sim_kick_drift_share(gf_sim *s, int t, int m, int n_kicks)
+double gf_sim_finish_range(gf_sim *s, size_t i0, size_t i1)
+{
+    if (s->coupling)
+        gf_coupling_add_forces_range(s->coupling, s->p, i0, i1);
+    return kick_drift_range(s, i0, i1, 2);
+}
+
+double gf_sim_finish_share(gf_sim *s, int t, int m)
 {
     size_t i0, i1;
     thread_grains(s, s->p->n_local, t, m, &i0, &i1);
-    return gf_sim_kick_drift_range(s, i0, i1, n_kicks);
+    return gf_sim_finish_range(s, i0, i1);
 }
 
 /* The previous step's deferred closing half-kick, this step's opening
@@ -578,7 +585,9 @@ static double kick_drift(gf_sim *s, double h)
 #endif
         if (t == 0)
             used = m;
-        d2[t] = gf_sim_kick_drift_share(s, t, m, pending ? 2 : 1);
+        size_t i0, i1;
+        thread_grains(s, (size_t)n, t, m, &i0, &i1);
+        d2[t] = kick_drift_range(s, i0, i1, pending ? 2 : 1);
     }
     s->forces_zeroed = (size_t)n; /* gf_integrate_kick_drift zeroes what it read */
     s->forces_valid = 0;
@@ -624,12 +633,13 @@ static gf_status check_run_limits(gf_sim *s, double d2_since_build)
 
 /* One step. next_follows: the caller runs the next step straight after this
  * one, with nothing reading or changing the grains in between; then, unless
- * a fluid adds its forces after the contacts' or this step ends with a sleep
- * update, the next step's kick-drift is done by each thread on its chunk at
- * the end of this step's force region (gf_sim_forces.c), once its forces are
- * complete: one parallel region per step instead of two, and no barrier
- * between the drift and the rebuild test (the region's end is one). The
- * operations on each grain are the same, in the same order. */
+ * a fluid step or a sleep update comes between the two steps (or the fluid's
+ * held forces no longer follow the store's order), the held fluid forces,
+ * this step's closing kick and the next step's kick-drift are done by each
+ * thread on its chunk at the end of this step's force region
+ * (gf_sim_forces.c), once its contact forces are complete: one parallel
+ * region per step instead of two, and no serial pass for the fluid forces.
+ * The operations on each grain are the same, in the same order. */
 static gf_status dem_step(gf_sim *s, int next_follows)
 {
     const double h = 0.5 * s->dt_s;
@@ -650,7 +660,9 @@ static gf_status dem_step(gf_sim *s, int next_follows)
         GF_TRY(st);
     }
     const int sleep_after = s->spec.contact.sleep_speed_nd > 0.0 && (s->step + 1) % GF_SLEEP_EVERY == 0;
-    s->drift_with_forces = next_follows && !s->coupling && !sleep_after;
+    const int fluid_after = s->coupling && (s->step + 1 >= s->next_fluid_step ||
+                                            !gf_coupling_forces_in_order(s->coupling, s->p));
+    s->drift_with_forces = next_follows && !sleep_after && !fluid_after;
     gf_timer_start(&s->timers, GF_T_FORCE);
     gf_status st = gf_sim_compute_forces(s);
     gf_timer_stop(&s->timers, GF_T_FORCE);
@@ -661,7 +673,7 @@ static gf_status dem_step(gf_sim *s, int next_follows)
     }
     GF_TRY(st);
     GF_TRY(check_run_limits(s, d2));
-    if (s->coupling) {
+    if (s->coupling && !s->drift_done) { /* else added with the drift */
         gf_timer_start(&s->timers, GF_T_COUPLING);
         st = gf_coupling_add_forces(s->coupling, s->p);
         gf_timer_stop(&s->timers, GF_T_COUPLING);

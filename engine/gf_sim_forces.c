@@ -496,8 +496,9 @@ static void add_from_earlier_chunks(const gf_sim *s, int c, double *const store[
     }
 }
 
-/* Kick-drift of the grains of chunk c outside the reach runs (in_runs 0) or
- * inside them (1), where the runs and the chunk start on cache lines. */
+/* The step's end and the next one's drift (gf_sim_finish_range) for the
+ * grains of chunk c outside the reach runs (in_runs 0) or inside them (1),
+ * where the runs and the chunk start on cache lines. */
 static double drift_chunk(gf_sim *s, int c, int in_runs)
 {
     const gf_nlist *nl = s->nl;
@@ -509,7 +510,7 @@ static double drift_chunk(gf_sim *s, int c, int in_runs)
         b = b < lo ? lo : b > hi ? hi : b, e = e < lo ? lo : e > hi ? hi : e;
         const size_t from = in_runs ? b : at, to = in_runs ? e : b;
         if (from < to)
-            d2 = fmax(d2, gf_sim_kick_drift_range(s, from, to, 2));
+            d2 = fmax(d2, gf_sim_finish_range(s, from, to));
         at = e > at ? e : at;
     }
     return d2;
@@ -603,7 +604,7 @@ gf_status gf_sim_compute_forces(gf_sim *s)
             for (int c = t; c < nc; c += m)
                 add_from_earlier_chunks(s, c, store);
         }
-        if (drift && !own_chunk) { /* the next step's closing and opening kicks and drift (gf_sim.c: dem_step) */
+        if (drift && !own_chunk) { /* fluid forces, closing and opening kicks, drift (gf_sim.c: dem_step) */
 #ifdef _OPENMP
             if (m > 1 && m != nc) { /* a thread drifts grains other than those it summed */
 #pragma omp barrier
@@ -611,7 +612,7 @@ gf_status gf_sim_compute_forces(gf_sim *s)
 #endif
             if (t == 0)
                 used = m, drift_t0 = gf_wtime();
-            d2[t] = gf_sim_kick_drift_share(s, t, m, 2);
+            d2[t] = gf_sim_finish_share(s, t, m);
         }
     }
     if (drift) {

@@ -138,12 +138,13 @@ struct gf_sim {
  * state into the particle store (cleared first). gf_sim_forces.c. */
 gf_status gf_sim_compute_forces(gf_sim *s);
 
-/* Thread t of m's share of the kick-drift (gf_integrate_kick_drift) with
- * n_kicks half-kicks: the grains of its chunk. Returns their largest squared
- * displacement since the last build. */
-double gf_sim_kick_drift_share(gf_sim *s, int t, int m, int n_kicks);
-/* The same over grains [i0, i1). */
-double gf_sim_kick_drift_range(gf_sim *s, size_t i0, size_t i1, int n_kicks);
+/* The end of a step and the start of the next for grains [i0, i1), once
+ * their contact forces are complete (gf_sim.c: dem_step): the held fluid
+ * forces, the closing half-kick, the next opening half-kick and drift.
+ * Returns their largest squared displacement since the last build. */
+double gf_sim_finish_range(gf_sim *s, size_t i0, size_t i1);
+/* The same for thread t of m: the grains of its chunk. */
+double gf_sim_finish_share(gf_sim *s, int t, int m);
 /* Grain-grain contacts (and lubrication, when on) of rows [i0, i1) of the
  * list into f[0..5] (fx..tz), for the linear law: the blocked, vectorised
  * loop of gf_sim_pairs.c, bitwise the generic loop's results. */

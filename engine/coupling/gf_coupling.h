@@ -47,6 +47,13 @@ double gf_coupling_dt_max_s(const gf_coupling *c, const gf_particles *p);
 gf_status gf_coupling_fluid_step(gf_coupling *c, const gf_particles *p, double dt_s);
 /* Adds the held fluid force (drag, pressure gradient/buoyancy) on each grain to p->f. */
 gf_status gf_coupling_add_forces(gf_coupling *c, gf_particles *p);
+/* 1 when the held forces follow the store's order (no grain added, removed
+ * or reordered since the fluid step or the last gf_coupling_add_forces):
+ * then gf_coupling_add_forces_range may add them by ranges, on several
+ * threads at once (each grain's force alone: the same bits). */
+int gf_coupling_forces_in_order(const gf_coupling *c, const gf_particles *p);
+/* gf_coupling_add_forces for grains [i0, i1); needs gf_coupling_forces_in_order. */
+void gf_coupling_add_forces_range(gf_coupling *c, gf_particles *p, size_t i0, size_t i1);
 /* Excess pore pressure (relative to hydrostatic) at x, Pa. */
 double gf_coupling_excess_pressure_Pa(const gf_coupling *c, const double x_m[3]);
 /* Grid and cell-centred fields for fields.nc (borrowed arrays, x fastest). */

@@ -767,6 +767,7 @@ gf_status gf_coupling_fluid_step(gf_coupling *c, const gf_particles *p, double d
     double *const beta_fields[4] = {f->beta, f->beta_v[0], f->beta_v[1], f->beta_v[2]};
     gf_average_deinterleave(g->n_cells, c->lanes, 4, beta_fields);
     c->n_held = p->n_local;
+    c->held_epoch = p->order_epoch, c->held_epoch_known = 1;
 
     /* 3. fluid: body force = mean pressure gradient only (gravity is in p_h) */
     for (int a = 0; a < 3; ++a)
@@ -829,6 +830,41 @@ static int cmp_id(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+/* The held fluid force on grain i (hg: its held values), added to p->f:
+ * exact exponential relaxation over one DEM step under the total force (see
+ * the opening comment), F_add = phi1 K (u - v) + phi1 F_fluid,other + (phi1 - 1)(F_already + m g). */
+static void add_held_force(const gf_coupling *c, held_grain *hg, gf_particles *p, size_t i)
+{
+    if (p->flags[i] & GF_P_GLUED)
+        return;
+    double m = p->mass_kg[i];
+    double x = hg->K_kg_s * c->dt_dem_s / m;
+    if (x != hg->phi1_x) {
+        hg->phi1 = x > 1e-8 ? -expm1(-x) / x : 1.0 - 0.5 * x;
+        hg->phi1_x = x;
+    }
+    const double phi1 = hg->phi1;
+    double K = hg->K_kg_s * phi1;
+    double *f[3] = {&p->fx_N[i], &p->fy_N[i], &p->fz_N[i]};
+    double v[3] = {p->vx_m_s[i], p->vy_m_s[i], p->vz_m_s[i]};
+    for (int a = 0; a < 3; ++a)
+        *f[a] += K * (hg->uf[a] - v[a]) + phi1 * hg->f_other_N[a] + (phi1 - 1.0) * (*f[a] + m * c->setup.gravity_m_s2[a]);
+}
+
+int gf_coupling_forces_in_order(const gf_coupling *c, const gf_particles *p)
+{
+    return c->first_step ||
+           (c->held_epoch_known && c->held_epoch == p->order_epoch && c->n_held == p->n_local);
+}
+
+void gf_coupling_add_forces_range(gf_coupling *c, gf_particles *p, size_t i0, size_t i1)
+{
+    if (c->first_step)
+        return;
+    for (size_t i = i0; i < i1; ++i)
+        add_held_force(c, &c->held[i], p, i);
+}
+
 gf_status gf_coupling_add_forces(gf_coupling *c, gf_particles *p)
 {
     if (c->first_step)
@@ -838,7 +874,6 @@ gf_status gf_coupling_add_forces(gf_coupling *c, gf_particles *p)
         reordered = p->id[i] != c->held[i].id;
     if (reordered)  /* the DEM sorted or removed grains since the fluid step: look up by id */
         qsort(c->held, c->n_held, sizeof *c->held, cmp_id);
-    double dt = c->dt_dem_s;
     for (size_t i = 0; i < p->n_local; ++i) {
         held_grain *hg = &c->held[i];
         if (reordered) {
@@ -847,37 +882,27 @@ gf_status gf_coupling_add_forces(gf_coupling *c, gf_particles *p)
             if (!hg)
                 continue;  /* a grain added since the last fluid step feels the fluid from the next one */
         }
-        if (p->flags[i] & GF_P_GLUED)
-            continue;
-        /* exact exponential relaxation over one DEM step under the total force (see the opening comment):
-         * F_add = phi1 K (u - v) + phi1 F_fluid,other + (phi1 - 1)(F_already + m g) */
-        double m = p->mass_kg[i];
-        double x = hg->K_kg_s * dt / m;
-        if (x != hg->phi1_x) {
-            hg->phi1 = x > 1e-8 ? -expm1(-x) / x : 1.0 - 0.5 * x;
-            hg->phi1_x = x;
-        }
-        const double phi1 = hg->phi1;
-        double K = hg->K_kg_s * phi1;
-        double *f[3] = {&p->fx_N[i], &p->fy_N[i], &p->fz_N[i]};
-        double v[3] = {p->vx_m_s[i], p->vy_m_s[i], p->vz_m_s[i]};
-        for (int a = 0; a < 3; ++a)
-            *f[a] += K * (hg->uf[a] - v[a]) + phi1 * hg->f_other_N[a] +
-                     (phi1 - 1.0) * (*f[a] + m * c->setup.gravity_m_s2[a]);
+        add_held_force(c, hg, p, i);
     }
+    if (!reordered)
+        c->held_epoch = p->order_epoch, c->held_epoch_known = 1;
     if (reordered) {  /* restore index order for the next substep when the store order is stable */
         size_t n = p->n_local < c->n_held ? p->n_local : c->n_held;
         int same_set = p->n_local == c->n_held;
         if (same_set) {
             held_grain *tmp = malloc(n * sizeof *tmp);
             if (tmp) {
+                int all_found = 1;
                 for (size_t i = 0; i < n; ++i) {
                     held_grain key = {.id = p->id[i]};
                     held_grain *hg = bsearch(&key, c->held, c->n_held, sizeof key, cmp_id);
                     tmp[i] = hg ? *hg : (held_grain){.id = -1};
+                    all_found &= hg != NULL;
                 }
                 memcpy(c->held, tmp, n * sizeof *tmp);
                 free(tmp);
+                if (all_found)
+                    c->held_epoch = p->order_epoch, c->held_epoch_known = 1;
             }
         }
     }

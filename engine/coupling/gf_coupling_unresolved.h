@@ -45,6 +45,8 @@ struct gf_coupling {
     gf_kernel *kern;
     held_grain *held;
     size_t cap, n_held;
+    uint64_t held_epoch;          /* the store's order_epoch that held[] follows (gf_coupling_forces_in_order) */
+    int held_epoch_known;
     double *uc[3], *gp[3];        /* cell-centred velocity and excess-pressure gradient */
     double *fields[FLD_N];
     double *lanes;                /* cell fields interleaved for the per-grain transfers (gf_average.h) */

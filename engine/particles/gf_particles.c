@@ -82,6 +82,7 @@ gf_status gf_particles_add(gf_ctx *ctx, gf_particles *p, double x, double y, dou
     p->n_ghost = 0;
     GF_TRY(gf_particles_reserve(ctx, p, p->n_local + 1));
     size_t i = p->n_local++;
+    p->order_epoch++;
     p->id[i] = p->next_id++;
     p->x_m[i] = x, p->y_m[i] = y, p->z_m[i] = z;
     p->vx_m_s[i] = p->vy_m_s[i] = p->vz_m_s[i] = 0.0;
@@ -111,6 +112,7 @@ void gf_particles_remove(gf_particles *p, size_t i)
     }
     p->n_local = last;
     p->n_ghost = 0;
+    p->order_epoch++;
 }
 
 void gf_particles_permute(gf_particles *p, const size_t *perm, double *tmp)
@@ -131,6 +133,7 @@ void gf_particles_permute(gf_particles *p, const size_t *perm, double *tmp)
         tf[q] = p->flags[perm[q]];
     memcpy(p->flags, tf, n);
     p->n_ghost = 0;
+    p->order_epoch++;
 }
 
 void gf_particles_clear_forces(gf_particles *p)

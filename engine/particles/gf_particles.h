@@ -35,6 +35,7 @@ typedef struct gf_particles {
     double *radius_m, *mass_kg, *inertia_kg_m2;
     uint8_t *flags;
     int64_t next_id;
+    uint64_t order_epoch; /* changes whenever grains are added, removed or reordered */
     void *soa_block; /* owns id and the double arrays, staggered (core/gf_soa.h) */
 } gf_particles;
 
