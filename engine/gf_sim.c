@@ -21,6 +21,9 @@
  * frozen (gf_coupling_fluid_step), and every DEM step adds the held fluid
  * force after the contacts (Izard 2014 §2.3.1 sub-cycling). The preparation
  * inside a scene's build() runs dry (the coupling is created after build).
+ * Threads: one parallel region per step when steps follow one another; a
+ * step's closing kick and the next step's opening kick and drift run at the
+ * end of its force region, each thread on its own chunk (dem_step).
  */
 #include <math.h>
 #include <stdio.h>
