@@ -66,8 +66,10 @@ static gf_status keep_old(gf_ctx *ctx, gf_nlist *nl)
         return GF_FAIL(ctx, GF_ERR_NOMEM, "nlist: cannot keep the old list (%zu pairs)", np);
     if (n)
         memcpy(nl->old_row_start, nl->row_start, (n + 1) * sizeof(size_t));
-    memcpy(nl->old_j, nl->j, np * sizeof(int32_t));
-    memcpy(nl->old_hist, nl->hist, 3 * np * sizeof(double));
+    if (np) { /* the first build has no list (NULL arrays) */
+        memcpy(nl->old_j, nl->j, np * sizeof(int32_t));
+        memcpy(nl->old_hist, nl->hist, 3 * np * sizeof(double));
+    }
     nl->old_n = n;
     /* the row ids of the list being replaced become the old ones */
     int64_t *t = nl->old_row_id;
