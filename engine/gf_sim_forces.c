@@ -526,6 +526,75 @@ static void wait_for_earlier_chunks(gf_sim *s, int c, unsigned long count)
                 sched_yield();
 }
 
+/* Pair and wall rows of chunk c into the store and the chunk's buffer; then
+ * publishes that the chunk is done with the other chunks' grains. */
+static void run_chunk(gf_sim *s, int c, double *const store[6], size_t n, unsigned long count)
+{
+    gf_sim_accum *a = &s->acc[c];
+    const size_t i0 = s->nl->chunk_row[c], i1 = s->nl->chunk_row[c + 1];
+    open_chunk(s, c, store, n);
+    if (s->law->kernel == gf_contact_linear && (s->skips & GF_SKIP_TANGENTIAL))
+        pair_rows_linear_normal(s, i0, i1, store, a);
+    else if (s->law->kernel == gf_contact_linear && s->opt.generic_pair_loop)
+        pair_rows_linear(s, i0, i1, store, a);
+    else if (s->law->kernel == gf_contact_linear)
+        gf_sim_pair_rows_blocked_linear(s, i0, i1, store, a);
+    else
+        pair_rows_table(s, i0, i1, store, a);
+    wall_rows(s, i0, i1, store, a);
+    atomic_store_explicit(&a->pairs_done, count, memory_order_release);
+}
+
+/* Thread t of m, its chunks run: completes the forces of the grains it
+ * integrates and, when the step asks for it (drift), finishes them
+ * (gf_sim_finish_range: fluid forces, kicks, drift). Returns their largest
+ * squared displacement since the build (0 without drift).
+ * With one chunk per thread there is no barrier: the grains of a chunk
+ * outside the reach runs get no force from other chunks and are read by
+ * none, so its thread finishes them at once; it then waits for the earlier
+ * chunks' rows only, adds their buffers and finishes the rest (a thread that
+ * would wait at a barrier for the slower chunk drifts meanwhile). */
+static double complete_chunks(gf_sim *s, int t, int m, int drift, double *const store[6], unsigned long count)
+{
+    const int nc = s->nl->n_chunks;
+    if (drift && m == nc && m > 1) {
+        double d2 = drift_chunk(s, t, 0);
+        wait_for_earlier_chunks(s, t, count);
+        add_from_earlier_chunks(s, t, store);
+        return fmax(d2, drift_chunk(s, t, 1));
+    }
+    if (nc > 1) {
+#ifdef _OPENMP
+#pragma omp barrier
+#endif
+        for (int c = t; c < nc; c += m) /* by the thread that integrates them */
+            add_from_earlier_chunks(s, c, store);
+#ifdef _OPENMP
+        if (drift && m > 1 && m != nc) { /* a thread finishes grains other than those it completed */
+#pragma omp barrier
+        }
+#endif
+    }
+    return drift ? gf_sim_finish_share(s, t, m) : 0.0;
+}
+
+/* Contact counts, largest overlap and wall loads, summed over the chunks. */
+static void sum_chunk_totals(gf_sim *s)
+{
+    s->n_contacts = 0;
+    s->max_overlap_m = 0.0;
+    for (int w = 0; w < s->n_walls; ++w)
+        s->walls[w].force_N[0] = s->walls[w].force_N[1] = s->walls[w].force_N[2] = 0.0;
+    for (int t = 0; t < s->nl->n_chunks; ++t) {
+        s->n_contacts += s->acc[t].n_contacts;
+        if (s->acc[t].max_overlap_m > s->max_overlap_m)
+            s->max_overlap_m = s->acc[t].max_overlap_m;
+        for (int w = 0; w < s->n_walls; ++w)
+            for (int c = 0; c < 3; ++c)
+                s->walls[w].force_N[c] += s->acc[t].wall_force_N[w][c];
+    }
+}
+
 gf_status gf_sim_compute_forces(gf_sim *s)
 {
     gf_particles *p = s->p;
@@ -545,16 +614,15 @@ gf_status gf_sim_compute_forces(gf_sim *s)
     else /* the drift zeroed [0, forces_zeroed) on the threads that own them */
         gf_particles_clear_forces_from(p, s->forces_zeroed);
     s->forces_zeroed = 0;
-    /* chunk c of the list (pair-balanced rows) accumulates into the store,
+    /* chunk c of the list (cost-balanced rows) accumulates into the store,
      * and its partners in later chunks into buffer c, added to them in chunk
-     * order (open_chunk, add_from_earlier_chunks). The result
-     * depends on the chunk count (the configured thread count) only, not on
-     * how many threads actually run: small systems run the chunks serially,
-     * which avoids fork/join costs that exceed the work below ~1000 grains. */
-    const int nc = s->nl->n_chunks;
+     * order (open_chunk, add_from_earlier_chunks). The result depends on the
+     * chunk count (the configured thread count) only, not on how many threads
+     * actually run: small systems run the chunks serially, which avoids
+     * fork/join costs that exceed the work below ~1000 grains. */
     double *store[6] = {p->fx_N, p->fy_N, p->fz_N, p->tx_N_m, p->ty_N_m, p->tz_N_m};
     const int drift = s->drift_with_forces;
-    double d2[GF_SIM_MAX_THREADS] = {0.0}, drift_t0 = 0.0;
+    double d2[GF_SIM_MAX_THREADS] = {0.0}, drift_t0 = gf_wtime();
     int used = 1;
     const unsigned long count = ++s->force_count;
 #ifdef _OPENMP
@@ -566,81 +634,25 @@ gf_status gf_sim_compute_forces(gf_sim *s)
 #else
         int t = 0, m = 1;
 #endif
-        /* one chunk per thread and the drift to do: no barrier. The grains of
-         * a chunk outside the reach runs get no force from other chunks and are
-         * read by none, so its thread drifts them as soon as its own rows are
-         * done; it then waits for the earlier chunks' rows only, adds their
-         * buffers and drifts the rest (a thread that waited at a barrier for the
-         * slower chunk drifts meanwhile) */
-        const int own_chunk = drift && m == nc && m > 1;
-        for (int c = t; c < nc; c += m) {
-            gf_sim_accum *a = &s->acc[c];
-            double *const *f = store;
-            size_t i0 = s->nl->chunk_row[c], i1 = s->nl->chunk_row[c + 1];
-            open_chunk(s, c, store, n);
-            if (s->law->kernel == gf_contact_linear && (s->skips & GF_SKIP_TANGENTIAL))
-                pair_rows_linear_normal(s, i0, i1, f, a);
-            else if (s->law->kernel == gf_contact_linear && s->opt.generic_pair_loop)
-                pair_rows_linear(s, i0, i1, f, a);
-            else if (s->law->kernel == gf_contact_linear)
-                gf_sim_pair_rows_blocked_linear(s, i0, i1, f, a);
-            else
-                pair_rows_table(s, i0, i1, f, a);
-            wall_rows(s, i0, i1, f, a);
-            atomic_store_explicit(&a->pairs_done, count, memory_order_release);
-        }
-        if (own_chunk) {
-            if (t == 0)
-                used = m, drift_t0 = gf_wtime();
-            d2[t] = drift_chunk(s, t, 0);
-            wait_for_earlier_chunks(s, t, count);
-            add_from_earlier_chunks(s, t, store);
-            d2[t] = fmax(d2[t], drift_chunk(s, t, 1));
-        } else if (nc > 1) {
-#ifdef _OPENMP
-#pragma omp barrier
-#endif
-            /* each chunk's rows summed by its thread (the one that integrates them) */
-            for (int c = t; c < nc; c += m)
-                add_from_earlier_chunks(s, c, store);
-        }
-        if (drift && !own_chunk) { /* fluid forces, closing and opening kicks, drift (gf_sim.c: dem_step) */
-#ifdef _OPENMP
-            if (m > 1 && m != nc) { /* a thread drifts grains other than those it summed */
-#pragma omp barrier
-            }
-#endif
-            if (t == 0)
-                used = m, drift_t0 = gf_wtime();
-            d2[t] = gf_sim_finish_share(s, t, m);
-        }
+        for (int c = t; c < s->nl->n_chunks; c += m)
+            run_chunk(s, c, store, n, count);
+        if (t == 0)
+            used = m, drift_t0 = gf_wtime();
+        d2[t] = complete_chunks(s, t, m, drift, store, count);
     }
-    if (drift) {
-        s->drift_s = gf_wtime() - drift_t0;
-        s->drift_d2 = 0.0;
-        for (int t = 0; t < used; ++t)
-            s->drift_d2 = d2[t] > s->drift_d2 ? d2[t] : s->drift_d2;
-    }
-    const int nt = nc;
-    s->n_contacts = 0;
-    s->max_overlap_m = 0.0;
-    for (int w = 0; w < s->n_walls; ++w)
-        s->walls[w].force_N[0] = s->walls[w].force_N[1] = s->walls[w].force_N[2] = 0.0;
-    for (int t = 0; t < nt; ++t) {
-        s->n_contacts += s->acc[t].n_contacts;
-        if (s->acc[t].max_overlap_m > s->max_overlap_m)
-            s->max_overlap_m = s->acc[t].max_overlap_m;
-        for (int w = 0; w < s->n_walls; ++w)
-            for (int c = 0; c < 3; ++c)
-                s->walls[w].force_N[c] += s->acc[t].wall_force_N[w][c];
-    }
-    if (drift) { /* F(t + dt) is spent: the drift zeroed it, and v* is the next step's */
-        s->drift_done = 1;
-        s->forces_valid = 0;
-        s->forces_zeroed = n;
-        s->vp_valid = 1;
-    } else {
+    sum_chunk_totals(s);
+    if (!drift) {
         s->forces_valid = 1;
+        return GF_OK;
     }
+    /* F(t + dt) is spent (the drift zeroed it) and v* is the next step's */
+    s->drift_s = gf_wtime() - drift_t0;
+    s->drift_d2 = 0.0;
+    for (int t = 0; t < used; ++t)
+        s->drift_d2 = d2[t] > s->drift_d2 ? d2[t] : s->drift_d2;
+    s->drift_done = 1;
+    s->forces_valid = 0;
+    s->forces_zeroed = n;
+    s->vp_valid = 1;
     return GF_OK;
 }
