@@ -20,7 +20,8 @@ void gf_nlist_destroy(gf_nlist **pnl)
     if (!pnl || !*pnl)
         return;
     gf_nlist *nl = *pnl;
-    free(nl->row_start), free(nl->contacts_before), free(nl->i), free(nl->j), free(nl->image), free(nl->hist), free(nl->touching);
+    free(nl->row_start), free(nl->contacts_before);
+    free(nl->i), free(nl->j), free(nl->image), free(nl->hist), free(nl->touching);
     free(nl->cell_start), free(nl->cell_grains), free(nl->grain_cell);
     free(nl->old_row_start), free(nl->old_j), free(nl->old_hist), free(nl->old_row_id), free(nl->row_id);
     free(nl->id_to_index);
@@ -323,11 +324,12 @@ static void carry_history(gf_nlist *nl, const int64_t *id)
 
 /* Cost of the rows before i in the force pass, in units of the scan of one
  * candidate: each candidate 1, each contact (pair or wall; a pair within the
- * lubrication range counts as one) GF_NLIST_CONTACT_COST more, each row 2. Measured on the settled 1e4 bed (docs/benchmarks.md):
- * ~6 ns to scan a candidate, ~24 ns more for a contact's force and scatter,
- * and the floor's wall contacts about as dear as pairs; counting candidates
- * alone left the bottom chunk (its contacts pressed by the weight above, and
- * the floor) 9-10 % dearer than the top one. */
+ * lubrication range counts as one) GF_NLIST_CONTACT_COST more, each row 2.
+ * Measured on the settled 1e4 bed (docs/benchmarks.md): ~6 ns to scan a
+ * candidate, ~24 ns more for a contact's force and scatter, and the floor's
+ * wall contacts about as dear as pairs; counting candidates alone left the
+ * bottom chunk (its contacts pressed by the weight above, and the floor)
+ * 9-10 % dearer than the top one. */
 #define GF_NLIST_CONTACT_COST 4.0
 static double rows_cost(const gf_nlist *nl, size_t i)
 {
