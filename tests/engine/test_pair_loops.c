@@ -61,11 +61,8 @@ int main(void)
     gf_run_spec_set_param(&ctx, &col, "column_length_over_D", 8.0);
     compare(&ctx, "column collapse", &col, 1, 3000);
 
-    gf_run_spec wet = col; /* the immersed collapse's fluid (configs/column_collapse_immersed.yaml) */
-    snprintf(wet.fluid.model, sizeof wet.fluid.model, "unresolved");
-    wet.fluid.density_kg_m3 = 0.125 * wet.grains.density_kg_m3, wet.fluid.viscosity_Pa_s = 0.05;
-    wet.fluid.lubrication = 1;
-    wet.fluid.roughness_over_R = 2e-4, wet.fluid.lub_cutoff_over_R = 0.5;
+    gf_run_spec wet = col;
+    gf_test_immerse(&wet);
     compare(&ctx, "immersed column collapse", &wet, 1, 3000);
     compare(&ctx, "immersed column collapse", &wet, 2, 3000);
     return gf_test_finish();

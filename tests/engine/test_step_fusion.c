@@ -52,10 +52,7 @@ int main(void)
     compare(&ctx, "settling bed", &bed, 2, 600);
 
     gf_run_spec wet = gf_test_bed_spec(&ctx, 1200, 0.0); /* the bed settling through a viscous fluid */
-    snprintf(wet.fluid.model, sizeof wet.fluid.model, "unresolved");
-    wet.fluid.density_kg_m3 = 0.125 * wet.grains.density_kg_m3, wet.fluid.viscosity_Pa_s = 0.05;
-    wet.fluid.lubrication = 1;
-    wet.fluid.roughness_over_R = 2e-4, wet.fluid.lub_cutoff_over_R = 0.5;
+    gf_test_immerse(&wet);
     compare(&ctx, "immersed settling bed", &wet, 1, 600);
     compare(&ctx, "immersed settling bed", &wet, 2, 600);
     return gf_test_finish();

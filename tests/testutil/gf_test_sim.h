@@ -35,6 +35,17 @@ static inline gf_run_spec gf_test_bed_spec(gf_ctx *ctx, int n, double settle_nd)
     return bed;
 }
 
+/* The fluid of the immersed collapse (configs/column_collapse_immersed.yaml)
+ * on spec s: the unresolved tier, rho_f = rho_p / 8, eta_f 0.05 Pa s, Brenner
+ * lubrication closer than R/2 with roughness 2e-4 R. */
+static inline void gf_test_immerse(gf_run_spec *s)
+{
+    snprintf(s->fluid.model, sizeof s->fluid.model, "unresolved");
+    s->fluid.density_kg_m3 = 0.125 * s->grains.density_kg_m3, s->fluid.viscosity_Pa_s = 0.05;
+    s->fluid.lubrication = 1;
+    s->fluid.roughness_over_R = 2e-4, s->fluid.lub_cutoff_over_R = 0.5;
+}
+
 /* Sim with no output directory and `threads` OpenMP threads (0: default). */
 static inline gf_status gf_test_sim(gf_ctx *ctx, const gf_run_spec *spec, int threads, gf_sim **out)
 {
