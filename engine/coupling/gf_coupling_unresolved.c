@@ -884,9 +884,9 @@ gf_status gf_coupling_add_forces(gf_coupling *c, gf_particles *p)
         }
         add_held_force(c, hg, p, i);
     }
-    if (!reordered)
+    if (!reordered) {
         c->held_epoch = p->order_epoch, c->held_epoch_known = 1;
-    if (reordered) {  /* restore index order for the next substep when the store order is stable */
+    } else {  /* restore index order for the next substep when the store order is stable */
         size_t n = p->n_local < c->n_held ? p->n_local : c->n_held;
         int same_set = p->n_local == c->n_held;
         if (same_set) {
