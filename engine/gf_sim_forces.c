@@ -622,7 +622,7 @@ gf_status gf_sim_compute_forces(gf_sim *s)
      * fork/join costs that exceed the work below ~1000 grains. */
     double *store[6] = {p->fx_N, p->fy_N, p->fz_N, p->tx_N_m, p->ty_N_m, p->tz_N_m};
     const int drift = s->drift_with_forces;
-    double d2[GF_SIM_MAX_THREADS] = {0.0}, drift_t0 = gf_wtime();
+    double d2[GF_SIM_MAX_THREADS] = {0.0}, drift_t0 = 0.0;
     int used = 1;
     const unsigned long count = ++s->force_count;
 #ifdef _OPENMP

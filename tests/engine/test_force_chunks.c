@@ -32,12 +32,8 @@
 
 static gf_sim *from_checkpoint(gf_ctx *ctx, const gf_run_spec *spec, int chunks, const char *path)
 {
-    gf_sim_options opt;
-    memset(&opt, 0, sizeof opt);
-    opt.n_threads = chunks;
-    opt.restart_path = path;
     gf_sim *s = NULL;
-    GF_CHECK_OK(gf_sim_create(ctx, spec, &opt, &s), ctx);
+    GF_CHECK_OK(gf_test_sim_restart(ctx, spec, chunks, path, &s), ctx);
     if (s)
         GF_CHECK_OK(gf_sim_compute_forces(s), ctx);
     return s;

@@ -55,6 +55,17 @@ static inline gf_status gf_test_sim(gf_ctx *ctx, const gf_run_spec *spec, int th
     return gf_sim_create(ctx, spec, &opt, out);
 }
 
+/* The same, continued from the HDF5 checkpoint at restart_path. */
+static inline gf_status gf_test_sim_restart(gf_ctx *ctx, const gf_run_spec *spec, int threads, const char *restart_path,
+                                            gf_sim **out)
+{
+    gf_sim_options opt;
+    memset(&opt, 0, sizeof opt);
+    opt.n_threads = threads;
+    opt.restart_path = restart_path;
+    return gf_sim_create(ctx, spec, &opt, out);
+}
+
 /* 1 when two stores hold the same grains, in the same order, with the same
  * bytes in every position, velocity and spin (restart checks). */
 static inline int gf_test_same_motion(const gf_particles *a, const gf_particles *b)
