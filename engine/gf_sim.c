@@ -425,6 +425,7 @@ static gf_status create_inner(gf_sim *s, const gf_run_spec *spec, const gf_sim_o
                        "hop could be taken for one at rest)", s->spec.contact.sleep_speed_nd);
     s->n_threads = pick_threads(opt);
     s->sort_every = s->opt.sort_every == 0 ? GF_SIM_SORT_EVERY_DEFAULT : (s->opt.sort_every < 0 ? 0 : s->opt.sort_every);
+    s->store_layout = -1;
     s->gravity_m_s2[1] = -s->spec.gravity_m_s2; /* y is vertical (docs/output.md) unless the scene says */
     gf_rng_seed(&s->rng, s->spec.seed);
     GF_TRY(gf_particles_create(s->ctx, 1024, &s->p));

@@ -46,6 +46,7 @@ static gf_status write_all(gf_sim *s, gf_restart *r)
     GF_TRY(gf_restart_put_u64(r, "rng", 4, s->rng.s));
     GF_TRY(gf_restart_put_f64(r, "gravity", 3, s->gravity_m_s2));
     GF_TRY(gf_restart_put_i64(r, "sort_state", 1, (const int64_t[1]){s->n_rebuilds}));
+    GF_TRY(gf_restart_put_i64(r, "sort_layout", 1, (const int64_t[1]){s->store_layout}));
     uint8_t active[GF_SIM_MAX_WALLS];
     double wall_force[3 * GF_SIM_MAX_WALLS];
     for (int w = 0; w < s->n_walls; ++w) {
@@ -108,6 +109,30 @@ gf_status gf_sim_checkpoint(gf_sim *s, const char *path)
         return st;
     }
     return gf_restart_close(&r);
+}
+
+/* A store sorted for another thread layout (a bed prepared on one thread and
+ * continued on two, or the reverse) is sorted into this run's at once: the
+ * threads' chunks are contiguous ranges of the store, and in the other order
+ * the cut between them is a jagged surface whose grains cross between the
+ * cores' caches at every step (docs/benchmarks.md, "Two cores: the cut
+ * between the chunks"; a settled bed may not reach its next scheduled sort
+ * for thousands of steps). The run is then not the bitwise continuation of
+ * the checkpointed one, which it could not be anyway: its chunks differ. The
+ * list is rebuilt at the current positions (the contact history follows by
+ * ids, the forces and the wall history move with the grains); the sort
+ * schedule (sort_state) is left as it was. */
+static gf_status resort_for_threads(gf_sim *s, gf_restart *r)
+{
+    if (!gf_restart_has(r, "sort_layout"))
+        return GF_OK;
+    int64_t layout = -1;
+    GF_TRY(gf_restart_get_i64(r, "sort_layout", 1, &layout));
+    s->store_layout = (int)layout;
+    if (layout < 0 || layout == gf_sim_sort_layout(s) || !gf_sim_sorts(s))
+        return GF_OK;
+    GF_TRY(gf_sim_sort_grains(s));
+    return gf_sim_rebuild_unscheduled(s);
 }
 
 static gf_status read_all(gf_sim *s, gf_restart *r)
@@ -176,7 +201,8 @@ static gf_status read_all(gf_sim *s, gf_restart *r)
                          (long long)ids[2 * q], (long long)ids[2 * q + 1]);
     free(ids), free(h);
     s->forces_valid = 1;
-    return st;
+    GF_TRY(st);
+    return resort_for_threads(s, r);
 }
 
 gf_status gf_sim_restore(gf_sim *s, const char *path)

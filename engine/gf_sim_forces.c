@@ -213,21 +213,31 @@ gf_status gf_sim_rebuild_from_ref(gf_sim *s)
     return build_wall_candidates(s);
 }
 
-gf_status gf_sim_rebuild(gf_sim *s)
+static gf_status rebuild(gf_sim *s, int scheduled)
 {
     gf_particles *p = s->p;
     GF_TRY(gf_sim_reserve(s, p->n_local));
     gf_nlist_geom g = list_geom(s);
     gf_nlist_wrap(&g, p->n_local, p->x_m, p->y_m, p->z_m);
-    /* spatial order (gf_sim_sort.c): on a schedule of the rebuild count alone */
-    if (s->sort_every > 0 && (p->n_local >= GF_SIM_SORT_MIN_GRAINS || s->opt.sort_every > 0) &&
-        s->n_rebuilds % s->sort_every == 0)
-        GF_TRY(gf_sim_sort_grains(s));
-    s->n_rebuilds++;
+    if (scheduled) { /* spatial order (gf_sim_sort.c): on a schedule of the rebuild count alone */
+        if (gf_sim_sorts(s) && s->n_rebuilds % s->sort_every == 0)
+            GF_TRY(gf_sim_sort_grains(s));
+        s->n_rebuilds++;
+    }
     memcpy(s->x_ref, p->x_m, p->n_local * sizeof(double));
     memcpy(s->y_ref, p->y_m, p->n_local * sizeof(double));
     memcpy(s->z_ref, p->z_m, p->n_local * sizeof(double));
     return gf_sim_rebuild_from_ref(s);
+}
+
+gf_status gf_sim_rebuild(gf_sim *s)
+{
+    return rebuild(s, 1);
+}
+
+gf_status gf_sim_rebuild_unscheduled(gf_sim *s)
+{
+    return rebuild(s, 0);
 }
 
 static inline void cross(const double a[3], const double b[3], double c[3])

@@ -130,6 +130,7 @@ struct gf_sim {
     int sort_every;             /* rebuilds between sorts; 0: never */
     long n_rebuilds;            /* gf_sim_rebuild calls (checkpointed: the sort schedule) */
     long n_sorts;               /* sorts that moved a grain */
+    int store_layout;           /* order the store was last sorted into (gf_sim_sort_layout); -1: never sorted */
     /* work this run does not need (gf_sim_skips.c): GF_SKIP_* bits, decided once at creation */
     unsigned skips;
 };
@@ -152,6 +153,8 @@ void gf_sim_pair_rows_blocked_linear(gf_sim *s, size_t i0, size_t i1, double *co
 /* Rebuilds the neighbour list from the current positions (wrapping periodic
  * axes first). gf_sim_forces.c. */
 gf_status gf_sim_rebuild(gf_sim *s);
+/* The same without the sort schedule (no sort, the rebuild count unchanged). */
+gf_status gf_sim_rebuild_unscheduled(gf_sim *s);
 /* Allocates per-grain sim arrays (wall history, reference positions) for n grains. */
 gf_status gf_sim_reserve(gf_sim *s, size_t n);
 /* Re-strides the wall history after a wall was added (history kept). */
@@ -160,6 +163,12 @@ gf_status gf_sim_relayout_walls(gf_sim *s, int n_walls_old);
  * per-grain array of the sim; called by gf_sim_rebuild every sort_every
  * rebuilds. gf_sim_sort.c. */
 gf_status gf_sim_sort_grains(gf_sim *s);
+/* The order gf_sim_sort_grains puts this sim's store in: 0 Morton order
+ * (one thread, or a store too small to run its chunks in parallel), 1 layers
+ * across the cut axis (threads). */
+int gf_sim_sort_layout(const gf_sim *s);
+/* 1 when this sim sorts its store at all (sort_every, store size). */
+int gf_sim_sorts(const gf_sim *s);
 /* Grains below which the default schedule does not sort (the store fits in the caches). */
 #define GF_SIM_SORT_MIN_GRAINS 2048
 /* Default sort period, in neighbour-list rebuilds. */

@@ -132,7 +132,8 @@ gf_status gf_sim_sort_grains(gf_sim *s)
         return GF_FAIL(s->ctx, GF_ERR_NOMEM, "sim: cannot allocate the grain sort (%zu grains)", n);
     }
     const double *c[3] = {p->x_m, p->y_m, p->z_m};
-    if (s->n_threads > 1 && n >= GF_SIM_PARALLEL_MIN_GRAINS) {
+    s->store_layout = gf_sim_sort_layout(s);
+    if (s->store_layout == 1) {
         /* layers of cells across the cut axis, Morton order within a layer:
          * any split of the store into chunks is then a plane, and the grains
          * next to it lie together in memory (few cache lines to exchange) */
@@ -199,6 +200,16 @@ gf_status gf_sim_sort_grains(gf_sim *s)
     }
     free(key), free(perm), free(count), free(tmp);
     return GF_OK;
+}
+
+int gf_sim_sort_layout(const gf_sim *s)
+{
+    return s->n_threads > 1 && s->p->n_local >= GF_SIM_PARALLEL_MIN_GRAINS;
+}
+
+int gf_sim_sorts(const gf_sim *s)
+{
+    return s->sort_every > 0 && (s->p->n_local >= GF_SIM_SORT_MIN_GRAINS || s->opt.sort_every > 0);
 }
 
 gf_status gf_sim_sort(gf_sim *s)

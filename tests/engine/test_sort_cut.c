@@ -19,10 +19,19 @@
  *   - the sort reorders without losing a grain (ids a permutation).
  * Measured figures on the 1e4 benchmark bed: docs/benchmarks.md, "Two cores:
  * the cut between the chunks".
+ *
+ * A store sorted on one thread and continued from its checkpoint on two is
+ * sorted into the two-thread order at once (gf_sim_checkpoint.c,
+ * resort_for_threads): the same bound on the cache lines across the cut
+ * holds right after the restart (and fails when sorting is off, the store
+ * kept in Morton order), and the continuation follows the one-thread run
+ * grain by grain to round-off (contact history carried over by ids).
  */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "gf_sim_internal.h"
 #include "gf_test.h"
@@ -98,10 +107,71 @@ static void check_bed(gf_ctx *ctx, const char *what, double width_over_D)
     gf_sim_destroy(&morton), gf_sim_destroy(&slab);
 }
 
+static gf_sim *sim_with(gf_ctx *ctx, const gf_run_spec *spec, int threads, int sort_every, const char *restart)
+{
+    gf_sim_options opt;
+    memset(&opt, 0, sizeof opt);
+    opt.n_threads = threads, opt.sort_every = sort_every, opt.restart_path = restart;
+    gf_sim *s = NULL;
+    GF_CHECK_OK(gf_sim_create(ctx, spec, &opt, &s), ctx);
+    return s;
+}
+
+/* Largest |a - b| of positions over grains of the same id, in D. */
+static double largest_offset(const gf_particles *a, const gf_particles *b, double D)
+{
+    size_t n = a->n_local;
+    double *at = malloc(3 * n * sizeof *at), d = 0.0;
+    for (size_t i = 0; at && i < n; ++i) {
+        size_t k = (size_t)b->id[i];
+        at[3 * k] = b->x_m[i], at[3 * k + 1] = b->y_m[i], at[3 * k + 2] = b->z_m[i];
+    }
+    for (size_t i = 0; at && i < n; ++i) {
+        size_t k = (size_t)a->id[i];
+        d = fmax(d, fmax(fabs(a->x_m[i] - at[3 * k]), fmax(fabs(a->y_m[i] - at[3 * k + 1]), fabs(a->z_m[i] - at[3 * k + 2]))));
+    }
+    free(at);
+    return at ? d / D : INFINITY;
+}
+
+static void check_restart_on_two_threads(gf_ctx *ctx)
+{
+    gf_run_spec bed = gf_test_bed_spec(ctx, 2000, 1.0);
+    gf_run_spec_set_param(ctx, &bed, "width_over_D", 24.0);
+    char path[512];
+    snprintf(path, sizeof path, "%s/sort_cut_%d.h5", getenv("GF_BINARY_DIR") ? getenv("GF_BINARY_DIR") : "/tmp",
+             (int)getpid());
+    gf_sim *one = sim_with(ctx, &bed, 1, 20, NULL); /* sorted at its first rebuild: Morton order */
+    if (!one)
+        return;
+    GF_CHECK_OK(gf_sim_checkpoint(one, path), ctx);
+    gf_run_spec_set_param(ctx, &bed, "settle_time_nd", 0.0); /* the checkpoint overwrites the bed */
+    gf_sim *two = sim_with(ctx, &bed, 2, 20, path), *kept = sim_with(ctx, &bed, 2, -1, path);
+    if (two && kept) {
+        size_t split = two->nl->chunk_row[1];
+        cut_reach m = reach_across(one, split), c = reach_across(two, split), k = reach_across(kept, split);
+        printf("restart on 2 threads: lines across the cut at %zu: Morton %zu, re-sorted %zu, sorting off %zu\n", split,
+               m.lines, c.lines, k.lines);
+        gf_test_check(c.grains > 0 && (double)c.lines <= 0.6 * (double)m.lines, __FILE__, __LINE__,
+                      "restart on 2 threads: cache lines across the cut %zu <= 0.6 x Morton's %zu", c.lines, m.lines);
+        gf_test_check((double)k.lines > 0.6 * (double)m.lines, __FILE__, __LINE__,
+                      "restart with sorting off keeps the Morton order (%zu lines against %zu)", k.lines, m.lines);
+        gf_test_check(ids_are_permutation(two->p), __FILE__, __LINE__, "re-sorted store holds every grain once");
+        GF_CHECK_OK(gf_sim_advance(one, 300), ctx);
+        GF_CHECK_OK(gf_sim_advance(two, 300), ctx);
+        double d = largest_offset(one->p, two->p, bed.grains.diameter_m);
+        printf("  300 steps on: largest offset from the one-thread run %.3g D\n", d);
+        gf_test_check(d < 1e-9, __FILE__, __LINE__, "re-sorted restart follows the run (offset %.3g D < 1e-9 D)", d);
+    }
+    gf_sim_destroy(&one), gf_sim_destroy(&two), gf_sim_destroy(&kept);
+    remove(path);
+}
+
 int main(void)
 {
     gf_ctx ctx = {0};
     check_bed(&ctx, "tall bed (6 D wide)", 6.0);
     check_bed(&ctx, "flat bed (24 D wide)", 24.0);
+    check_restart_on_two_threads(&ctx);
     return gf_test_finish();
 }
