@@ -9,8 +9,9 @@
  *     the list from them, which reproduces the original list, pair order
  *     included (so forces are summed in the same order), and the rebuild
  *     criterion sees the same displacements;
- *   - the store in its current order (the spatial sort permutes it, gf_sim_sort.c)
- *     and the rebuild count that schedules the next sort;
+ *   - the store in its current order (the spatial sort permutes it, gf_sim_sort.c),
+ *     the rebuild count that schedules the next sort and the layout of that
+ *     order (one thread or several: a run on the other layout re-sorts);
  *   - tangential history of grain pairs keyed by global ids, and of
  *     (grain, wall) pairs; wall active flags, gravity (a scene may tilt it
  *     at start), RNG state, clock and step count, contact statistics.
