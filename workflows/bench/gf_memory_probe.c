@@ -19,6 +19,7 @@
  *
  * usage: gf-memory-probe [ROUNDS] [PREFETCH_DISTANCE]   (defaults 3, 32)
  */
+#define _POSIX_C_SOURCE 200809L /* clock_gettime */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
