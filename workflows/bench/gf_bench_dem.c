@@ -29,6 +29,8 @@
  * (0: the engine's default, -1: never sort). --sort-bed PREFIX loads the bed,
  * sorts its store by space (gf_sim_sort), writes it as PREFIX_<N>.h5 and
  * times nothing: a bed kept by a build without the sort, made comparable.
+ * A bed sorted for one thread layout is re-sorted into another's when a run
+ * with that layout loads it (gf_sim_checkpoint.c), unless --sort-every -1.
  */
 #include <math.h>
 #include <stdio.h>
