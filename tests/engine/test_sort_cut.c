@@ -25,7 +25,8 @@
  * resort_for_threads): the same bound on the cache lines across the cut
  * holds right after the restart (and fails when sorting is off, the store
  * kept in Morton order), and the continuation follows the one-thread run
- * grain by grain to round-off (contact history carried over by ids).
+ * grain by grain to round-off (contact history carried over by ids), dry
+ * and immersed (the held fluid forces are keyed by ids too).
  */
 #include <math.h>
 #include <stdio.h>
@@ -134,24 +135,28 @@ static double largest_offset(const gf_particles *a, const gf_particles *b, doubl
     return at ? d / D : INFINITY;
 }
 
-static void check_restart_on_two_threads(gf_ctx *ctx)
+static void check_restart_on_two_threads(gf_ctx *ctx, int immersed)
 {
     gf_run_spec bed = gf_test_bed_spec(ctx, 2000, 1.0);
     gf_run_spec_set_param(ctx, &bed, "width_over_D", 24.0);
+    if (immersed)
+        gf_test_immerse(&bed);
     char path[512];
     snprintf(path, sizeof path, "%s/sort_cut_%d.h5", getenv("GF_BINARY_DIR") ? getenv("GF_BINARY_DIR") : "/tmp",
              (int)getpid());
     gf_sim *one = sim_with(ctx, &bed, 1, 20, NULL); /* sorted at its first rebuild: Morton order */
     if (!one)
         return;
+    if (immersed) /* fluid steps before the checkpoint: held fluid forces cross the restart */
+        GF_CHECK_OK(gf_sim_advance(one, 100), ctx);
     GF_CHECK_OK(gf_sim_checkpoint(one, path), ctx);
     gf_run_spec_set_param(ctx, &bed, "settle_time_nd", 0.0); /* the checkpoint overwrites the bed */
     gf_sim *two = sim_with(ctx, &bed, 2, 20, path), *kept = sim_with(ctx, &bed, 2, -1, path);
     if (two && kept) {
         size_t split = two->nl->chunk_row[1];
         cut_reach m = reach_across(one, split), c = reach_across(two, split), k = reach_across(kept, split);
-        printf("restart on 2 threads: lines across the cut at %zu: Morton %zu, re-sorted %zu, sorting off %zu\n", split,
-               m.lines, c.lines, k.lines);
+        printf("%s restart on 2 threads: lines across the cut at %zu: Morton %zu, re-sorted %zu, sorting off %zu\n",
+               immersed ? "immersed" : "dry", split, m.lines, c.lines, k.lines);
         gf_test_check(c.grains > 0 && (double)c.lines <= 0.6 * (double)m.lines, __FILE__, __LINE__,
                       "restart on 2 threads: cache lines across the cut %zu <= 0.6 x Morton's %zu", c.lines, m.lines);
         gf_test_check((double)k.lines > 0.6 * (double)m.lines, __FILE__, __LINE__,
@@ -172,6 +177,7 @@ int main(void)
     gf_ctx ctx = {0};
     check_bed(&ctx, "tall bed (6 D wide)", 6.0);
     check_bed(&ctx, "flat bed (24 D wide)", 24.0);
-    check_restart_on_two_threads(&ctx);
+    check_restart_on_two_threads(&ctx, 0);
+    check_restart_on_two_threads(&ctx, 1);
     return gf_test_finish();
 }
