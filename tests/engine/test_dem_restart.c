@@ -27,12 +27,7 @@
 static gf_status from_checkpoint(gf_ctx *ctx, const gf_run_spec *spec, int threads, int sort_every, const char *path,
                                  gf_sim **out)
 {
-    gf_sim_options opt;
-    memset(&opt, 0, sizeof opt);
-    opt.n_threads = threads;
-    opt.sort_every = sort_every;
-    opt.restart_path = path;
-    return gf_sim_create(ctx, spec, &opt, out);
+    return gf_test_sim_sorted(ctx, spec, threads, sort_every, path, out);
 }
 
 /* A settled frictional bed (1200 grains, mu = 0.5, ~4 contacts per grain),

@@ -110,11 +110,8 @@ static void check_bed(gf_ctx *ctx, const char *what, double width_over_D)
 
 static gf_sim *sim_with(gf_ctx *ctx, const gf_run_spec *spec, int threads, int sort_every, const char *restart)
 {
-    gf_sim_options opt;
-    memset(&opt, 0, sizeof opt);
-    opt.n_threads = threads, opt.sort_every = sort_every, opt.restart_path = restart;
     gf_sim *s = NULL;
-    GF_CHECK_OK(gf_sim_create(ctx, spec, &opt, &s), ctx);
+    GF_CHECK_OK(gf_test_sim_sorted(ctx, spec, threads, sort_every, restart, &s), ctx);
     return s;
 }
 

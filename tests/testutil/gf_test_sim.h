@@ -66,6 +66,17 @@ static inline gf_status gf_test_sim_restart(gf_ctx *ctx, const gf_run_spec *spec
     return gf_sim_create(ctx, spec, &opt, out);
 }
 
+/* The same with a sort period (gf_sim_options.sort_every) and an optional
+ * checkpoint to continue from (NULL: fresh start). */
+static inline gf_status gf_test_sim_sorted(gf_ctx *ctx, const gf_run_spec *spec, int threads, int sort_every,
+                                           const char *restart_path, gf_sim **out)
+{
+    gf_sim_options opt;
+    memset(&opt, 0, sizeof opt);
+    opt.n_threads = threads, opt.sort_every = sort_every, opt.restart_path = restart_path;
+    return gf_sim_create(ctx, spec, &opt, out);
+}
+
 /* 1 when two stores hold the same grains, in the same order, with the same
  * bytes in every position, velocity and spin (restart checks). */
 static inline int gf_test_same_motion(const gf_particles *a, const gf_particles *b)
