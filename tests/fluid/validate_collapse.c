@@ -27,7 +27,8 @@
  * KEY=VALUE sets a scene parameter, fluid.cell_over_D as cell_over_D=X, the
  * drag closure as drag=NAME, contact.t_contact_nd and contact.friction as
  * t_contact_nd=X and friction=X, the random seed as seed=N, the aspect ratio
- * as a=X.
+ * as a=X; seeds=N (mode check) runs seeds seed .. seed + N - 1 of both columns
+ * and applies the criteria to their ensemble (ensemble()).
  * MODE "viscous" (default); "held": the gate is put back after start(), to
  * measure how far the column compacts by itself in the fluid (interior Phi at
  * the end is printed); "sediment": the thesis' loose protocol, the column
