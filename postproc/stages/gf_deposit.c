@@ -127,6 +127,7 @@ gf_status gf_deposit_envelope(gf_ctx *ctx, const double *x, const double *y, con
             ib = b;
     const double H = h[ib];
     out->height_m = H;
+    out->back_height_m = nb > 1 ? fmax(h[0], h[1]) : h[0];
     double *bx = malloc(nb * sizeof *bx), *by = malloc(nb * sizeof *by);
     if (!bx || !by) {
         free(bx), free(by);

@@ -14,6 +14,10 @@
  * are not part of the deposit.
  *   R_inf  = the furthest right edge of the chain (from the back wall)
  *   H_inf  = largest bin height (the thesis's "maximum height")
+ *   H_back = largest height of the two bins against the wall (x < 2 D): over
+ *            the initial H0 it tells whether the column's top survived (~1,
+ *            Rondon et al. 2011's dense columns) or the whole column flowed
+ *            and sank (below ~0.9; validate_collapse's deposit criterion)
  *   flank  = least-squares line through the bins beyond the highest one with
  *            0.2 H_inf <= h <= 0.8 H_inf; flank angle = atan(-slope)
  *   shape  = trapezoid when the flank line reaches H_inf at a distance
@@ -29,7 +33,7 @@
 #include "core/gf_status.h"
 
 typedef struct gf_deposit {
-    double runout_m, height_m, flank_angle_deg, plateau_length_m;
+    double runout_m, height_m, back_height_m, flank_angle_deg, plateau_length_m;
     int trapezoid;        /* 1 trapezoid, 0 triangle, -1 undetermined (too few flank bins) */
     size_t n_bins;        /* bins of the heap */
     double bin_m;

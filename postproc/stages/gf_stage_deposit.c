@@ -4,7 +4,8 @@
  *
  * Final frame -> gf_deposit_envelope (method in gf_deposit.h): R_inf from
  * the back wall, H_inf, (R_inf − R0)/R0 and H_inf/R0 with R0 the
- * column_length_m attribute, the shape (triangle / trapezoid) and the flank
+ * column_length_m attribute, the height at the back wall over H0 (whether
+ * the column's top survived), the shape (triangle / trapezoid) and the flank
  * angle. Every frame -> the heap front x_front(t) (same binning, so a grain
  * that rolls ahead does not count); if particles.nc holds a single frame,
  * diagnostics front_position is used instead. The maximum front speed is
@@ -28,6 +29,7 @@ const gf_post_col gf_stage_deposit_cols[] = {
     {"R_inf_over_R0", 0, "1", "final runout over the initial column length"},
     {"runout_norm", 0, "1", "normalised runout (R_inf - R0)/R0"},
     {"H_inf_over_R0", 0, "1", "final height over the initial column length"},
+    {"H_back_over_H0", 0, "1", "final height at the back wall (x < 2 D) over the initial column height"},
     {"deposit_shape", 1, "", "deposit shape (triangle or trapezoid)"},
     {"flank_angle_deg", 0, "degree", "slope angle of the collapsed flank"},
     {"plateau_length_m", 0, "m", "length of the full-height plateau at the back"},
@@ -100,6 +102,8 @@ gf_status gf_stage_deposit(gf_ctx *ctx, const gf_stage_in *in, const gf_stage_op
             gf_post_row_set(row, "runout_norm", (dep.runout_m - R0) / R0);
             gf_post_row_set(row, "H_inf_over_R0", dep.height_m / R0);
         }
+        if (H0 > 0.0)
+            gf_post_row_set(row, "H_back_over_H0", dep.back_height_m / H0);
         gf_post_row_set_text(row, "deposit_shape",
                              dep.trapezoid < 0 ? "undetermined" : dep.trapezoid ? "trapezoid" : "triangle");
         gf_post_row_set(row, "flank_angle_deg", dep.flank_angle_deg);

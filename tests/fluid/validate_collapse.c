@@ -28,7 +28,10 @@
  * drag closure as drag=NAME, contact.t_contact_nd and contact.friction as
  * t_contact_nd=X and friction=X, the random seed as seed=N, the aspect ratio
  * as a=X; seeds=N (mode check) runs seeds seed .. seed + N - 1 of both columns
- * and applies the criteria to their ensemble (ensemble()).
+ * and applies the criteria to their ensemble (ensemble()); loose=sediment (mode
+ * check) prepares the loose column by the thesis' protocol (mode "sediment")
+ * instead of packing it at 0.55 (loose=packed, the default);
+ * sediment_T_visq=X sets the sedimentation time (sediment_T_visq()).
  * MODE "viscous" (default); "held": the gate is put back after start(), to
  * measure how far the column compacts by itself in the fluid (interior Phi at
  * the end is printed); "sediment": the thesis' loose protocol, the column
@@ -91,6 +94,7 @@ typedef struct run_args {
 } run_args;
 
 static double aspect = 0.5, r0_over_D = 16.0; /* a = H0 / R0 (key a=X), R0 / D (key column_length_over_D=X) */
+static double sediment_tv = 0.0;              /* key sediment_T_visq=X; 0: sediment_T_visq() */
 static double h0_m(void) { return aspect * r0_over_D * D; }
 static double t_visq_s(void) { return ETA / ((RHO_P - RHO_F) * G * h0_m()); }
 
@@ -104,10 +108,14 @@ static int apply_keys(gf_ctx *ctx, gf_run_spec *spec, int argc, char **argv)
             return 1;
         }
         snprintf(key, sizeof key, "%.*s", (int)(eq - argv[a]), argv[a]);
-        if (strcmp(key, "seeds") == 0)
-            continue; /* main's: the check's ensemble size */
+        if (strcmp(key, "seeds") == 0 || strcmp(key, "loose") == 0)
+            continue; /* main's: the check's ensemble size and loose protocol */
         if (strcmp(key, "column_length_over_D") == 0)
             r0_over_D = atof(eq + 1);
+        if (strcmp(key, "sediment_T_visq") == 0) {
+            sediment_tv = atof(eq + 1);
+            continue;
+        }
         if (strcmp(key, "a") == 0)
             spec->aspect_ratio_a = aspect = atof(eq + 1);
         else if (strcmp(key, "cell_over_D") == 0)
@@ -262,11 +270,20 @@ static void print_series_line(double t, double front, const double pb[N_GAUGE], 
  * Mode "sediment", the thesis' loose protocol (spec §7.3: the grains settle inside the viscous fluid):
  * the prepared column, gate closed, is stretched vertically by SEDIMENT_STRETCH about the floor (solid
  * fraction ~0.37, no contact left), every grain at rest, and sediments through the fluid for
- * SEDIMENT_T_VISQ; the gate is then removed. The column's height is what the sedimentation leaves
+ * sediment_T_visq(); the gate is then removed. The column's height is what the sedimentation leaves
  * (the grain count is the preparation's), so its aspect ratio differs from the requested one.
  */
-enum { SEDIMENT_T_VISQ = 6000 };
 #define SEDIMENT_STRETCH 1.6
+
+/* The suspension falls 0.6 H0 at its hindered speed u_s (Richardson-Zaki at phi ~0.37: ~0.12 of Stokes'),
+ * so the time is 0.6 H0 / u_s, and in T_visq = eta/(drho g H0) it grows as (H0/D)^2: 6000 T_visq at the
+ * thesis' H0 = 8 D (~1e-6 m g D of kinetic energy per grain left), 54 000 at 24 D. */
+static double sediment_T_visq(void)
+{
+    double h_over_8D = h0_m() / (8.0 * D);
+    return sediment_tv > 0.0 ? sediment_tv : 6000.0 * h_over_8D * h_over_8D;
+}
+
 static int sediment_behind_gate(gf_sim *sim, double *t_release)
 {
     gf_particles *p = gf_sim_particles(sim);
@@ -277,7 +294,7 @@ static int sediment_behind_gate(gf_sim *sim, double *t_release)
             p->wx_rad_s[i] = p->wy_rad_s[i] = p->wz_rad_s[i] = 0.0;
         }
     if (gf_sim_rebuild(sim) != GF_OK ||
-        gf_sim_advance(sim, (long)ceil(SEDIMENT_T_VISQ * t_visq_s() / gf_sim_dt_s(sim))) != GF_OK)
+        gf_sim_advance(sim, (long)ceil(sediment_T_visq() * t_visq_s() / gf_sim_dt_s(sim))) != GF_OK)
         return 1;
     gf_measure_domain d;
     gf_sim_box(sim, d.lo_m, d.hi_m, d.periodic);
@@ -472,10 +489,17 @@ int main(int argc, char **argv)
 {
     run_args a = {argc > 1 ? atof(argv[1]) : 0.6, argc > 2 ? atof(argv[2]) : 1.2e4, argc > 3 ? atoi(argv[3]) : 0,
                   argc > 4 ? argv[4] : "viscous", 0, argc > 5 ? argc - 5 : 0, argv + 5};
-    int n_seeds = 1;
+    int n_seeds = 1, loose_sediments = 0;
     for (int k = 0; k < a.argc; ++k)
         if (strncmp(a.argv[k], "seeds=", 6) == 0)
             n_seeds = atoi(a.argv[k] + 6);
+        else if (strncmp(a.argv[k], "loose=", 6) == 0) {
+            loose_sediments = strcmp(a.argv[k] + 6, "sediment") == 0;
+            if (!loose_sediments && strcmp(a.argv[k] + 6, "packed") != 0) {
+                fprintf(stderr, "validate_collapse: loose= takes packed or sediment, got '%s'\n", a.argv[k] + 6);
+                return 1;
+            }
+        }
     if (n_seeds < 1 || n_seeds > MAX_SEEDS) {
         fprintf(stderr, "validate_collapse: seeds must be in 1..%d\n", MAX_SEEDS);
         return 1;
@@ -494,6 +518,8 @@ int main(int argc, char **argv)
     run_args al = a;
     a.mode = al.mode = "viscous";
     al.phi = 0.55;
+    if (loose_sediments)
+        al.mode = "sediment";
     collapse_run *dense[MAX_SEEDS], *loose[MAX_SEEDS];
     for (int s = 0; s < n_seeds && status == 0; ++s) {
         a.seed_offset = al.seed_offset = s;

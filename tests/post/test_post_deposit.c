@@ -142,6 +142,10 @@ static void run_heap(const char *name, double H, double plateau, double R, const
     GF_CHECK(sh && strcmp(sh, shape) == 0);
     GF_CHECK_REL(gf_post_row_get(&row, "runout_norm"), (Rinf - R0) / R0, 1e-12);
     GF_CHECK_REL(gf_post_row_get(&row, "H_inf_over_R0"), Hinf / R0, 1e-12);
+    /* height at the back wall (x < 2 D) over H0 = 8 D: the profile there, to the staircase's D/2 */
+    const double h_back = fmax(profile(0.5, H, plateau, R), profile(1.5, H, plateau, R));
+    printf("  back height %.3f H0 (profile %.3f)\n", gf_post_row_get(&row, "H_back_over_H0"), h_back / 8.0);
+    GF_CHECK_ABS(gf_post_row_get(&row, "H_back_over_H0"), h_back / 8.0, 0.6 / 8.0);
     if (frames > 1) {
         const double xf = hp.x_front_grain, vmax = xf * (Rl - R0) / (2.0 * tau * Rl);
         const double onems = 1.0 - 0.5 * D * Rl / (xf * (Rl - R0));   /* 1 - (1 - S) scaled */
