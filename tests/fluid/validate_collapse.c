@@ -14,7 +14,7 @@
  *   phi_i (interior and solid volume / R0 H0 W), start time (front past
  *   R0 (1 + 1/32), i.e. D/2 at R0 = 16 D) and half time (front past
  *   R0 + (R_inf - R0)/2), run-out R_inf/R0, H_inf/R0, deposit type
- *   (trapezoid when the back keeps >= 90 % of H0), basal excess pore pressure
+ *   (trapezoid when the back keeps >= 90 % of H0), flank angle, basal excess pore pressure
  *   at x = 13/16 R0 (the seed's x = 13 D): dominant extremum (Pa and
  *   / drho g H0) and its time, the extrema of its running mean over 500
  *   T_visq, then the extrema and their times at 12/16, 11/16, 10/16, 8/16 and
@@ -48,7 +48,9 @@
  * P_b at 13/16 R0 negative for dense and positive for loose (the dominant
  * peak of the 500 T_visq running mean), the dense column lags the loose one
  * by 1000 T_visq +-50 %, loose run-out +5 to +15 %, dense deposit a
- * trapezoid and loose a triangle. Exit status 1 when one fails.
+ * trapezoid and loose a triangle, both flanks at 26 deg +-3 (the slope of
+ * the surface between 0.2 and 0.8 of the deposit's height, as grainflow
+ * post's deposit stage measures it). Exit status 1 when one fails.
  */
 #include <math.h>
 #include <stdio.h>
@@ -60,6 +62,7 @@
 #include "gf_sim_internal.h" /* DEM substeps per fluid step, for the cost line */
 #include "scenes/gf_scene.h"
 #include "scenes/gf_measure.h"
+#include "stages/gf_deposit.h" /* the flank angle, as grainflow post's deposit stage measures it */
 
 enum { N_GAUGE = 6, MAX_REC = 4096, WALL_GATE = 2, N_SMOOTH = 10, MAX_SEEDS = 8 };
 /* "start": the front passes R0 (1 + 1/32), D/2 at the thesis' R0 = 16 D (its front curves are (x_f - R0)/R0) */
@@ -70,7 +73,7 @@ static const double GAUGE_X[N_GAUGE] = {13.0 / 16.0, 12.0 / 16.0, 11.0 / 16.0, 1
 static const double D = 7.6e-3, RHO_P = 8000, RHO_F = 1000, ETA = 1.0, G = 9.81;
 
 typedef struct collapse_run {
-    double phi_l, phi_m, phi_end, t_start, t_half, runout, h_inf, h_back;
+    double phi_l, phi_m, phi_end, t_start, t_half, runout, h_inf, h_back, flank_deg;
     double pb_min[N_GAUGE], pb_max[N_GAUGE], t_min[N_GAUGE], t_max[N_GAUGE];
     /* gauge 0 (13/16 R0) as a running mean over N_SMOOTH records (500 T_visq): its extrema and their times */
     double ring[N_SMOOTH], t_ring[N_SMOOTH], sm_min, sm_max, t_sm_min, t_sm_max;
@@ -258,6 +261,25 @@ static double back_height(const gf_particles *p)
     return h;
 }
 
+/* Slope of the collapsed flank (degrees): gf_deposit_envelope's least-squares line through the surface
+ * bins between 0.2 and 0.8 of the deposit's height (postproc/stages/gf_deposit.h); NAN if too few. */
+static double flank_angle(const gf_particles *p)
+{
+    gf_ctx ctx = {0};
+    gf_deposit dep;
+    unsigned char *mobile = malloc(p->n_local ? p->n_local : 1);
+    if (!mobile)
+        return NAN;
+    for (size_t i = 0; i < p->n_local; ++i)
+        mobile[i] = !(p->flags[i] & GF_P_GLUED);
+    double angle = NAN;
+    if (gf_deposit_envelope(&ctx, p->x_m, p->y_m, p->radius_m, mobile, p->n_local, D, &dep) == GF_OK)
+        angle = dep.flank_angle_deg;
+    gf_deposit_free(&dep);
+    free(mobile);
+    return angle;
+}
+
 static void print_series_line(double t, double front, const double pb[N_GAUGE], double scale)
 {
     printf("%8.0f %7.3f", t, front);
@@ -374,6 +396,7 @@ static int run_collapse(const run_args *a, int verbose, collapse_run *r)
     r->t_half = half_time(r->t_rec, r->f_rec, r->n_rec, R0, v[0]) / t_visq;
     r->t_start /= t_visq;
     r->h_back = back_height(p) / h0_m();
+    r->flank_deg = flank_angle(p);
     for (int k = 0; k < N_GAUGE; ++k) {
         r->pb_min[k] /= scale, r->pb_max[k] /= scale;
         r->t_min[k] /= t_visq, r->t_max[k] /= t_visq;
@@ -409,10 +432,10 @@ static void print_summary(const char *mode, double phi_req, const collapse_run *
     double pb = pb_dominant(r, 0, &tpb);
     printf("SUMMARY [%s] W %.0f D | phi_i %.3f (requested %.2f, solid volume/R0 H0 W %.3f; interior at the end "
            "%.3f) | start %.0f T_visq (half run-out at %.0f) | R_inf/R0 %.2f | H_inf/R0 %.3f | "
-           "back height/H0 %.2f -> %s | Pb extremum %+.0f Pa = %+.3f drho g H0 at %.0f T_visq "
+           "back height/H0 %.2f -> %s | flank %.1f deg | Pb extremum %+.0f Pa = %+.3f drho g H0 at %.0f T_visq "
            "(min %+.3f at %.0f, max %+.3f at %.0f)",
            mode, r->w_over_D, r->phi_l, phi_req, r->phi_m, r->phi_end, r->t_start, r->t_half, r->runout, r->h_inf,
-           r->h_back, r->h_back > 0.9 ? "trapezoid" : "triangle", pb * scale, pb, tpb, r->pb_min[0], r->t_min[0],
+           r->h_back, r->h_back > 0.9 ? "trapezoid" : "triangle", r->flank_deg, pb * scale, pb, tpb, r->pb_min[0], r->t_min[0],
            r->pb_max[0], r->t_max[0]);
     printf(" | Pb mean over 500 T_visq min %+.3f at %.0f max %+.3f at %.0f", r->sm_min, r->t_sm_min, r->sm_max,
            r->t_sm_max);
@@ -449,6 +472,9 @@ static int check_pair(const collapse_run *d, const collapse_run *l)
                      "loose/dense - 1 = %+.3f (R_inf/R0 dense %.2f)", gain, d->runout);
     fails += verdict("deposits (row 39: dense trapezoid, loose triangle)", d->h_back > 0.9 && l->h_back <= 0.9,
                      "back height/H0 dense %.2f, loose %.2f", d->h_back, l->h_back);
+    fails += verdict("flank angles (row 39: ~26 deg +-3, both columns)",
+                     fabs(d->flank_deg - 26.0) <= 3.0 && fabs(l->flank_deg - 26.0) <= 3.0,
+                     "dense %.1f, loose %.1f deg", d->flank_deg, l->flank_deg);
     return fails;
 }
 
@@ -464,7 +490,8 @@ static void ensemble(collapse_run *const *runs, int n, collapse_run *e)
     for (int s = 0; s < n; ++s) {
         const collapse_run *r = runs[s];
         e->t_start += r->t_start / n, e->t_half += r->t_half / n, e->runout += r->runout / n;
-        e->h_inf += r->h_inf / n, e->h_back += r->h_back / n, e->w_over_D = r->w_over_D;
+        e->h_inf += r->h_inf / n, e->h_back += r->h_back / n, e->flank_deg += r->flank_deg / n;
+        e->w_over_D = r->w_over_D;
         n_rec = r->n_rec < n_rec ? r->n_rec : n_rec;
     }
     double scale = (RHO_P - RHO_F) * G * h0_m(), t_visq = t_visq_s();
@@ -480,8 +507,8 @@ static void ensemble(collapse_run *const *runs, int n, collapse_run *e)
 static void print_ensemble(const char *what, int n, const collapse_run *e)
 {
     printf("ENSEMBLE [%s] %d seeds | start %.0f T_visq | half run-out %.0f T_visq | R_inf/R0 %.3f | H_inf/R0 %.3f | "
-           "back height/H0 %.3f | Pb at 13/16 R0, seed mean over 500 T_visq: min %+.3f at %.0f max %+.3f at %.0f\n",
-           what, n, e->t_start, e->t_half, e->runout, e->h_inf, e->h_back, e->sm_min, e->t_sm_min, e->sm_max,
+           "back height/H0 %.3f | flank %.1f deg | Pb at 13/16 R0, seed mean over 500 T_visq: min %+.3f at %.0f max %+.3f at %.0f\n",
+           what, n, e->t_start, e->t_half, e->runout, e->h_inf, e->h_back, e->flank_deg, e->sm_min, e->t_sm_min, e->sm_max,
            e->t_sm_max);
 }
 
@@ -539,7 +566,7 @@ int main(int argc, char **argv)
             print_ensemble("loose", n_seeds, el);
         }
         int fails = check_pair(ed, el);
-        printf("%s: %d of 4 criteria failed%s\n", fails ? "FAILED" : "passed", fails,
+        printf("%s: %d of 5 criteria failed%s\n", fails ? "FAILED" : "passed", fails,
                n_seeds > 1 ? " (seed ensemble)" : "");
         status = fails ? 1 : 0;
     }
