@@ -252,32 +252,26 @@ static double half_time(const double *t, const double *front, int n, double R0, 
     return NAN;
 }
 
-static double back_height(const gf_particles *p)
-{
-    double h = 0.0;
-    for (size_t i = 0; i < p->n_local; ++i)
-        if (!(p->flags[i] & GF_P_GLUED) && p->x_m[i] < 2 * D && p->y_m[i] + p->radius_m[i] > h)
-            h = p->y_m[i] + p->radius_m[i];
-    return h;
-}
-
-/* Slope of the collapsed flank (degrees): gf_deposit_envelope's least-squares line through the surface
- * bins between 0.2 and 0.8 of the deposit's height (postproc/stages/gf_deposit.h); NAN if too few. */
-static double flank_angle(const gf_particles *p)
+/*
+ * The final deposit as grainflow post's deposit stage measures it (gf_deposit_envelope,
+ * postproc/stages/gf_deposit.h): the height at the back wall (the highest of the two bins of D against
+ * it) and the slope of the collapsed flank (least-squares line through the surface bins between 0.2 and
+ * 0.8 of the deposit's height). NAN where it cannot tell.
+ */
+static void deposit_shape(const gf_particles *p, double *back_m, double *flank_deg)
 {
     gf_ctx ctx = {0};
     gf_deposit dep;
+    *back_m = *flank_deg = NAN;
     unsigned char *mobile = malloc(p->n_local ? p->n_local : 1);
     if (!mobile)
-        return NAN;
+        return;
     for (size_t i = 0; i < p->n_local; ++i)
         mobile[i] = !(p->flags[i] & GF_P_GLUED);
-    double angle = NAN;
     if (gf_deposit_envelope(&ctx, p->x_m, p->y_m, p->radius_m, mobile, p->n_local, D, &dep) == GF_OK)
-        angle = dep.flank_angle_deg;
+        *back_m = dep.back_height_m, *flank_deg = dep.flank_angle_deg;
     gf_deposit_free(&dep);
     free(mobile);
-    return angle;
 }
 
 static void print_series_line(double t, double front, const double pb[N_GAUGE], double scale)
@@ -395,8 +389,8 @@ static int run_collapse(const run_args *a, int verbose, collapse_run *r)
     r->runout = v[0] / R0, r->h_inf = v[1] / R0, r->phi_end = v[2];
     r->t_half = half_time(r->t_rec, r->f_rec, r->n_rec, R0, v[0]) / t_visq;
     r->t_start /= t_visq;
-    r->h_back = back_height(p) / h0_m();
-    r->flank_deg = flank_angle(p);
+    deposit_shape(p, &r->h_back, &r->flank_deg);
+    r->h_back /= h0_m();
     for (int k = 0; k < N_GAUGE; ++k) {
         r->pb_min[k] /= scale, r->pb_max[k] /= scale;
         r->t_min[k] /= t_visq, r->t_max[k] /= t_visq;
