@@ -419,6 +419,8 @@ static gf_status create_inner(gf_sim *s, const gf_run_spec *spec, const gf_sim_o
     if (!(s->spec.contact.skin_over_D > 0.0))
         return GF_FAIL(s->ctx, GF_ERR_CONFIG, "contact.skin_over_D: must be > 0 (got %g)", s->spec.contact.skin_over_D);
     s->skin_m = s->spec.contact.skin_over_D * s->spec.grains.diameter_m;
+    s->near.skin_m = s->opt.near_skin < 0.0 ? 0.0
+                     : (s->opt.near_skin == 0.0 ? GF_SIM_NEAR_SKIN_DEFAULT : fmin(s->opt.near_skin, 1.0)) * s->skin_m;
     if (!(s->spec.contact.sleep_speed_nd >= 0.0 && s->spec.contact.sleep_speed_nd <= 0.05))
         return GF_FAIL(s->ctx, GF_ERR_CONFIG,
                        "contact.sleep_speed_nd: must be in [0, 0.05] (got %g; above 0.05 a grain at the top of a "
@@ -489,6 +491,7 @@ void gf_sim_destroy(gf_sim **ps)
     free(s->wall_hist);
     free(s->pair_meff), free(s->pair_sqrt_mk), free(s->wall_cand), free(s->wall_contacts);
     free(s->sleep_quiet_steps);
+    gf_sim_near_free(s);
     for (int t = 0; t < GF_SIM_MAX_THREADS; ++t)
         gf_soa_free(s->acc[t].buf_block);
     free(s);
@@ -541,21 +544,22 @@ static void flush_kick(gf_sim *s)
     s->kick_pending = 0;
 }
 
-static double kick_drift_range(gf_sim *s, size_t i0, size_t i1, int n_kicks)
+static gf_drift_d2 kick_drift_range(gf_sim *s, size_t i0, size_t i1, int n_kicks)
 {
-    double *ref[3] = {s->x_ref, s->y_ref, s->z_ref}, *vp[3] = {s->vx_pred, s->vy_pred, s->vz_pred};
+    const gf_drift_refs ref = {{s->x_ref, s->y_ref, s->z_ref}, {s->x_near, s->y_near, s->z_near}};
+    double *vp[3] = {s->vx_pred, s->vy_pred, s->vz_pred};
     gf_integrate_factors k = {s->inv_mass, (s->skips & GF_SKIP_TANGENTIAL) ? NULL : s->inv_inertia, s->mobile};
-    return gf_integrate_kick_drift(s->p, i0, i1, n_kicks, s->dt_s, s->gravity_m_s2, ref, vp, &k);
+    return gf_integrate_kick_drift(s->p, i0, i1, n_kicks, s->dt_s, s->gravity_m_s2, &ref, vp, &k);
 }
 
-double gf_sim_finish_range(gf_sim *s, size_t i0, size_t i1)
+gf_drift_d2 gf_sim_finish_range(gf_sim *s, size_t i0, size_t i1)
 {
     if (s->coupling)
         gf_coupling_add_forces_range(s->coupling, s->p, i0, i1);
     return kick_drift_range(s, i0, i1, 2);
 }
 
-double gf_sim_finish_share(gf_sim *s, int t, int m)
+gf_drift_d2 gf_sim_finish_share(gf_sim *s, int t, int m)
 {
     size_t i0, i1;
     thread_grains(s, s->p->n_local, t, m, &i0, &i1);
@@ -568,13 +572,13 @@ double gf_sim_finish_share(gf_sim *s, int t, int m)
  * split of grains no barrier is needed between them, and a step pays two
  * thread wake-ups instead of four (with OMP_WAIT_POLICY=passive each region
  * costs one). The two half-kicks stay two additions: bitwise the results of
- * the undeferred sequence. Returns the largest squared displacement since
- * the last neighbour build. */
-static double kick_drift(gf_sim *s, double h)
+ * the undeferred sequence. Returns the largest squared displacements since
+ * the last neighbour build and the last near-list build. */
+static gf_drift_d2 kick_drift(gf_sim *s, double h)
 {
     gf_particles *p = s->p;
     long n = (long)p->n_local;
-    double d2[GF_SIM_MAX_THREADS] = {0.0};
+    gf_drift_d2 d2[GF_SIM_MAX_THREADS] = {{0.0, 0.0}};
     int used = 1;
     const int pending = s->kick_pending;
     s->kick_pending = 0;
@@ -595,10 +599,7 @@ static double kick_drift(gf_sim *s, double h)
     }
     s->forces_zeroed = (size_t)n; /* gf_integrate_kick_drift zeroes what it read */
     s->forces_valid = 0;
-    double mx = 0.0;
-    for (int t = 0; t < used; ++t)
-        mx = d2[t] > mx ? d2[t] : mx;
-    return mx;
+    return gf_drift_d2_max(d2, used);
 }
 
 /* Run-time guards, so that a run stops with the limit named instead of
@@ -647,22 +648,24 @@ static gf_status check_run_limits(gf_sim *s, double d2_since_build)
 static gf_status dem_step(gf_sim *s, int next_follows)
 {
     const double h = 0.5 * s->dt_s;
-    double d2;
+    gf_drift_d2 moved;
     if (s->drift_done) { /* by the previous step's force region */
-        d2 = s->drift_d2;
+        moved = s->drift_d2;
         s->drift_done = 0;
     } else {
         gf_timer_start(&s->timers, GF_T_INTEGRATE);
-        d2 = kick_drift(s, h);
+        moved = kick_drift(s, h);
         s->vp_valid = 1;
         gf_timer_stop(&s->timers, GF_T_INTEGRATE);
     }
+    const double d2 = moved.build;
     if (d2 > 0.25 * s->skin_m * s->skin_m || s->need_build) { /* a grain moved more than skin/2 */
         gf_timer_start(&s->timers, GF_T_NEIGHBOUR);
         gf_status st = gf_sim_rebuild(s);
         gf_timer_stop(&s->timers, GF_T_NEIGHBOUR);
         GF_TRY(st);
     }
+    gf_sim_near_check(s, moved.near);
     const int sleep_after = s->spec.contact.sleep_speed_nd > 0.0 && (s->step + 1) % GF_SLEEP_EVERY == 0;
     const int fluid_after = s->coupling && (s->step + 1 >= s->next_fluid_step ||
                                             !gf_coupling_forces_in_order(s->coupling, s->p));
@@ -671,6 +674,7 @@ static gf_status dem_step(gf_sim *s, int next_follows)
     gf_status st = gf_sim_compute_forces(s);
     gf_timer_stop(&s->timers, GF_T_FORCE);
     s->drift_with_forces = 0;
+    s->near.use = 0;
     if (s->drift_done) { /* the timers keep the drift apart (as the first thread saw it) */
         s->timers.elapsed_s[GF_T_FORCE] -= s->drift_s;
         s->timers.elapsed_s[GF_T_INTEGRATE] += s->drift_s;

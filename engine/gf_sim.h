@@ -54,7 +54,15 @@ typedef struct gf_sim_options {
      * loop (engine/gf_sim_forces.c) instead of the blocked, vectorised one
      * (gf_sim_pairs.c), which must give the same bits (tests/engine/test_pair_loops.c). */
     int generic_pair_loop;
+    /* Near list (engine/gf_sim_near.c): the blocked pair loop scans the
+     * neighbour pairs within this fraction of the skin of contact, rebuilt
+     * when a grain has moved half of it. 0: the default
+     * (GF_SIM_NEAR_SKIN_DEFAULT); < 0: scan the whole list. The results do
+     * not depend on it (bitwise). */
+    double near_skin;
 } gf_sim_options;
+/* Default near skin, a fraction of contact.skin_over_D (docs/benchmarks.md, "Near list"). */
+#define GF_SIM_NEAR_SKIN_DEFAULT 0.05
 
 /* Work a run leaves out because its spec and scene do not need it (issue #6),
  * decided once at gf_sim_create (engine/gf_sim_skips.c; docs/benchmarks.md):
@@ -90,6 +98,13 @@ const gf_scales *gf_sim_scales(const gf_sim *sim);
 gf_ctx *gf_sim_ctx(gf_sim *sim);
 gf_rng *gf_sim_rng(gf_sim *sim);
 const gf_timers *gf_sim_timers(const gf_sim *sim);
+/* Neighbour-list counters since creation (benchmarks): list builds, near-list
+ * builds (engine/gf_sim_near.c), and the pairs of each list now. */
+typedef struct gf_sim_list_stats {
+    long builds, near_builds;
+    size_t pairs, near_pairs;
+} gf_sim_list_stats;
+gf_sim_list_stats gf_sim_list_counters(const gf_sim *sim);
 double gf_sim_time_s(const gf_sim *sim);
 double gf_sim_dt_s(const gf_sim *sim);
 double gf_sim_end_time_s(const gf_sim *sim);

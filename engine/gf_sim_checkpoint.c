@@ -39,6 +39,7 @@ gf_status gf_sim_restore_coupling(gf_sim *s, const char *path);
 static gf_status write_all(gf_sim *s, gf_restart *r)
 {
     gf_particles *p = s->p;
+    gf_sim_near_sync(s); /* the near list's history into the list's (gf_sim_near.c) */
     size_t n = p->n_local;
     int64_t counts[3] = {(int64_t)n, s->step, p->next_id};
     double clock[5] = {s->t_s, s->dt_s, s->t_end_s, s->max_overlap_m, (double)s->n_contacts};

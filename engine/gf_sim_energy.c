@@ -89,6 +89,7 @@ gf_status gf_sim_energy_audit(const gf_sim *s, gf_sim_energy *e)
         e->gravity_J -= m_buoyant * (g[0] * p->x_m[i] + g[1] * p->y_m[i] + g[2] * p->z_m[i]);
     }
     const double k_t = s->cp.kt_over_kn * s->cp.k_n_N_m;
+    gf_sim_near_sync(s); /* the near list's history into the list's (gf_sim_near.c) */
     e->elastic_normal_J = pair_elastic_normal(s) + wall_elastic_normal(s);
     e->elastic_tangential_J = 0.5 * k_t * sum_squares(s->nl->hist, 3 * s->nl->n_pairs);
     if (s->wall_hist && s->n_walls > 0)

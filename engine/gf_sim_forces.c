@@ -50,15 +50,17 @@ gf_status gf_sim_reserve(gf_sim *s, size_t n)
     if (n <= s->ref_cap)
         return GF_OK;
     size_t cap = n + n / 4 + 16, stride = (size_t)s->n_walls + 1;
-    double **arr[10] = {&s->x_ref, &s->y_ref, &s->z_ref, &s->vx_pred, &s->vy_pred, &s->vz_pred,
-                        &s->inv_mass, &s->inv_inertia, &s->mobile, &s->contact_inv_mass};
-    void *old[10], *fresh[10];
-    for (int a = 0; a < 10; ++a)
+    enum { n_arrays = 13 };
+    double **arr[n_arrays] = {&s->x_ref,    &s->y_ref,   &s->z_ref,       &s->vx_pred, &s->vy_pred,
+                              &s->vz_pred,  &s->inv_mass, &s->inv_inertia, &s->mobile,  &s->contact_inv_mass,
+                              &s->x_near,   &s->y_near,  &s->z_near};
+    void *old[n_arrays], *fresh[n_arrays];
+    for (int a = 0; a < n_arrays; ++a)
         old[a] = *arr[a];
-    void *block = gf_soa_alloc(10, sizeof(double), cap, GF_SOA_LINE_SIM, fresh, old, s->ref_cap);
+    void *block = gf_soa_alloc(n_arrays, sizeof(double), cap, GF_SOA_LINE_SIM, fresh, old, s->ref_cap);
     if (!block)
         return GF_FAIL(s->ctx, GF_ERR_NOMEM, "sim: cannot allocate per-grain arrays for %zu grains", n);
-    for (int a = 0; a < 10; ++a)
+    for (int a = 0; a < n_arrays; ++a)
         *arr[a] = fresh[a];
     gf_soa_free(s->ref_block);
     s->ref_block = block;
@@ -210,12 +212,15 @@ gf_status gf_sim_rebuild_from_ref(gf_sim *s)
             s->pair_sqrt_mk[k] = sqrt(m * s->cp.k_n_N_m);
         }
     s->need_build = 0;
+    s->near.valid = s->near.held = 0; /* written back before the build; its pairs were the old list's */
+    GF_TRY(gf_sim_near_reserve(s));
     return build_wall_candidates(s);
 }
 
 static gf_status rebuild(gf_sim *s, int scheduled)
 {
     gf_particles *p = s->p;
+    gf_sim_near_flush(s); /* the build carries the list's history over */
     GF_TRY(gf_sim_reserve(s, p->n_local));
     gf_nlist_geom g = list_geom(s);
     gf_nlist_wrap(&g, p->n_local, p->x_m, p->y_m, p->z_m);
@@ -509,21 +514,23 @@ static void add_from_earlier_chunks(const gf_sim *s, int c, double *const store[
 /* The step's end and the next one's drift (gf_sim_finish_range) for the
  * grains of chunk c outside the reach runs (in_runs 0) or inside them (1),
  * where the runs and the chunk start on cache lines. */
-static double drift_chunk(gf_sim *s, int c, int in_runs)
+static gf_drift_d2 drift_chunk(gf_sim *s, int c, int in_runs)
 {
     const gf_nlist *nl = s->nl;
     const size_t lo = nl->chunk_row[c], hi = nl->chunk_row[c + 1];
     size_t at = lo;
-    double d2 = 0.0;
+    gf_drift_d2 d2[2] = {{0.0, 0.0}, {0.0, 0.0}};
     for (size_t r = 0; r <= nl->n_reach_runs; ++r) {
         size_t b = r < nl->n_reach_runs ? nl->reach_run[2 * r] : hi, e = r < nl->n_reach_runs ? nl->reach_run[2 * r + 1] : hi;
         b = b < lo ? lo : b > hi ? hi : b, e = e < lo ? lo : e > hi ? hi : e;
         const size_t from = in_runs ? b : at, to = in_runs ? e : b;
-        if (from < to)
-            d2 = fmax(d2, gf_sim_finish_range(s, from, to));
+        if (from < to) {
+            d2[1] = gf_sim_finish_range(s, from, to);
+            d2[0] = gf_drift_d2_max(d2, 2);
+        }
         at = e > at ? e : at;
     }
-    return d2;
+    return d2[0];
 }
 
 /* Waits until every chunk before c has finished its pair rows of force
@@ -547,8 +554,11 @@ static void run_chunk(gf_sim *s, int c, double *const store[6], size_t n, unsign
         pair_rows_linear_normal(s, i0, i1, store, a);
     else if (s->law->kernel == gf_contact_linear && s->opt.generic_pair_loop)
         pair_rows_linear(s, i0, i1, store, a);
-    else if (s->law->kernel == gf_contact_linear)
+    else if (s->law->kernel == gf_contact_linear) {
+        if (s->near.use && !s->near.valid)
+            gf_sim_near_build_chunk(s, c);
         gf_sim_pair_rows_blocked_linear(s, i0, i1, store, a);
+    }
     else
         pair_rows_table(s, i0, i1, store, a);
     wall_rows(s, i0, i1, store, a);
@@ -564,14 +574,16 @@ static void run_chunk(gf_sim *s, int c, double *const store[6], size_t n, unsign
  * none, so its thread finishes them at once; it then waits for the earlier
  * chunks' rows only, adds their buffers and finishes the rest (a thread that
  * would wait at a barrier for the slower chunk drifts meanwhile). */
-static double complete_chunks(gf_sim *s, int t, int m, int drift, double *const store[6], unsigned long count)
+static gf_drift_d2 complete_chunks(gf_sim *s, int t, int m, int drift, double *const store[6], unsigned long count)
 {
     const int nc = s->nl->n_chunks;
     if (drift && m == nc && m > 1) {
-        double d2 = drift_chunk(s, t, 0);
+        gf_drift_d2 d2[2];
+        d2[0] = drift_chunk(s, t, 0);
         wait_for_earlier_chunks(s, t, count);
         add_from_earlier_chunks(s, t, store);
-        return fmax(d2, drift_chunk(s, t, 1));
+        d2[1] = drift_chunk(s, t, 1);
+        return gf_drift_d2_max(d2, 2);
     }
     if (nc > 1) {
 #ifdef _OPENMP
@@ -585,7 +597,7 @@ static double complete_chunks(gf_sim *s, int t, int m, int drift, double *const 
         }
 #endif
     }
-    return drift ? gf_sim_finish_share(s, t, m) : 0.0;
+    return drift ? gf_sim_finish_share(s, t, m) : (gf_drift_d2){0.0, 0.0};
 }
 
 /* Contact counts, largest overlap and wall loads, summed over the chunks. */
@@ -609,6 +621,8 @@ gf_status gf_sim_compute_forces(gf_sim *s)
 {
     gf_particles *p = s->p;
     size_t n = p->n_local;
+    if (!s->near.use) /* this evaluation runs over the whole list */
+        gf_sim_near_flush(s);
     if (s->nl->n != n)
         GF_TRY(gf_sim_rebuild(s));
     GF_TRY(reserve_accumulators(s, n));
@@ -632,7 +646,8 @@ gf_status gf_sim_compute_forces(gf_sim *s)
      * fork/join costs that exceed the work below ~1000 grains. */
     double *store[6] = {p->fx_N, p->fy_N, p->fz_N, p->tx_N_m, p->ty_N_m, p->tz_N_m};
     const int drift = s->drift_with_forces;
-    double d2[GF_SIM_MAX_THREADS] = {0.0}, drift_t0 = 0.0;
+    gf_drift_d2 d2[GF_SIM_MAX_THREADS] = {{0.0, 0.0}};
+    double drift_t0 = 0.0;
     int used = 1;
     const unsigned long count = ++s->force_count;
 #ifdef _OPENMP
@@ -651,15 +666,17 @@ gf_status gf_sim_compute_forces(gf_sim *s)
         d2[t] = complete_chunks(s, t, m, drift, store, count);
     }
     sum_chunk_totals(s);
+    if (s->near.use && !s->near.valid) { /* every chunk built its part */
+        s->near.valid = s->near.held = 1;
+        s->near.n_builds++;
+    }
     if (!drift) {
         s->forces_valid = 1;
         return GF_OK;
     }
     /* F(t + dt) is spent (the drift zeroed it) and v* is the next step's */
     s->drift_s = gf_wtime() - drift_t0;
-    s->drift_d2 = 0.0;
-    for (int t = 0; t < used; ++t)
-        s->drift_d2 = d2[t] > s->drift_d2 ? d2[t] : s->drift_d2;
+    s->drift_d2 = gf_drift_d2_max(d2, used);
     s->drift_done = 1;
     s->forces_valid = 0;
     s->forces_zeroed = n;

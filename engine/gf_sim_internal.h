@@ -14,6 +14,7 @@
 #include "coupling/gf_coupling.h"
 #include "gf_sim.h"
 #include "scenes/gf_scene.h"
+#include "integrate/gf_integrate.h"
 
 #define GF_SIM_MAX_WALLS 16
 #define GF_SIM_MAX_GAUGES 64
@@ -47,10 +48,29 @@ typedef struct gf_sim_accum {
     double wall_force_N[GF_SIM_MAX_WALLS][3];
     size_t n_contacts;
     double max_overlap_m;
+    size_t near_len;  /* the chunk's near-list entries (gf_sim_near.c) */
     /* the number of the force evaluation whose pair rows this chunk has
      * finished (its buffer is complete, and it reads no grain any more) */
     _Atomic unsigned long pairs_done;
 } gf_sim_accum;
+
+/* Near list (gf_sim_near.c): the neighbour list's pairs within skin_m of
+ * the contact (or lubrication) range, with their per-pair data, which the
+ * blocked pair loop scans instead of the whole list. Chunk c's pairs are
+ * stored from nl->row_start[chunk_row[c]] (acc[c].near_len of them). While
+ * valid, the history and contact flags of the pairs it holds are its own
+ * (the list's copies are stale until gf_sim_near_flush). */
+typedef struct gf_near_list {
+    double skin_m;              /* 0: no near list */
+    int held;                   /* built and not written back: its history is the current one */
+    int valid;                  /* held, and no grain has moved skin/2 since it was built */
+    int use;                    /* this force evaluation scans it (set by dem_step alone) */
+    int32_t *i, *j, *k;         /* rows, partners, and offset of each pair in the chunk's part of the list */
+    uint8_t *image, *touching;
+    double *hist, *sqrt_mk, *meff;
+    size_t cap;
+    long n_builds;
+} gf_near_list;
 
 struct gf_sim {
     gf_ctx *ctx;                /* borrowed from the creator */
@@ -91,7 +111,8 @@ struct gf_sim {
     double *vx_pred, *vy_pred, *vz_pred; /* predicted v(t+dt) for the dashpot (gf_integrate.h) */
     double *inv_mass, *inv_inertia, *mobile; /* integrator factors, refreshed at every neighbour build */
     double *contact_inv_mass;       /* 1/m in contacts, 0 for glued grains (infinite mass) */
-    void *ref_block;                /* owns the ten arrays above, staggered (core/gf_soa.h) */
+    double *x_near, *y_near, *z_near; /* positions at the last near-list build (gf_sim_near.c) */
+    void *ref_block;                /* owns the thirteen arrays above, staggered (core/gf_soa.h) */
     double *pair_meff, *pair_sqrt_mk; /* per neighbour pair: m*, sqrt(m* k_n) */
     size_t pair_cap;
     int vp_valid;                   /* set by the drift, consumed by the next force evaluation */
@@ -102,7 +123,8 @@ struct gf_sim {
      * (drift_done, with its largest squared displacement and the first
      * thread's wall time in it) */
     int drift_with_forces, drift_done;
-    double drift_d2, drift_s;
+    gf_drift_d2 drift_d2;
+    double drift_s;
     unsigned long force_count;      /* force evaluations so far (gf_sim_accum.pairs_done) */
     size_t ref_cap;
     double skin_m, extra_m;
@@ -133,6 +155,7 @@ struct gf_sim {
     int store_layout;           /* order the store was last sorted into (gf_sim_sort_layout); -1: never sorted */
     /* work this run does not need (gf_sim_skips.c): GF_SKIP_* bits, decided once at creation */
     unsigned skips;
+    gf_near_list near;          /* gf_sim_near.c */
 };
 
 /* Evaluates contact (+ lubrication) forces and wall forces at the current
@@ -143,9 +166,38 @@ gf_status gf_sim_compute_forces(gf_sim *s);
  * their contact forces are complete (gf_sim.c: dem_step): the held fluid
  * forces, the closing half-kick, the next opening half-kick and drift.
  * Returns their largest squared displacement since the last build. */
-double gf_sim_finish_range(gf_sim *s, size_t i0, size_t i1);
+gf_drift_d2 gf_sim_finish_range(gf_sim *s, size_t i0, size_t i1);
 /* The same for thread t of m: the grains of its chunk. */
-double gf_sim_finish_share(gf_sim *s, int t, int m);
+gf_drift_d2 gf_sim_finish_share(gf_sim *s, int t, int m);
+/* Element-wise largest of n displacement pairs. */
+static inline gf_drift_d2 gf_drift_d2_max(const gf_drift_d2 *d, int n)
+{
+    gf_drift_d2 m = {0.0, 0.0};
+    for (int t = 0; t < n; ++t) {
+        m.build = d[t].build > m.build ? d[t].build : m.build;
+        m.near = d[t].near > m.near ? d[t].near : m.near;
+    }
+    return m;
+}
+/* Near list (gf_sim_near.c). At each step, after the neighbour build
+ * decision: whether this step's force evaluation scans the near list, and
+ * whether it must be rebuilt first (near_d2: the largest squared
+ * displacement since its last build). */
+void gf_sim_near_check(gf_sim *s, double near_d2);
+/* Builds chunk c's part of the near list (writing the part it replaces back
+ * first) and takes its grains' positions as the new reference; by the
+ * chunk's thread, before its pair rows. */
+void gf_sim_near_build_chunk(gf_sim *s, int c);
+/* Writes the near list's history and contact flags back into the neighbour
+ * list and drops it: before a list build or a force evaluation over the
+ * whole list. */
+void gf_sim_near_flush(gf_sim *s);
+/* The same write-back, the near list kept (its pairs' history unchanged):
+ * for readers of the list's history (energy, stress, checkpoint). */
+void gf_sim_near_sync(const gf_sim *s);
+/* Reserves the near list for the current neighbour list (after a build). */
+gf_status gf_sim_near_reserve(gf_sim *s);
+void gf_sim_near_free(gf_sim *s);
 /* Grain-grain contacts (and lubrication, when on) of rows [i0, i1) of the
  * list into f[0..5] (fx..tz), for the linear law: the blocked, vectorised
  * loop of gf_sim_pairs.c, bitwise the generic loop's results. */

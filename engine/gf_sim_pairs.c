@@ -61,24 +61,37 @@ typedef struct row_sums {
     double base[6], f[6];
 } row_sums;
 
-/* Pass 1, pairs [*pk, k1): appends up to GF_PAIR_BLOCK candidates.
- * flagged = 0: no grain the rows reach is glued or sleeping (the common
- * case), so the flag tests are compiled out. */
-static inline __attribute__((always_inline)) size_t scan_impl(const gf_sim *s, size_t *pk, size_t k1, pair_block *b,
-                                                              const int flagged, const int lub)
+/* The pairs the loop runs over, and their per-pair data: the neighbour
+ * list's, or the near list's (gf_sim_near.c), which holds the same fields
+ * for its pairs only. */
+typedef struct pair_view {
+    const int32_t *i, *j;
+    const uint8_t *image;
+    uint8_t *touching;
+    double *hist;
+    const double *sqrt_mk, *meff;
+} pair_view;
+
+/* Pass 1, pairs [*pk, k1) of the view: appends up to GF_PAIR_BLOCK
+ * candidates. flagged = 0: no grain the rows reach is glued or sleeping (the
+ * common case), so the flag tests are compiled out. */
+static inline __attribute__((always_inline)) size_t scan_impl(const gf_sim *s, const pair_view *v, size_t *pk,
+                                                              size_t k1, pair_block *b, const int flagged, const int lub)
 {
     const double lub_cut = s->lub_cutoff_m;
     const gf_particles *p = s->p;
     const gf_nlist *nl = s->nl;
     const double *x = p->x_m, *y = p->y_m, *z = p->z_m, *R = p->radius_m;
     const uint8_t *flags = p->flags;
-    uint8_t *touching = nl->touching;
-    double *hist = nl->hist;
+    const int32_t *pi = v->i, *pj = v->j;
+    const uint8_t *image = v->image;
+    uint8_t *touching = v->touching;
+    double *hist = v->hist;
     size_t k = *pk, nc = 0;
     const size_t kstop = k1 - k < GF_PAIR_BLOCK ? k1 : k + GF_PAIR_BLOCK; /* at most one candidate per pair */
     for (; k < kstop; ++k) {
-        const int32_t i = nl->i[k], j = nl->j[k];
-        const double *sh = nl->shift_m[nl->image[k]];
+        const int32_t i = pi[k], j = pj[k];
+        const double *sh = nl->shift_m[image[k]];
         double dx = x[i] - x[j] + sh[0], dy = y[i] - y[j] + sh[1], dz = z[i] - z[j] + sh[2];
         double r2 = dx * dx + dy * dy + dz * dz, rsum = R[i] + R[j], reach = lub ? rsum + lub_cut : rsum;
         int in = r2 < reach * reach;
@@ -102,28 +115,28 @@ static inline __attribute__((always_inline)) size_t scan_impl(const gf_sim *s, s
 }
 
 /* The four cases compiled apart (flags seen or not, lubrication range or contact only). */
-static size_t scan(const gf_sim *s, size_t *pk, size_t k1, pair_block *b, int flagged)
+static size_t scan(const gf_sim *s, const pair_view *v, size_t *pk, size_t k1, pair_block *b, int flagged)
 {
     if (s->lubrication)
-        return flagged ? scan_impl(s, pk, k1, b, 1, 1) : scan_impl(s, pk, k1, b, 0, 1);
-    return flagged ? scan_impl(s, pk, k1, b, 1, 0) : scan_impl(s, pk, k1, b, 0, 0);
+        return flagged ? scan_impl(s, v, pk, k1, b, 1, 1) : scan_impl(s, v, pk, k1, b, 0, 1);
+    return flagged ? scan_impl(s, v, pk, k1, b, 1, 0) : scan_impl(s, v, pk, k1, b, 0, 0);
 }
 
 /* Pass 2: the force of each candidate (gf_contact_linear_inline and
  * gf_contact_tangential_inline, equations in gf_contact.h, written with
  * selects). A candidate whose overlap rounds to <= 0 gets no force and a
  * zero history, as in the generic loop. */
-static inline __attribute__((always_inline)) void compute_impl(const gf_sim *s, pair_block *restrict b, size_t nc,
-                                                               const int lub)
+static inline __attribute__((always_inline)) void compute_impl(const gf_sim *s, const pair_view *v,
+                                                               pair_block *restrict b, size_t nc, const int lub)
 {
     const gf_particles *p = s->p;
     const double *restrict R = p->radius_m;
     const double *restrict vpx = s->vx_pred, *restrict vpy = s->vy_pred, *restrict vpz = s->vz_pred;
     const double *restrict vx = p->vx_m_s, *restrict vy = p->vy_m_s, *restrict vz = p->vz_m_s;
     const double *restrict wx = p->wx_rad_s, *restrict wy = p->wy_rad_s, *restrict wz = p->wz_rad_s;
-    const double *restrict sqrt_mk = s->pair_sqrt_mk, *restrict meff = s->pair_meff;
+    const double *restrict sqrt_mk = v->sqrt_mk, *restrict meff = v->meff;
     const double lub_cut = s->lub_cutoff_m, eta = s->lub_eta_Pa_s, rough = s->lub_roughness_m;
-    double *restrict hx = s->nl->hist, *restrict hy = hx + 1, *restrict hz = hx + 2; /* disjoint elements */
+    double *restrict hx = v->hist, *restrict hy = hx + 1, *restrict hz = hx + 2; /* disjoint elements */
     const double dt = s->dt_s, mu = s->cp.mu_grain, k_n = s->cp.k_n_N_m, two_zeta = 2.0 * s->cp.zeta;
     const double k_t = s->cp.kt_over_kn * s->cp.k_n_N_m, inv_k = k_t > 0.0 ? 1.0 / k_t : 0.0;
     const int clip = !s->cp.allow_attraction;
@@ -189,21 +202,21 @@ static inline __attribute__((always_inline)) void compute_impl(const gf_sim *s, 
     }
 }
 
-GF_AVX512_CLONES static void compute_dry(const gf_sim *s, pair_block *restrict b, size_t nc)
+GF_AVX512_CLONES static void compute_dry(const gf_sim *s, const pair_view *v, pair_block *restrict b, size_t nc)
 {
-    compute_impl(s, b, nc, 0);
+    compute_impl(s, v, b, nc, 0);
 }
 
-GF_AVX512_CLONES static void compute_lub(const gf_sim *s, pair_block *restrict b, size_t nc)
+GF_AVX512_CLONES static void compute_lub(const gf_sim *s, const pair_view *v, pair_block *restrict b, size_t nc)
 {
-    compute_impl(s, b, nc, 1);
+    compute_impl(s, v, b, nc, 1);
 }
 
 /* Pass 3: forces on i into the row sums, on j subtracted in place, in list order. */
-static void scatter(const gf_sim *s, const pair_block *b, size_t nc, double *const f[6], row_sums *rs,
+static void scatter(const pair_view *v, const pair_block *b, size_t nc, double *const f[6], row_sums *rs,
                     gf_sim_accum *acc)
 {
-    uint8_t *touching = s->nl->touching;
+    uint8_t *touching = v->touching;
     size_t n_contacts = 0;
     double max_overlap = acc->max_overlap_m;
     for (size_t c = 0; c < nc; ++c) {
@@ -233,16 +246,23 @@ void gf_sim_pair_rows_blocked_linear(gf_sim *s, size_t i0, size_t i1, double *co
 {
     pair_block b;
     row_sums rs = {.i = -1};
-    size_t k = s->nl->row_start[i0], k1 = s->nl->row_start[i1];
+    const gf_nlist *nl = s->nl;
+    size_t k = nl->row_start[i0], k1 = nl->row_start[i1];
+    pair_view v = {nl->i, nl->j, nl->image, nl->touching, nl->hist, s->pair_sqrt_mk, s->pair_meff};
+    if (s->near.use) { /* the rows' near list (gf_sim_near.c), stored from the same offset */
+        v = (pair_view){s->near.i, s->near.j, s->near.image, s->near.touching, s->near.hist, s->near.sqrt_mk,
+                        s->near.meff};
+        k1 = k + acc->near_len;
+    }
     uint8_t any = 0; /* the rows reach grains >= i0 only (j > i) */
-    for (size_t g = i0; g < s->nl->n; ++g)
+    for (size_t g = i0; g < nl->n; ++g)
         any |= s->p->flags[g];
     while (k < k1) {
-        size_t nc = scan(s, &k, k1, &b, any != 0);
+        size_t nc = scan(s, &v, &k, k1, &b, any != 0);
         if (s->lubrication)
-            compute_lub(s, &b, nc);
+            compute_lub(s, &v, &b, nc);
         else
-            compute_dry(s, &b, nc);
-        scatter(s, &b, nc, f, &rs, acc);
+            compute_dry(s, &v, &b, nc);
+        scatter(&v, &b, nc, f, &rs, acc);
     }
 }

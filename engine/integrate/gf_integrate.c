@@ -9,10 +9,10 @@
 #ifdef _OPENMP
 #define GF_PRAGMA(x) _Pragma(#x)
 #define GF_SIMD GF_PRAGMA(omp simd)
-#define GF_SIMD_MAX(v) GF_PRAGMA(omp simd reduction(max : v))
+#define GF_SIMD_MAX(...) GF_PRAGMA(omp simd reduction(max : __VA_ARGS__))
 #else
 #define GF_SIMD
-#define GF_SIMD_MAX(v)
+#define GF_SIMD_MAX(...)
 #endif
 
 void gf_integrate_factors_fill(const gf_particles *p, size_t n, double *inv_mass, double *inv_inertia, double *mobile)
@@ -58,10 +58,10 @@ void gf_integrate_kick(gf_particles *p, size_t i0, size_t i1, double h, const do
 }
 
 /* gf_integrate_kick_drift, with the number of kicks and the rotation as constants. */
-static inline __attribute__((always_inline)) double kick_drift_impl(gf_particles *p, size_t i0, size_t i1, const int twice,
-                                                                     const int spin, double dt_s, const double g_m_s2[3],
-                                                                     double *const ref[3], double *const vp[3],
-                                                                     const gf_integrate_factors *k)
+static inline __attribute__((always_inline)) gf_drift_d2 kick_drift_impl(gf_particles *p, size_t i0, size_t i1,
+                                                                          const int twice, const int spin, double dt_s,
+                                                                          const double g_m_s2[3], const gf_drift_refs *ref,
+                                                                          double *const vp[3], const gf_integrate_factors *k)
 {
     const double *restrict im = k->inv_mass, *restrict iI = k->inv_inertia, *restrict mob = k->mobile;
     double *restrict x = p->x_m, *restrict y = p->y_m, *restrict z = p->z_m;
@@ -69,11 +69,12 @@ static inline __attribute__((always_inline)) double kick_drift_impl(gf_particles
     double *restrict wx = p->wx_rad_s, *restrict wy = p->wy_rad_s, *restrict wz = p->wz_rad_s;
     double *restrict fx = p->fx_N, *restrict fy = p->fy_N, *restrict fz = p->fz_N;
     double *restrict tx = p->tx_N_m, *restrict ty = p->ty_N_m, *restrict tz = p->tz_N_m;
-    const double *restrict xr = ref[0], *restrict yr = ref[1], *restrict zr = ref[2];
+    const double *restrict xr = ref->build[0], *restrict yr = ref->build[1], *restrict zr = ref->build[2];
+    const double *restrict xn = ref->near[0], *restrict yn = ref->near[1], *restrict zn = ref->near[2];
     double *restrict px = vp[0], *restrict py = vp[1], *restrict pz = vp[2];
     const double h = 0.5 * dt_s, gx = g_m_s2[0] * h, gy = g_m_s2[1] * h, gz = g_m_s2[2] * h;
-    double d2_max = 0.0;
-    GF_SIMD_MAX(d2_max)
+    double d2_max = 0.0, dn2_max = 0.0;
+    GF_SIMD_MAX(d2_max, dn2_max)
     for (size_t i = i0; i < i1; ++i) {
         double m = mob[i], a = h * im[i], s = dt_s * m;
         double u = vx[i], v = vy[i], w = vz[i];
@@ -100,15 +101,18 @@ static inline __attribute__((always_inline)) double kick_drift_impl(gf_particles
         double dx = x[i] - xr[i], dy = y[i] - yr[i], dz = z[i] - zr[i];
         double d2 = dx * dx + dy * dy + dz * dz;
         d2_max = d2 > d2_max ? d2 : d2_max;
+        double ex = x[i] - xn[i], ey = y[i] - yn[i], ez = z[i] - zn[i];
+        double dn2 = ex * ex + ey * ey + ez * ez;
+        dn2_max = dn2 > dn2_max ? dn2 : dn2_max;
     }
-    return d2_max;
+    return (gf_drift_d2){d2_max, dn2_max};
 }
 
 /* The four cases compiled apart, so that each loop is straight-line
  * (vectorised), in an AVX-512 clone too (core/gf_clones.h: the same bits). */
-GF_AVX512_CLONES double gf_integrate_kick_drift(gf_particles *p, size_t i0, size_t i1, int n_kicks, double dt_s,
-                                                   const double g_m_s2[3], double *const ref[3], double *const vp[3],
-                                                   const gf_integrate_factors *k)
+GF_AVX512_CLONES gf_drift_d2 gf_integrate_kick_drift(gf_particles *p, size_t i0, size_t i1, int n_kicks, double dt_s,
+                                                        const double g_m_s2[3], const gf_drift_refs *ref,
+                                                        double *const vp[3], const gf_integrate_factors *k)
 {
     if (k->inv_inertia)
         return n_kicks > 1 ? kick_drift_impl(p, i0, i1, 1, 1, dt_s, g_m_s2, ref, vp, k)

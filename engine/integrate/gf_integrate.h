@@ -51,9 +51,18 @@ void gf_integrate_kick(gf_particles *p, size_t i0, size_t i1, double dt_half_s, 
  * once read: the next force evaluation accumulates into them, and zeroing
  * them here, by the thread that integrates them, spares it a pass over the
  * store (on two threads, one that moved every chunk's force lines to the
- * core clearing them). Returns the largest squared displacement from the
- * reference positions ref[3] (last neighbour build), m^2. */
-double gf_integrate_kick_drift(gf_particles *p, size_t i0, size_t i1, int n_kicks, double dt_s, const double g_m_s2[3],
-                               double *const ref[3], double *const vp[3], const gf_integrate_factors *k);
+ * core clearing them). Returns the largest squared displacements from the
+ * positions of the last neighbour build (ref->build) and of the last
+ * near-list build (ref->near, engine/gf_sim_near.c), m^2. */
+typedef struct gf_drift_refs {
+    const double *build[3]; /* positions at the last neighbour-list build */
+    const double *near[3];  /* positions at the last near-list build (may be build) */
+} gf_drift_refs;
+typedef struct gf_drift_d2 {
+    double build, near;     /* largest squared displacement since each build, m^2 */
+} gf_drift_d2;
+gf_drift_d2 gf_integrate_kick_drift(gf_particles *p, size_t i0, size_t i1, int n_kicks, double dt_s,
+                                    const double g_m_s2[3], const gf_drift_refs *ref, double *const vp[3],
+                                    const gf_integrate_factors *k);
 
 #endif

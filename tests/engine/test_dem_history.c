@@ -38,6 +38,7 @@ typedef struct pair_h {
 
 static size_t snapshot(gf_sim *s, pair_h **out)
 {
+    gf_sim_near_sync(s); /* the near list's history into the list's (engine/gf_sim_near.c) */
     const gf_nlist *nl = s->nl;
     const gf_particles *p = s->p;
     size_t m = 0;
@@ -137,8 +138,10 @@ static double clamp_sag(gf_ctx *ctx, int forget, double *expected, double *max_s
     for (int k = 0; k < 300; ++k) {
         s->need_build = 1;
         GF_CHECK_OK(gf_sim_advance(s, 10), ctx);
-        if (forget)
+        if (forget) {
+            gf_sim_near_flush(s); /* the list's history is then the only one */
             memset(s->nl->hist, 0, 3 * s->nl->n_pairs * sizeof(double));
+        }
         mean += (y0 - p->y_m[1]) / 300.0;
         *max_sag = fmax(*max_sag, y0 - p->y_m[1]);
     }

@@ -60,6 +60,7 @@ typedef struct bench_args {
     int collapse; /* --scene column_collapse: the dry collapse at a = 1 instead of the bed */
     const char *bed; /* reuse (or keep) the settled bed: PATH_<N>.h5 */
     int sort_every;
+    double near_skin; /* gf_sim_options.near_skin */
     const char *sort_bed;
 } bench_args;
 
@@ -183,6 +184,8 @@ static int parse(int argc, char **argv, bench_args *a)
             a->bed = v;
         else if (!strcmp(argv[i], "--sort-every"))
             a->sort_every = atoi(v);
+        else if (!strcmp(argv[i], "--near-skin"))
+            a->near_skin = atof(v);
         else if (!strcmp(argv[i], "--sort-bed"))
             a->sort_bed = v;
         else if (!strcmp(argv[i], "--scene") && (!strcmp(v, "column_collapse") || !strcmp(v, "settled_bed")))
@@ -220,7 +223,8 @@ int main(int argc, char **argv)
         spec_for(&ctx, &again, &a, a.n[k], 0.0); /* no second settling: the checkpoint holds the bed */
         double rate1 = 0.0;
         for (int q = 0; q < a.n_threads; ++q) {
-            gf_sim_options o = {.n_threads = a.threads[q], .restart_path = ck, .sort_every = a.sort_every};
+            gf_sim_options o = {.n_threads = a.threads[q], .restart_path = ck, .sort_every = a.sort_every,
+                                 .near_skin = a.near_skin};
             if (gf_sim_create(&ctx, &again, &o, &sim) != GF_OK) {
                 fprintf(stderr, "gf-bench-dem: %s\n", ctx.last_msg);
                 return 1;
@@ -249,6 +253,7 @@ int main(int argc, char **argv)
                 return 1;
             }
             double wall = gf_wtime() - t0, cpu = cpu_time_s() - c0;
+            const gf_sim_list_stats ls = gf_sim_list_counters(sim);
             const long ng = (long)gf_sim_particles(sim)->n_local; /* the collapse sets its own count */
             double rate = (double)ng * a.steps / wall;
             if (q == 0)
@@ -257,10 +262,11 @@ int main(int argc, char **argv)
                    ti = t->elapsed_s[GF_T_INTEGRATE] - e0[GF_T_INTEGRATE];
             printf("N = %ld, %d thread(s): %ld steps in %.3f s wall, %.3f s CPU: %.3e particle-steps/s wall "
                    "(speed-up %.2f), %.3e per CPU-second; neighbour %.1f %%, force %.1f %%, integrate %.1f %%, "
-                   "other %.1f %%; state hash %016llx\n",
+                   "other %.1f %%; list builds %ld, near builds %ld, pairs per grain %.2f (near %.2f); "
+                   "state hash %016llx\n",
                    ng, a.threads[q], a.steps, wall, cpu, rate, rate / rate1, (double)ng * a.steps / cpu,
                    100 * tn / wall, 100 * tf / wall, 100 * ti / wall, 100 * (wall - tn - tf - ti) / wall,
-                   state_hash(sim));
+                   ls.builds, ls.near_builds, (double)ls.pairs / ng, (double)ls.near_pairs / ng, state_hash(sim));
             fflush(stdout);
             if (q == 0 && a.dump && !write_dump(sim, a.dump)) {
                 fprintf(stderr, "gf-bench-dem: cannot write %s\n", a.dump);

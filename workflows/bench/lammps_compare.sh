@@ -29,6 +29,9 @@
 # usage: lammps_compare.sh [N] [STEPS] [BUILD_DIR] [N_SETTLE] [SETTLE_STEPS]
 #        (defaults 10000 3000 build-dem 2000 20000; N_SETTLE = 0 skips the observables)
 # COLLAPSE_SEEDS=K (default 3) seeds for the dry collapse, 0 skips it (a few CPU minutes per seed).
+# LMP_SKIN=M (metres) gives LAMMPS another neighbour skin than grainflow's (the
+# thin skin of grainflow's near list, say: LAMMPS has no inner skin, so a
+# settled bed is its best case with a thin one).
 # GF_BED=PREFIX reuses (or keeps) the settled bed PREFIX_<N>.h5 (gf-bench-dem --bed).
 # NICE=, PIN=CPU: how both codes run (workflows/bench/lammps_common.sh; default
 # nice, both pinned to cpu0).
@@ -62,7 +65,7 @@ atom_modify     map array
 boundary        p f p
 comm_modify     vel yes
 read_data       $1
-neighbor        $SKIN bin
+neighbor        ${LMP_SKIN:-$SKIN} bin
 neigh_modify    delay 0 every 1 check yes
 pair_style      gran/hooke/history $KN $KT $GAMMAN $GAMMAT $MU 0
 pair_coeff      * *
