@@ -450,6 +450,12 @@ static void wall_rows(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_si
     }
 }
 
+gf_drift_d2 gf_sim_finish_rows(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_sim_accum *acc)
+{
+    wall_rows(s, i0, i1, f, acc);
+    return gf_sim_finish_range(s, i0, i1);
+}
+
 static gf_status reserve_accumulators(gf_sim *s, size_t n)
 {
     for (int t = 0; t + 1 < s->nl->n_chunks; ++t) { /* the last chunk has no partners beyond it */
@@ -549,6 +555,7 @@ static void run_chunk(gf_sim *s, int c, double *const store[6], size_t n, unsign
 {
     gf_sim_accum *a = &s->acc[c];
     const size_t i0 = s->nl->chunk_row[c], i1 = s->nl->chunk_row[c + 1];
+    a->finished = 0;
     open_chunk(s, c, store, n);
     if (s->law->kernel == gf_contact_linear && (s->skips & GF_SKIP_TANGENTIAL))
         pair_rows_linear_normal(s, i0, i1, store, a);
@@ -557,11 +564,14 @@ static void run_chunk(gf_sim *s, int c, double *const store[6], size_t n, unsign
     else if (s->law->kernel == gf_contact_linear) {
         if (s->near.use && !s->near.valid)
             gf_sim_near_build_chunk(s, c);
-        gf_sim_pair_rows_blocked_linear(s, i0, i1, store, a);
+        /* one chunk whose step ends here: its grains are finished as their rows complete */
+        a->finished = s->drift_with_forces && s->nl->n_chunks == 1;
+        a->finished_d2 = gf_sim_pair_rows_blocked_linear(s, i0, i1, store, a, a->finished);
     }
     else
         pair_rows_table(s, i0, i1, store, a);
-    wall_rows(s, i0, i1, store, a);
+    if (!a->finished)
+        wall_rows(s, i0, i1, store, a);
     atomic_store_explicit(&a->pairs_done, count, memory_order_release);
 }
 
@@ -577,6 +587,8 @@ static void run_chunk(gf_sim *s, int c, double *const store[6], size_t n, unsign
 static gf_drift_d2 complete_chunks(gf_sim *s, int t, int m, int drift, double *const store[6], unsigned long count)
 {
     const int nc = s->nl->n_chunks;
+    if (drift && nc == 1 && s->acc[0].finished) /* by the pair loop, row batch by row batch */
+        return t == 0 ? s->acc[0].finished_d2 : (gf_drift_d2){0.0, 0.0};
     if (drift && m == nc && m > 1) {
         gf_drift_d2 d2[2];
         d2[0] = drift_chunk(s, t, 0);

@@ -49,6 +49,8 @@ typedef struct gf_sim_accum {
     size_t n_contacts;
     double max_overlap_m;
     size_t near_len;  /* the chunk's near-list entries (gf_sim_near.c) */
+    int finished;     /* the pair loop finished the chunk's grains (gf_sim_finish_rows) */
+    gf_drift_d2 finished_d2;
     /* the number of the force evaluation whose pair rows this chunk has
      * finished (its buffer is complete, and it reads no grain any more) */
     _Atomic unsigned long pairs_done;
@@ -200,8 +202,15 @@ gf_status gf_sim_near_reserve(gf_sim *s);
 void gf_sim_near_free(gf_sim *s);
 /* Grain-grain contacts (and lubrication, when on) of rows [i0, i1) of the
  * list into f[0..5] (fx..tz), for the linear law: the blocked, vectorised
- * loop of gf_sim_pairs.c, bitwise the generic loop's results. */
-void gf_sim_pair_rows_blocked_linear(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_sim_accum *acc);
+ * loop of gf_sim_pairs.c, bitwise the generic loop's results. finish: the
+ * rows are the whole store (one chunk) and the step ends with them: each
+ * batch of completed rows gets its walls and gf_sim_finish_range at once
+ * (gf_sim_finish_rows); returns their largest squared displacements. */
+gf_drift_d2 gf_sim_pair_rows_blocked_linear(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_sim_accum *acc,
+                                            int finish);
+/* Wall contacts of grains [i0, i1), whose pair forces are complete, then
+ * gf_sim_finish_range on them. gf_sim_forces.c. */
+gf_drift_d2 gf_sim_finish_rows(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_sim_accum *acc);
 /* Rebuilds the neighbour list from the current positions (wrapping periodic
  * axes first). gf_sim_forces.c. */
 gf_status gf_sim_rebuild(gf_sim *s);

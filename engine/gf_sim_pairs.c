@@ -242,7 +242,24 @@ static void scatter(const pair_view *v, const pair_block *b, size_t nc, double *
     acc->max_overlap_m = max_overlap;
 }
 
-void gf_sim_pair_rows_blocked_linear(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_sim_accum *acc)
+/* The rows [*done, upto) are complete (every pair that adds to their grains
+ * has been scattered): their walls, and with finish their step's end and the
+ * next step's drift (gf_sim_finish_rows), while their lines are still in the
+ * caches. Batches of whole cache lines of doubles (8 grains). */
+static void finish_rows(gf_sim *s, size_t *done, size_t upto, double *const f[6], gf_sim_accum *acc,
+                        gf_drift_d2 *d2, int last)
+{
+    if (!last)
+        upto &= ~(size_t)7;
+    if (upto <= *done || (!last && upto < *done + 64))
+        return;
+    gf_drift_d2 both[2] = {*d2, gf_sim_finish_rows(s, *done, upto, f, acc)};
+    *d2 = gf_drift_d2_max(both, 2);
+    *done = upto;
+}
+
+gf_drift_d2 gf_sim_pair_rows_blocked_linear(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_sim_accum *acc,
+                                            int finish)
 {
     pair_block b;
     row_sums rs = {.i = -1};
@@ -257,6 +274,8 @@ void gf_sim_pair_rows_blocked_linear(gf_sim *s, size_t i0, size_t i1, double *co
     uint8_t any = 0; /* the rows reach grains >= i0 only (j > i) */
     for (size_t g = i0; g < nl->n; ++g)
         any |= s->p->flags[g];
+    gf_drift_d2 d2 = {0.0, 0.0};
+    size_t done = i0;
     while (k < k1) {
         size_t nc = scan(s, &v, &k, k1, &b, any != 0);
         if (s->lubrication)
@@ -264,5 +283,10 @@ void gf_sim_pair_rows_blocked_linear(gf_sim *s, size_t i0, size_t i1, double *co
         else
             compute_dry(s, &v, &b, nc);
         scatter(&v, &b, nc, f, &rs, acc);
+        if (finish) /* the rows before the next pair's are complete */
+            finish_rows(s, &done, k < k1 ? (size_t)v.i[k] : i1, f, acc, &d2, 0);
     }
+    if (finish)
+        finish_rows(s, &done, i1, f, acc, &d2, 1);
+    return d2;
 }
