@@ -35,6 +35,12 @@
 #endif
 
 #define GF_PAIR_BLOCK 256
+/* Software prefetch in the scan (see scan_impl), from this many grains on:
+ * below, the store stays in the last-level cache and the prefetches are
+ * only instructions (docs/benchmarks.md, "Prefetching the partners"). */
+#define GF_PAIR_PREFETCH_MIN_GRAINS 25000
+/* How many pairs ahead the scan prefetches a partner's position. */
+#define GF_PAIR_PREFETCH_AHEAD 16
 
 /* The compute pass is compiled for AVX-512 too (gathers, scatters, masked
  * selects: GCC vectorises the loop there and not for AVX2, which lacks
@@ -72,11 +78,32 @@ typedef struct pair_view {
     const double *sqrt_mk, *meff;
 } pair_view;
 
+/* The lines of partner j that the force and scatter passes of this block
+ * will read (predicted velocity, velocity, spin) and write (force, torque):
+ * requested now, they arrive while the scan goes on. */
+static inline __attribute__((always_inline)) void prefetch_partner(const gf_sim *s, int32_t j)
+{
+    const gf_particles *p = s->p;
+    const double *const rd[9] = {s->vx_pred, s->vy_pred, s->vz_pred, p->vx_m_s, p->vy_m_s,
+                                 p->vz_m_s,  p->wx_rad_s, p->wy_rad_s, p->wz_rad_s};
+    const double *const wr[6] = {p->fx_N, p->fy_N, p->fz_N, p->tx_N_m, p->ty_N_m, p->tz_N_m};
+    for (int q = 0; q < 9; ++q)
+        __builtin_prefetch(rd[q] + j, 0, 3);
+    for (int q = 0; q < 6; ++q)
+        __builtin_prefetch(wr[q] + j, 1, 3);
+}
+
 /* Pass 1, pairs [*pk, k1) of the view: appends up to GF_PAIR_BLOCK
  * candidates. flagged = 0: no grain the rows reach is glued or sleeping (the
- * common case), so the flag tests are compiled out. */
+ * common case), so the flag tests are compiled out. prefetch: a store too
+ * large for the caches, whose partners' lines the passes would wait for one
+ * by one (the hottest instructions of a 1e5-grain bed were the first loads of
+ * each partner's position and force): the scan requests the position of the
+ * partner GF_PAIR_PREFETCH_AHEAD pairs ahead and the other lines of each
+ * candidate's partner (prefetch_partner). */
 static inline __attribute__((always_inline)) size_t scan_impl(const gf_sim *s, const pair_view *v, size_t *pk,
-                                                              size_t k1, pair_block *b, const int flagged, const int lub)
+                                                              size_t k1, pair_block *b, const int flagged, const int lub,
+                                                              const int prefetch)
 {
     const double lub_cut = s->lub_cutoff_m;
     const gf_particles *p = s->p;
@@ -91,6 +118,11 @@ static inline __attribute__((always_inline)) size_t scan_impl(const gf_sim *s, c
     const size_t kstop = k1 - k < GF_PAIR_BLOCK ? k1 : k + GF_PAIR_BLOCK; /* at most one candidate per pair */
     for (; k < kstop; ++k) {
         const int32_t i = pi[k], j = pj[k];
+        if (prefetch) {
+            const int32_t ja = pj[k + GF_PAIR_PREFETCH_AHEAD < k1 ? k + GF_PAIR_PREFETCH_AHEAD : k];
+            __builtin_prefetch(x + ja, 0, 3), __builtin_prefetch(y + ja, 0, 3), __builtin_prefetch(z + ja, 0, 3);
+            __builtin_prefetch(R + ja, 0, 3);
+        }
         const double *sh = nl->shift_m[image[k]];
         double dx = x[i] - x[j] + sh[0], dy = y[i] - y[j] + sh[1], dz = z[i] - z[j] + sh[2];
         double r2 = dx * dx + dy * dy + dz * dz, rsum = R[i] + R[j], reach = lub ? rsum + lub_cut : rsum;
@@ -104,6 +136,8 @@ static inline __attribute__((always_inline)) size_t scan_impl(const gf_sim *s, c
         }
         b->i[nc] = i, b->j[nc] = j, b->k[nc] = (int64_t)k, b->k3[nc] = 3 * (int64_t)k;
         b->dx[nc] = dx, b->dy[nc] = dy, b->dz[nc] = dz, b->r2[nc] = r2, b->rsum[nc] = rsum;
+        if (prefetch && in) /* a candidate: the force and scatter passes will need its partner */
+            prefetch_partner(s, j);
         nc += (size_t)in;
         if (touching[k] & (in ^ 1)) { /* separated (rare; one predictable branch): forget the history */
             hist[3 * k] = hist[3 * k + 1] = hist[3 * k + 2] = 0.0;
@@ -114,12 +148,18 @@ static inline __attribute__((always_inline)) size_t scan_impl(const gf_sim *s, c
     return nc;
 }
 
-/* The four cases compiled apart (flags seen or not, lubrication range or contact only). */
-static size_t scan(const gf_sim *s, const pair_view *v, size_t *pk, size_t k1, pair_block *b, int flagged)
+/* The eight cases compiled apart (flags seen or not, lubrication range or
+ * contact only, prefetching or not). */
+static size_t scan(const gf_sim *s, const pair_view *v, size_t *pk, size_t k1, pair_block *b, int flagged, int pf)
 {
+    if (pf) {
+        if (s->lubrication)
+            return flagged ? scan_impl(s, v, pk, k1, b, 1, 1, 1) : scan_impl(s, v, pk, k1, b, 0, 1, 1);
+        return flagged ? scan_impl(s, v, pk, k1, b, 1, 0, 1) : scan_impl(s, v, pk, k1, b, 0, 0, 1);
+    }
     if (s->lubrication)
-        return flagged ? scan_impl(s, v, pk, k1, b, 1, 1) : scan_impl(s, v, pk, k1, b, 0, 1);
-    return flagged ? scan_impl(s, v, pk, k1, b, 1, 0) : scan_impl(s, v, pk, k1, b, 0, 0);
+        return flagged ? scan_impl(s, v, pk, k1, b, 1, 1, 0) : scan_impl(s, v, pk, k1, b, 0, 1, 0);
+    return flagged ? scan_impl(s, v, pk, k1, b, 1, 0, 0) : scan_impl(s, v, pk, k1, b, 0, 0, 0);
 }
 
 /* Pass 2: the force of each candidate (gf_contact_linear_inline and
@@ -274,10 +314,11 @@ gf_drift_d2 gf_sim_pair_rows_blocked_linear(gf_sim *s, size_t i0, size_t i1, dou
     uint8_t any = 0; /* the rows reach grains >= i0 only (j > i) */
     for (size_t g = i0; g < nl->n; ++g)
         any |= s->p->flags[g];
+    const int prefetch = nl->n >= GF_PAIR_PREFETCH_MIN_GRAINS;
     gf_drift_d2 d2 = {0.0, 0.0};
     size_t done = i0;
     while (k < k1) {
-        size_t nc = scan(s, &v, &k, k1, &b, any != 0);
+        size_t nc = scan(s, &v, &k, k1, &b, any != 0, prefetch);
         if (s->lubrication)
             compute_lub(s, &v, &b, nc);
         else

@@ -12,7 +12,9 @@
  *     flagged path), 3000 steps after its pre-run settle;
  *   - in the same collapse immersed (unresolved fluid, Brenner lubrication
  *     of every pair closer than R/2: the candidates then include near pairs
- *     that do not touch), 1 and 2 threads.
+ *     that do not touch), 1 and 2 threads;
+ *   - in a bed of 26 000 grains, above the store size from which the scan
+ *     prefetches the partners' lines (GF_PAIR_PREFETCH_MIN_GRAINS), 100 steps.
  */
 #include <stdio.h>
 #include <string.h>
@@ -54,6 +56,8 @@ int main(void)
     gf_run_spec bed = gf_test_bed_spec(&ctx, 1200, 0.0); /* 1200: above the serial threshold, threads really run */
     compare(&ctx, "settling bed", &bed, 1, 2000);
     compare(&ctx, "settling bed", &bed, 2, 2000);
+    gf_run_spec big = gf_test_bed_spec(&ctx, 26000, 0.0);
+    compare(&ctx, "large settling bed (prefetching scan)", &big, 1, 100);
 
     gf_run_spec col = gf_test_spec("column_collapse");
     col.aspect_ratio_a = 1.0;
