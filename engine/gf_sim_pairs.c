@@ -102,8 +102,8 @@ static inline __attribute__((always_inline)) void prefetch_partner(const gf_sim 
  * partner GF_PAIR_PREFETCH_AHEAD pairs ahead and the other lines of each
  * candidate's partner (prefetch_partner). */
 static inline __attribute__((always_inline)) size_t scan_impl(const gf_sim *s, const pair_view *v, size_t *pk,
-                                                              size_t k1, pair_block *b, const int flagged, const int lub,
-                                                              const int prefetch)
+                                                              size_t k1, pair_block *b, const int flagged,
+                                                              const int lub, const int prefetch)
 {
     const double lub_cut = s->lub_cutoff_m;
     const gf_particles *p = s->p;

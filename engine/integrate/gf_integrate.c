@@ -58,10 +58,9 @@ void gf_integrate_kick(gf_particles *p, size_t i0, size_t i1, double h, const do
 }
 
 /* gf_integrate_kick_drift, with the number of kicks and the rotation as constants. */
-static inline __attribute__((always_inline)) gf_drift_d2 kick_drift_impl(gf_particles *p, size_t i0, size_t i1,
-                                                                          const int twice, const int spin, double dt_s,
-                                                                          const double g_m_s2[3], const gf_drift_refs *ref,
-                                                                          double *const vp[3], const gf_integrate_factors *k)
+static inline __attribute__((always_inline)) gf_drift_d2
+kick_drift_impl(gf_particles *p, size_t i0, size_t i1, const int twice, const int spin, double dt_s,
+                const double g_m_s2[3], const gf_drift_refs *ref, double *const vp[3], const gf_integrate_factors *k)
 {
     const double *restrict im = k->inv_mass, *restrict iI = k->inv_inertia, *restrict mob = k->mobile;
     double *restrict x = p->x_m, *restrict y = p->y_m, *restrict z = p->z_m;

@@ -11,7 +11,7 @@
  *
  *   gf-bench-dem [--n N]... [--threads T]... [--steps S] [--settle T_nd]
  *                [--lammps-data PATH] [--friction MU] [--bed PREFIX] [--dump PATH]
- *                [--scene settled_bed|column_collapse] [--sort-every K] [--sort-bed PREFIX]
+ *                [--scene settled_bed|column_collapse] [--sort-every K] [--sort-bed PREFIX] [--near-skin F]
  *
  * --lammps-data writes the settled bed of the LAST N as a LAMMPS data file
  * (atom_style sphere, gf_lammps_data.h) plus PATH.params (k_n, gamma_n, k_t, mu, dt, box),
@@ -31,6 +31,9 @@
  * times nothing: a bed kept by a build without the sort, made comparable.
  * A bed sorted for one thread layout is re-sorted into another's when a run
  * with that layout loads it (gf_sim_checkpoint.c), unless --sort-every -1.
+ * --near-skin F sets gf_sim_options.near_skin (the near list's skin as a
+ * fraction of the neighbour skin; 0 the default, < 0 no near list); each line
+ * then also reports the list and near-list builds and pairs per grain.
  */
 #include <math.h>
 #include <stdio.h>
@@ -206,7 +209,8 @@ int main(int argc, char **argv)
     bench_args a;
     if (!parse(argc, argv, &a)) {
         fprintf(stderr, "usage: gf-bench-dem [--n N]... [--threads T]... [--steps S] [--settle T_nd] "
-                        "[--friction MU] [--lammps-data PATH] [--bed PREFIX] [--scene settled_bed|column_collapse] [--dump PATH] [--sort-every K] [--sort-bed PREFIX]\n");
+                        "[--friction MU] [--lammps-data PATH] [--bed PREFIX] [--scene settled_bed|column_collapse] "
+                        "[--dump PATH] [--sort-every K] [--sort-bed PREFIX] [--near-skin F]\n");
         return 2;
     }
     gf_ctx ctx = {0};
