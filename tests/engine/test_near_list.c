@@ -25,12 +25,8 @@
 
 static gf_sim *make(gf_ctx *ctx, const gf_run_spec *spec, int threads, double near_skin)
 {
-    gf_sim_options opt;
-    memset(&opt, 0, sizeof opt);
-    opt.n_threads = threads;
-    opt.near_skin = near_skin;
     gf_sim *s = NULL;
-    GF_CHECK_OK(gf_sim_create(ctx, spec, &opt, &s), ctx);
+    GF_CHECK_OK(gf_sim_create(ctx, spec, &(gf_sim_options){.n_threads = threads, .near_skin = near_skin}, &s), ctx);
     return s;
 }
 
@@ -69,22 +65,8 @@ static void compare(gf_ctx *ctx, const char *what, const gf_run_spec *spec, int 
 int main(void)
 {
     gf_ctx ctx = {0};
-    gf_run_spec bed = gf_test_bed_spec(&ctx, 1200, 0.0); /* 1200: above the serial threshold, threads really run */
-    compare(&ctx, "settling bed", &bed, 1, 2000);
-    compare(&ctx, "settling bed", &bed, 2, 2000);
-
-    gf_run_spec col = gf_test_spec("column_collapse");
-    col.aspect_ratio_a = 1.0;
-    col.contact.friction = 0.5;
-    gf_run_spec_set_param(&ctx, &col, "column_length_over_D", 8.0);
-    compare(&ctx, "column collapse", &col, 1, 3000);
-
-    gf_run_spec wet = col;
-    gf_test_immerse(&wet);
-    compare(&ctx, "immersed column collapse", &wet, 1, 3000);
-    compare(&ctx, "immersed column collapse", &wet, 2, 3000);
-
-    gf_run_spec sleepy = col;
+    gf_test_pair_loop_scenes(&ctx, compare);
+    gf_run_spec sleepy = gf_test_small_collapse_spec(&ctx);
     sleepy.contact.sleep_speed_nd = 0.01;
     compare(&ctx, "column collapse with sleeping grains", &sleepy, 1, 6000);
     return gf_test_finish();

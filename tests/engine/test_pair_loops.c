@@ -24,12 +24,8 @@
 
 static gf_sim *make(gf_ctx *ctx, const gf_run_spec *spec, int threads, int generic)
 {
-    gf_sim_options opt;
-    memset(&opt, 0, sizeof opt);
-    opt.n_threads = threads;
-    opt.generic_pair_loop = generic;
     gf_sim *s = NULL;
-    GF_CHECK_OK(gf_sim_create(ctx, spec, &opt, &s), ctx);
+    GF_CHECK_OK(gf_sim_create(ctx, spec, &(gf_sim_options){.n_threads = threads, .generic_pair_loop = generic}, &s), ctx);
     return s;
 }
 
@@ -53,21 +49,8 @@ static void compare(gf_ctx *ctx, const char *what, const gf_run_spec *spec, int 
 int main(void)
 {
     gf_ctx ctx = {0};
-    gf_run_spec bed = gf_test_bed_spec(&ctx, 1200, 0.0); /* 1200: above the serial threshold, threads really run */
-    compare(&ctx, "settling bed", &bed, 1, 2000);
-    compare(&ctx, "settling bed", &bed, 2, 2000);
+    gf_test_pair_loop_scenes(&ctx, compare);
     gf_run_spec big = gf_test_bed_spec(&ctx, 26000, 0.0);
     compare(&ctx, "large settling bed (prefetching scan)", &big, 1, 100);
-
-    gf_run_spec col = gf_test_spec("column_collapse");
-    col.aspect_ratio_a = 1.0;
-    col.contact.friction = 0.5;
-    gf_run_spec_set_param(&ctx, &col, "column_length_over_D", 8.0);
-    compare(&ctx, "column collapse", &col, 1, 3000);
-
-    gf_run_spec wet = col;
-    gf_test_immerse(&wet);
-    compare(&ctx, "immersed column collapse", &wet, 1, 3000);
-    compare(&ctx, "immersed column collapse", &wet, 2, 3000);
     return gf_test_finish();
 }

@@ -35,6 +35,17 @@ static inline gf_run_spec gf_test_bed_spec(gf_ctx *ctx, int n, double settle_nd)
     return bed;
 }
 
+/* The small frictional column collapse of the pair-loop tests: a = 1,
+ * R0 = 8 D, mu_c 0.5, on the scene's rough base of glued grains. */
+static inline gf_run_spec gf_test_small_collapse_spec(gf_ctx *ctx)
+{
+    gf_run_spec col = gf_test_spec("column_collapse");
+    col.aspect_ratio_a = 1.0;
+    col.contact.friction = 0.5;
+    gf_run_spec_set_param(ctx, &col, "column_length_over_D", 8.0);
+    return col;
+}
+
 /* The fluid of the immersed collapse (configs/column_collapse_immersed.yaml)
  * on spec s: the unresolved tier, rho_f = rho_p / 8, eta_f 0.05 Pa s, Brenner
  * lubrication closer than R/2 with roughness 2e-4 R. */
@@ -44,6 +55,27 @@ static inline void gf_test_immerse(gf_run_spec *s)
     s->fluid.density_kg_m3 = 0.125 * s->grains.density_kg_m3, s->fluid.viscosity_Pa_s = 0.05;
     s->fluid.lubrication = 1;
     s->fluid.roughness_over_R = 2e-4, s->fluid.lub_cutoff_over_R = 0.5;
+}
+
+/* The scenes on which two variants of the pair loop must give the same bits
+ * (compare runs both from the same start and checks): a frictional bed
+ * settling from a stack (contacts made and broken, Coulomb slip) on 1 and 2
+ * threads, 2000 steps (1200 grains: above the serial threshold, threads
+ * really run); the small collapse on its glued base (the scan's flagged
+ * path), 3000 steps; the same collapse immersed with Brenner lubrication
+ * (candidates in range that do not touch), 1 and 2 threads. */
+typedef void (*gf_test_compare_fn)(gf_ctx *ctx, const char *what, const gf_run_spec *spec, int threads, long steps);
+static inline void gf_test_pair_loop_scenes(gf_ctx *ctx, gf_test_compare_fn compare)
+{
+    gf_run_spec bed = gf_test_bed_spec(ctx, 1200, 0.0);
+    compare(ctx, "settling bed", &bed, 1, 2000);
+    compare(ctx, "settling bed", &bed, 2, 2000);
+    gf_run_spec col = gf_test_small_collapse_spec(ctx);
+    compare(ctx, "column collapse", &col, 1, 3000);
+    gf_run_spec wet = col;
+    gf_test_immerse(&wet);
+    compare(ctx, "immersed column collapse", &wet, 1, 3000);
+    compare(ctx, "immersed column collapse", &wet, 2, 3000);
 }
 
 /* Sim with no output directory and `threads` OpenMP threads (0: default). */
