@@ -109,6 +109,7 @@ gf_status gf_sim_sort_grains(gf_sim *s)
 {
     gf_particles *p = s->p;
     const size_t n = p->n_local;
+    gf_sim_near_flush(s); /* its pairs name grains by index: the list's own history, keyed by ids, follows them */
     if (n < 2)
         return GF_OK;
     double r_max = 0.0;
