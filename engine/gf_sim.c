@@ -419,7 +419,9 @@ static gf_status create_inner(gf_sim *s, const gf_run_spec *spec, const gf_sim_o
     if (!(s->spec.contact.skin_over_D > 0.0))
         return GF_FAIL(s->ctx, GF_ERR_CONFIG, "contact.skin_over_D: must be > 0 (got %g)", s->spec.contact.skin_over_D);
     s->skin_m = s->spec.contact.skin_over_D * s->spec.grains.diameter_m;
-    s->near.skin_m = s->opt.near_skin < 0.0 ? 0.0
+    /* only the blocked linear loop scans a near list (gf_sim_near.c) */
+    const int blocked = s->law->kernel == gf_contact_linear && !s->opt.generic_pair_loop;
+    s->near.skin_m = (s->opt.near_skin < 0.0 || !blocked) ? 0.0
                      : (s->opt.near_skin == 0.0 ? GF_SIM_NEAR_SKIN_DEFAULT : fmin(s->opt.near_skin, 1.0)) * s->skin_m;
     if (!(s->spec.contact.sleep_speed_nd >= 0.0 && s->spec.contact.sleep_speed_nd <= 0.05))
         return GF_FAIL(s->ctx, GF_ERR_CONFIG,
@@ -546,7 +548,10 @@ static void flush_kick(gf_sim *s)
 
 static gf_drift_d2 kick_drift_range(gf_sim *s, size_t i0, size_t i1, int n_kicks)
 {
-    const gf_drift_refs ref = {{s->x_ref, s->y_ref, s->z_ref}, {s->x_near, s->y_near, s->z_near}};
+    /* without a near list its displacement is the build's: the same arrays, no second stream */
+    const int near = s->near.skin_m > 0.0;
+    const gf_drift_refs ref = {{s->x_ref, s->y_ref, s->z_ref},
+                               {near ? s->x_near : s->x_ref, near ? s->y_near : s->y_ref, near ? s->z_near : s->z_ref}};
     double *vp[3] = {s->vx_pred, s->vy_pred, s->vz_pred};
     gf_integrate_factors k = {s->inv_mass, (s->skips & GF_SKIP_TANGENTIAL) ? NULL : s->inv_inertia, s->mobile};
     return gf_integrate_kick_drift(s->p, i0, i1, n_kicks, s->dt_s, s->gravity_m_s2, &ref, vp, &k);

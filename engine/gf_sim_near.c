@@ -32,14 +32,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "contact/gf_contact_kernels.h"
 #include "gf_sim_internal.h"
 
 void gf_sim_near_check(gf_sim *s, double near_d2)
 {
     gf_near_list *nr = &s->near;
-    nr->use = nr->skin_m > 0.0 && s->law->kernel == gf_contact_linear && !(s->skips & GF_SKIP_TANGENTIAL) &&
-              !s->opt.generic_pair_loop;
+    nr->use = nr->skin_m > 0.0 && !(s->skips & GF_SKIP_TANGENTIAL); /* skin 0 unless the loop is the blocked one */
     if (nr->valid && near_d2 > 0.25 * nr->skin_m * nr->skin_m)
         nr->valid = 0;
 }
