@@ -128,6 +128,9 @@ gf_status gf_deposit_envelope(gf_ctx *ctx, const double *x, const double *y, con
     const double H = h[ib];
     out->height_m = H;
     out->back_height_m = nb > 1 ? fmax(h[0], h[1]) : h[0];
+    out->area_m2 = 0.0;
+    for (size_t b = 0; b < nb; ++b) /* the last bin ends at the toe */
+        out->area_m2 += h[b] * (b + 1 < nb ? bin_m : front - (double)b * bin_m);
     double *bx = malloc(nb * sizeof *bx), *by = malloc(nb * sizeof *by);
     if (!bx || !by) {
         free(bx), free(by);

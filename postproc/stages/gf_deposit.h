@@ -20,6 +20,16 @@
  *            and sank (below ~0.9; validate_collapse's deposit criterion)
  *   flank  = least-squares line through the bins beyond the highest one with
  *            0.2 H_inf <= h <= 0.8 H_inf; flank angle = atan(-slope)
+ *   area   = cross-section of the heap under its surface, sum of the bin
+ *            heights times the bin width (the last bin ends at the toe),
+ *            above the floor plane y = 0 (the plane H0 is measured from).
+ *            Times the width, it is the volume the grains fill: area
+ *            / (R0 H0) = Phi_i / Phi_deposit for a column of packing Phi_i
+ *            (mass conservation), the bulk dilation or compaction of the
+ *            collapse, and it bounds the shapes the heap can take (a
+ *            straight-flanked triangle no higher than H0 holding it has a
+ *            flank no steeper than atan(H0^2 / (2 area)): 14 deg at a = 0.5,
+ *            docs/validation-collapse.md, "What mass conservation allows")
  *   shape  = trapezoid when the flank line reaches H_inf at a distance
  *            L_top from the wall with L_top >= max(2 D, 0.1 R_inf), i.e. a
  *            plateau of the full height extends over a finite length at the
@@ -33,7 +43,7 @@
 #include "core/gf_status.h"
 
 typedef struct gf_deposit {
-    double runout_m, height_m, back_height_m, flank_angle_deg, plateau_length_m;
+    double runout_m, height_m, back_height_m, flank_angle_deg, plateau_length_m, area_m2;
     int trapezoid;        /* 1 trapezoid, 0 triangle, -1 undetermined (too few flank bins) */
     size_t n_bins;        /* bins of the heap */
     double bin_m;

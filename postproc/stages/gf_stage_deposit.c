@@ -5,8 +5,8 @@
  * Final frame -> gf_deposit_envelope (method in gf_deposit.h): R_inf from
  * the back wall, H_inf, (R_inf − R0)/R0 and H_inf/R0 with R0 the
  * column_length_m attribute, the height at the back wall over H0 (whether
- * the column's top survived), the shape (triangle / trapezoid) and the flank
- * angle. Every frame -> the heap front x_front(t) (same binning, so a grain
+ * the column's top survived), the shape (triangle / trapezoid), the flank
+ * angle and the heap's cross-section, also over R0 H0 (Phi_i / Phi_deposit). Every frame -> the heap front x_front(t) (same binning, so a grain
  * that rolls ahead does not count); if particles.nc holds a single frame,
  * diagnostics front_position is used instead. The maximum front speed is
  * the largest slope of least-squares lines over windows of max(5, n/100)
@@ -33,6 +33,8 @@ const gf_post_col gf_stage_deposit_cols[] = {
     {"deposit_shape", 1, "", "deposit shape (triangle or trapezoid)"},
     {"flank_angle_deg", 0, "degree", "slope angle of the collapsed flank"},
     {"plateau_length_m", 0, "m", "length of the full-height plateau at the back"},
+    {"deposit_area_m2", 0, "m2", "cross-section of the heap under its surface, above the floor plane"},
+    {"deposit_area_over_column", 0, "1", "heap cross-section over R0 H0 (Phi_i / Phi_deposit)"},
     {"Ufront_particles_max_m_s", 0, "m s-1", "maximum front speed from the grains"},
     {"t_front_max_speed_s", 0, "s", "time of the maximum front speed"},
     {"t_rest_s", 0, "s", "time after which the front stays within D/2 of its final position"},
@@ -104,6 +106,9 @@ gf_status gf_stage_deposit(gf_ctx *ctx, const gf_stage_in *in, const gf_stage_op
         }
         if (H0 > 0.0)
             gf_post_row_set(row, "H_back_over_H0", dep.back_height_m / H0);
+        gf_post_row_set(row, "deposit_area_m2", dep.area_m2);
+        if (R0 > 0.0 && H0 > 0.0)
+            gf_post_row_set(row, "deposit_area_over_column", dep.area_m2 / (R0 * H0));
         gf_post_row_set_text(row, "deposit_shape",
                              dep.trapezoid < 0 ? "undetermined" : dep.trapezoid ? "trapezoid" : "triangle");
         gf_post_row_set(row, "flank_angle_deg", dep.flank_angle_deg);

@@ -14,7 +14,10 @@
  *   phi_i (interior and solid volume / R0 H0 W), start time (front past
  *   R0 (1 + 1/32), i.e. D/2 at R0 = 16 D) and half time (front past
  *   R0 + (R_inf - R0)/2), run-out R_inf/R0, H_inf/R0, deposit type
- *   (trapezoid when the back keeps >= 90 % of H0), flank angle, basal excess pore pressure
+ *   (trapezoid when the back keeps >= 90 % of H0), flank angle, the heap's cross-section over
+ *   R0 H0 (= Phi_i / Phi_deposit with Phi_i the solid volume / R0 H0 W; mass conservation), the
+ *   Phi_deposit it gives and the steepest straight-flanked triangle no higher than H0 that could
+ *   hold it (docs/validation-collapse.md, "What mass conservation allows"), basal excess pore pressure
  *   at x = 13/16 R0 (the seed's x = 13 D): dominant extremum (Pa and
  *   / drho g H0) and its time, the extrema of its running mean over 500
  *   T_visq, then the extrema and their times at 12/16, 11/16, 10/16, 8/16 and
@@ -50,7 +53,9 @@
  * by 1000 T_visq +-50 %, loose run-out +5 to +15 %, dense deposit a
  * trapezoid and loose a triangle, both flanks at 26 deg +-3 (the slope of
  * the surface between 0.2 and 0.8 of the deposit's height, as grainflow
- * post's deposit stage measures it). Exit status 1 when one fails.
+ * post's deposit stage measures it). Exit status 1 when one fails. A NOTE
+ * line (not a criterion) gives what mass conservation allows the loose
+ * triangle: its steepest straight flank and the run-out it needs.
  */
 #include <math.h>
 #include <stdio.h>
@@ -64,7 +69,7 @@
 #include "scenes/gf_measure.h"
 #include "stages/gf_deposit.h" /* the flank angle, as grainflow post's deposit stage measures it */
 
-enum { N_GAUGE = 6, MAX_REC = 4096, WALL_GATE = 2, N_SMOOTH = 10, MAX_SEEDS = 8 };
+enum { N_GAUGE = 6, MAX_REC = 4096, WALL_GATE = 2, N_SMOOTH = 10, MAX_SEEDS = 16 };
 /* "start": the front passes R0 (1 + 1/32), D/2 at the thesis' R0 = 16 D (its front curves are (x_f - R0)/R0) */
 #define START_OVER_R0 (1.0 / 32.0)
 /* x / R0: the seed's x = 13 D first (the check reads gauge 0), then towards the back wall, to locate where
@@ -74,6 +79,7 @@ static const double D = 7.6e-3, RHO_P = 8000, RHO_F = 1000, ETA = 1.0, G = 9.81;
 
 typedef struct collapse_run {
     double phi_l, phi_m, phi_end, t_start, t_half, runout, h_inf, h_back, flank_deg;
+    double area; /* the heap's cross-section over R0 H0 (gf_deposit.h): Phi_i / Phi_deposit */
     double pb_min[N_GAUGE], pb_max[N_GAUGE], t_min[N_GAUGE], t_max[N_GAUGE];
     /* gauge 0 (13/16 R0) as a running mean over N_SMOOTH records (500 T_visq): its extrema and their times */
     double ring[N_SMOOTH], t_ring[N_SMOOTH], sm_min, sm_max, t_sm_min, t_sm_max;
@@ -255,21 +261,21 @@ static double half_time(const double *t, const double *front, int n, double R0, 
 /*
  * The final deposit as grainflow post's deposit stage measures it (gf_deposit_envelope,
  * postproc/stages/gf_deposit.h): the height at the back wall (the highest of the two bins of D against
- * it) and the slope of the collapsed flank (least-squares line through the surface bins between 0.2 and
- * 0.8 of the deposit's height). NAN where it cannot tell.
+ * it), the slope of the collapsed flank (least-squares line through the surface bins between 0.2 and
+ * 0.8 of the deposit's height) and the heap's cross-section. NAN where it cannot tell.
  */
-static void deposit_shape(const gf_particles *p, double *back_m, double *flank_deg)
+static void deposit_shape(const gf_particles *p, double *back_m, double *flank_deg, double *area_m2)
 {
     gf_ctx ctx = {0};
     gf_deposit dep;
-    *back_m = *flank_deg = NAN;
+    *back_m = *flank_deg = *area_m2 = NAN;
     unsigned char *mobile = malloc(p->n_local ? p->n_local : 1);
     if (!mobile)
         return;
     for (size_t i = 0; i < p->n_local; ++i)
         mobile[i] = !(p->flags[i] & GF_P_GLUED);
     if (gf_deposit_envelope(&ctx, p->x_m, p->y_m, p->radius_m, mobile, p->n_local, D, &dep) == GF_OK)
-        *back_m = dep.back_height_m, *flank_deg = dep.flank_angle_deg;
+        *back_m = dep.back_height_m, *flank_deg = dep.flank_angle_deg, *area_m2 = dep.area_m2;
     gf_deposit_free(&dep);
     free(mobile);
 }
@@ -389,8 +395,9 @@ static int run_collapse(const run_args *a, int verbose, collapse_run *r)
     r->runout = v[0] / R0, r->h_inf = v[1] / R0, r->phi_end = v[2];
     r->t_half = half_time(r->t_rec, r->f_rec, r->n_rec, R0, v[0]) / t_visq;
     r->t_start /= t_visq;
-    deposit_shape(p, &r->h_back, &r->flank_deg);
+    deposit_shape(p, &r->h_back, &r->flank_deg, &r->area);
     r->h_back /= h0_m();
+    r->area /= R0 * h0_m();
     for (int k = 0; k < N_GAUGE; ++k) {
         r->pb_min[k] /= scale, r->pb_max[k] /= scale;
         r->t_min[k] /= t_visq, r->t_max[k] /= t_visq;
@@ -420,17 +427,26 @@ static double pb_smoothed_dominant(const collapse_run *r)
     return fabs(r->sm_min) > fabs(r->sm_max) ? r->sm_min : r->sm_max;
 }
 
+/* The steepest straight flank of a triangle against the back wall, no higher than H0, whose
+ * cross-section is area R0 H0: tan = H0 / (2 area R0 H0 / H0) = a / (2 area) (mass conservation;
+ * docs/validation-collapse.md, "What mass conservation allows"). */
+static double triangle_bound_deg(double area_over_column)
+{
+    return atan(aspect / (2.0 * area_over_column)) * 180.0 / M_PI;
+}
+
 static void print_summary(const char *mode, double phi_req, const collapse_run *r)
 {
     double scale = (RHO_P - RHO_F) * G * h0_m(), tpb;
     double pb = pb_dominant(r, 0, &tpb);
     printf("SUMMARY [%s] W %.0f D | phi_i %.3f (requested %.2f, solid volume/R0 H0 W %.3f; interior at the end "
            "%.3f) | start %.0f T_visq (half run-out at %.0f) | R_inf/R0 %.2f | H_inf/R0 %.3f | "
-           "back height/H0 %.2f -> %s | flank %.1f deg | Pb extremum %+.0f Pa = %+.3f drho g H0 at %.0f T_visq "
+           "back height/H0 %.2f -> %s | flank %.1f deg | deposit area/(R0 H0) %.3f (Phi_deposit %.3f; steepest "
+           "straight triangle no higher than H0: %.1f deg) | Pb extremum %+.0f Pa = %+.3f drho g H0 at %.0f T_visq "
            "(min %+.3f at %.0f, max %+.3f at %.0f)",
            mode, r->w_over_D, r->phi_l, phi_req, r->phi_m, r->phi_end, r->t_start, r->t_half, r->runout, r->h_inf,
-           r->h_back, r->h_back > 0.9 ? "trapezoid" : "triangle", r->flank_deg, pb * scale, pb, tpb, r->pb_min[0], r->t_min[0],
-           r->pb_max[0], r->t_max[0]);
+           r->h_back, r->h_back > 0.9 ? "trapezoid" : "triangle", r->flank_deg, r->area, r->phi_m / r->area,
+           triangle_bound_deg(r->area), pb * scale, pb, tpb, r->pb_min[0], r->t_min[0], r->pb_max[0], r->t_max[0]);
     printf(" | Pb mean over 500 T_visq min %+.3f at %.0f max %+.3f at %.0f", r->sm_min, r->t_sm_min, r->sm_max,
            r->t_sm_max);
     for (int k = 1; k < N_GAUGE; ++k) /* one field each: validate_fluid.sh picks "Pb at 8/16" */
@@ -469,6 +485,11 @@ static int check_pair(const collapse_run *d, const collapse_run *l)
     fails += verdict("flank angles (row 39: ~26 deg +-3, both columns)",
                      fabs(d->flank_deg - 26.0) <= 3.0 && fabs(l->flank_deg - 26.0) <= 3.0,
                      "dense %.1f, loose %.1f deg", d->flank_deg, l->flank_deg);
+    /* not a criterion: what mass conservation lets row 39's loose triangle be */
+    printf("NOTE mass conservation (row 39): a straight-flanked triangle no higher than H0 holding the loose "
+           "deposit's cross-section (%.3f R0 H0) has a flank of at most %.1f deg and reaches %.2f R0; a 26 deg "
+           "triangle of apex H0 holds %.3f R0 H0\n",
+           l->area, triangle_bound_deg(l->area), 2.0 * l->area, aspect / (2.0 * tan(26.0 * M_PI / 180.0)));
     return fails;
 }
 
@@ -485,6 +506,7 @@ static void ensemble(collapse_run *const *runs, int n, collapse_run *e)
         const collapse_run *r = runs[s];
         e->t_start += r->t_start / n, e->t_half += r->t_half / n, e->runout += r->runout / n;
         e->h_inf += r->h_inf / n, e->h_back += r->h_back / n, e->flank_deg += r->flank_deg / n;
+        e->area += r->area / n, e->phi_m += r->phi_m / n;
         e->w_over_D = r->w_over_D;
         n_rec = r->n_rec < n_rec ? r->n_rec : n_rec;
     }
@@ -501,9 +523,10 @@ static void ensemble(collapse_run *const *runs, int n, collapse_run *e)
 static void print_ensemble(const char *what, int n, const collapse_run *e)
 {
     printf("ENSEMBLE [%s] %d seeds | start %.0f T_visq | half run-out %.0f T_visq | R_inf/R0 %.3f | H_inf/R0 %.3f | "
-           "back height/H0 %.3f | flank %.1f deg | Pb at 13/16 R0, seed mean over 500 T_visq: min %+.3f at %.0f max %+.3f at %.0f\n",
-           what, n, e->t_start, e->t_half, e->runout, e->h_inf, e->h_back, e->flank_deg, e->sm_min, e->t_sm_min, e->sm_max,
-           e->t_sm_max);
+           "back height/H0 %.3f | flank %.1f deg | deposit area/(R0 H0) %.3f (steepest straight triangle %.1f deg) | "
+           "Pb at 13/16 R0, seed mean over 500 T_visq: min %+.3f at %.0f max %+.3f at %.0f\n",
+           what, n, e->t_start, e->t_half, e->runout, e->h_inf, e->h_back, e->flank_deg, e->area,
+           triangle_bound_deg(e->area), e->sm_min, e->t_sm_min, e->sm_max, e->t_sm_max);
 }
 
 int main(int argc, char **argv)

@@ -56,8 +56,8 @@ series_of() { echo '```'; awk -v want="$2" '/^# t\/T_visq/ { n++ } n == want && 
 # a check run in short: the two summaries (main fields) and the verdicts
 short() {
     echo '```'
-    grep 'SUMMARY' "$TMP/$1.txt" | tr '|' '\n' | grep 'SUMMARY\|start\|R_inf\|back height\|flank\|Pb extremum\|Pb mean over\|Pb at 8\|Ecx\|wall' | sed 's/^ */  /; s/^  SUMMARY/SUMMARY/' || true
-    grep '^ENSEMBLE\|^PASS\|^FAIL\|criteria failed\|exit status' "$TMP/$1.txt" || true
+    grep 'SUMMARY' "$TMP/$1.txt" | tr '|' '\n' | grep 'SUMMARY\|start\|R_inf\|back height\|flank\|deposit area\|Pb extremum\|Pb mean over\|Pb at 8\|Ecx\|wall' | sed 's/^ */  /; s/^  SUMMARY/SUMMARY/' || true
+    grep '^ENSEMBLE\|^PASS\|^FAIL\|^NOTE\|criteria failed\|exit status' "$TMP/$1.txt" || true
     echo '```'
 }
 
@@ -182,14 +182,15 @@ TXT
 d=$(grep 'SUMMARY \[dense\]' "$TMP/collapse.txt" | head -1 || true)
 l=$(grep 'SUMMARY \[loose\]' "$TMP/collapse.txt" | head -1 || true)
 field() { echo "$1" | tr '|' '\n' | grep "$2" | head -1 | sed 's/^ *//; s/ *$//; s/^SUMMARY \[[a-z_]*\] //'; }
-for key in "phi_i" "start" "R_inf" "H_inf" "back height" "flank" "Pb extremum" "Pb mean over" "Pb at 8/16" "Ecx_max" "max grain Re" "wall"; do
+for key in "phi_i" "start" "R_inf" "H_inf" "back height" "flank" "deposit area" "Pb extremum" "Pb mean over" "Pb at 8/16" "Ecx_max" "max grain Re" "wall"; do
     case $key in
         phi_i) ref="0.60 (A) / 0.58 (F)"; ron="0.60 / 0.55" ;;
         start) ref="dense lags loose by ~1000 T_visq" ; ron="loose starts first" ;;
-        R_inf) ref="C: 52D/16D = 3.25 (dense); loose +10 %"; ron="loose runs ~2x farther" ;;
+        R_inf) ref="C: 52D x 8D heap as printed, not R_inf from the wall (mass: a trapezoid keeping H0 with a 26 deg flank reaches 1.51 R0); loose +10 %"; ron="loose runs ~2x farther" ;;
         H_inf) ref="C: 8D/16D = 0.5 (dense keeps H0)"; ron="-" ;;
         "back height") ref="dense trapezoid, loose (0.58) triangle"; ron="trapezoid / triangle" ;;
         flank) ref="~26 deg, both columns"; ron="-" ;;
+        "deposit area") ref="(a 26 deg triangle of apex H0 holds 0.513 R0 H0: docs/validation-collapse.md)"; ron="-" ;;
         "Pb extremum") ref="dense < 0, loose > 0, after ~1000 T_visq, gone by ~15000"; ron="dense < 0, loose > 0" ;;
         "Pb mean over") ref="(the same, read on the 500 T_visq running mean)"; ron="-" ;;
         "Pb at 8/16") ref="under-pressure inside the dense column, over-pressure in the loose one"; ron="same" ;;
@@ -202,7 +203,7 @@ done
 echo
 echo 'Seed ensemble and verdicts (spec §8 tolerances):'
 echo '```'
-grep '^ENSEMBLE\|^PASS\|^FAIL\|criteria failed\|exit status' "$TMP/collapse.txt" || true
+grep '^ENSEMBLE\|^PASS\|^FAIL\|^NOTE\|criteria failed\|exit status' "$TMP/collapse.txt" || true
 echo '```'
 echo
 echo 'Every seed:'

@@ -20,6 +20,14 @@
  * continuum profile, the last grain layer stops where h = D/2, i.e. at
  * R − (D/2)(R − plateau)/H: tolerances R_inf ± 1 D from that, H_inf ± 0.6 D,
  * flank angle ± 2.5° (a fit over ~10–20 bins).
+ * Cross-section: the continuum profile's area (A: 8 D x 10 D + 8 D x 20 D / 2
+ * = 160 D², B: 72 D², C: 65.6 D²), within R x D/10 (the staircase
+ * rounds each column of grains to the nearest layer: a mean bias of a
+ * tenth of a grain would be a systematic error of the binning; measured:
+ * 0.6, 0.6 and 1.2 D²); and the same
+ * over R0 H0 = 128 D² in the stage's row. Heap C, the 26° triangle of
+ * H0 = 8 D, holds 0.51 R0 H0: half the grains of a column of a = 0.5 (what
+ * mass conservation allows, docs/validation-collapse.md).
  * Front history (heap A): frames x_i(t) = x_i f(t), f = (R0 + (R − R0) S(t))/R,
  * S = (1 + tanh((t − t_c)/τ))/2, so the front grain (centre x_f) moves with
  * maximum speed x_f (R − R0)/(2 τ R); the time to rest (front within D/2 of
@@ -146,6 +154,12 @@ static void run_heap(const char *name, double H, double plateau, double R, const
     const double h_back = fmax(profile(0.5, H, plateau, R), profile(1.5, H, plateau, R));
     printf("  back height %.3f H0 (profile %.3f)\n", gf_post_row_get(&row, "H_back_over_H0"), h_back / 8.0);
     GF_CHECK_ABS(gf_post_row_get(&row, "H_back_over_H0"), h_back / 8.0, 0.6 / 8.0);
+    /* cross-section: the continuum profile's (plateau H x p, then the triangle H (R - p) / 2) */
+    const double area = gf_post_row_get(&row, "deposit_area_m2"), area_prof = H * (plateau + 0.5 * (R - plateau)) * D * D;
+    printf("  cross-section %.2f D^2 (profile %.2f), over R0 H0 %.4f\n", area / (D * D), area_prof / (D * D),
+           gf_post_row_get(&row, "deposit_area_over_column"));
+    GF_CHECK_ABS(area / (D * D), area_prof / (D * D), 0.1 * R);
+    GF_CHECK_REL(gf_post_row_get(&row, "deposit_area_over_column"), area / (R0 * 8 * D), 1e-12);
     if (frames > 1) {
         const double xf = hp.x_front_grain, vmax = xf * (Rl - R0) / (2.0 * tau * Rl);
         const double onems = 1.0 - 0.5 * D * Rl / (xf * (Rl - R0));   /* 1 - (1 - S) scaled */
