@@ -6,8 +6,9 @@
  * the back wall, H_inf, (R_inf − R0)/R0 and H_inf/R0 with R0 the
  * column_length_m attribute, the height at the back wall over H0 (whether
  * the column's top survived), the shape (triangle / trapezoid), the flank
- * angle and the heap's cross-section, also over R0 H0 (Phi_i / Phi_deposit). Every frame -> the heap front x_front(t) (same binning, so a grain
- * that rolls ahead does not count); if particles.nc holds a single frame,
+ * angle and the heap's cross-section, also over R0 H0 (Phi_i / Phi_deposit).
+ * Every frame -> the heap front x_front(t) (same binning, so a grain that
+ * rolls ahead does not count); if particles.nc holds a single frame,
  * diagnostics front_position is used instead. The maximum front speed is
  * the largest slope of least-squares lines over windows of max(5, n/100)
  * frames; the time to rest is the earliest time after which the front stays
