@@ -506,7 +506,7 @@ static void ensemble(collapse_run *const *runs, int n, collapse_run *e)
         const collapse_run *r = runs[s];
         e->t_start += r->t_start / n, e->t_half += r->t_half / n, e->runout += r->runout / n;
         e->h_inf += r->h_inf / n, e->h_back += r->h_back / n, e->flank_deg += r->flank_deg / n;
-        e->area += r->area / n, e->phi_m += r->phi_m / n;
+        e->area += r->area / n;
         e->w_over_D = r->w_over_D;
         n_rec = r->n_rec < n_rec ? r->n_rec : n_rec;
     }
