@@ -78,10 +78,14 @@ typedef struct pair_view {
     const double *sqrt_mk, *meff;
 } pair_view;
 
-/* The lines of partner j that the force and scatter passes of this block
- * will read (predicted velocity, velocity, spin) and write (force, torque):
- * requested now, they arrive while the scan goes on. */
-static inline __attribute__((always_inline)) void prefetch_partner(const gf_sim *s, int32_t j)
+/* The lines of candidate k that the force and scatter passes of this block
+ * will read (partner j's predicted velocity, velocity, spin; the pair's
+ * damping scale) and write (j's force and torque; the pair's tangential
+ * history, 24 bytes that may straddle two lines): requested now, they arrive
+ * while the scan goes on. The history is a stream the scan itself does not
+ * read, so nothing else brings it in before the force pass gathers it. */
+static inline __attribute__((always_inline)) void prefetch_candidate(const gf_sim *s, const pair_view *v, int32_t j,
+                                                                     size_t k)
 {
     const gf_particles *p = s->p;
     const double *const rd[9] = {s->vx_pred, s->vy_pred, s->vz_pred, p->vx_m_s, p->vy_m_s,
@@ -91,6 +95,8 @@ static inline __attribute__((always_inline)) void prefetch_partner(const gf_sim 
         __builtin_prefetch(rd[q] + j, 0, 3);
     for (int q = 0; q < 6; ++q)
         __builtin_prefetch(wr[q] + j, 1, 3);
+    __builtin_prefetch(v->hist + 3 * k, 1, 3), __builtin_prefetch(v->hist + 3 * k + 2, 1, 3);
+    __builtin_prefetch(v->sqrt_mk + k, 0, 3);
 }
 
 /* Pass 1, pairs [*pk, k1) of the view: appends up to GF_PAIR_BLOCK
@@ -100,7 +106,7 @@ static inline __attribute__((always_inline)) void prefetch_partner(const gf_sim 
  * by one (the hottest instructions of a 1e5-grain bed were the first loads of
  * each partner's position and force): the scan requests the position of the
  * partner GF_PAIR_PREFETCH_AHEAD pairs ahead and the other lines of each
- * candidate's partner (prefetch_partner). */
+ * candidate (prefetch_candidate). */
 static inline __attribute__((always_inline)) size_t scan_impl(const gf_sim *s, const pair_view *v, size_t *pk,
                                                               size_t k1, pair_block *b, const int flagged,
                                                               const int lub, const int prefetch)
@@ -136,8 +142,8 @@ static inline __attribute__((always_inline)) size_t scan_impl(const gf_sim *s, c
         }
         b->i[nc] = i, b->j[nc] = j, b->k[nc] = (int64_t)k, b->k3[nc] = 3 * (int64_t)k;
         b->dx[nc] = dx, b->dy[nc] = dy, b->dz[nc] = dz, b->r2[nc] = r2, b->rsum[nc] = rsum;
-        if (prefetch && in) /* a candidate: the force and scatter passes will need its partner */
-            prefetch_partner(s, j);
+        if (prefetch && in) /* a candidate: the force and scatter passes will need its partner and history */
+            prefetch_candidate(s, v, j, k);
         nc += (size_t)in;
         if (touching[k] & (in ^ 1)) { /* separated (rare; one predictable branch): forget the history */
             hist[3 * k] = hist[3 * k + 1] = hist[3 * k + 2] = 0.0;
