@@ -83,7 +83,11 @@ typedef struct pair_view {
  * damping scale) and write (j's force and torque; the pair's tangential
  * history, 24 bytes that may straddle two lines): requested now, they arrive
  * while the scan goes on. The history is a stream the scan itself does not
- * read, so nothing else brings it in before the force pass gathers it. */
+ * read, so nothing else brings it in before the force pass gathers it.
+ * Into the L2 only (locality 2, prefetcht1): a block's ~200 candidates make
+ * ~3500 requests, several times the 512 lines of a 32 kB L1, so lines sent
+ * to the L1 pushed out each other and the lines the passes were reading
+ * (docs/benchmarks.md, "Prefetching into the L2"). */
 static inline __attribute__((always_inline)) void prefetch_candidate(const gf_sim *s, const pair_view *v, int32_t j,
                                                                      size_t k)
 {
@@ -92,11 +96,11 @@ static inline __attribute__((always_inline)) void prefetch_candidate(const gf_si
                                  p->vz_m_s,  p->wx_rad_s, p->wy_rad_s, p->wz_rad_s};
     const double *const wr[6] = {p->fx_N, p->fy_N, p->fz_N, p->tx_N_m, p->ty_N_m, p->tz_N_m};
     for (int q = 0; q < 9; ++q)
-        __builtin_prefetch(rd[q] + j, 0, 3);
+        __builtin_prefetch(rd[q] + j, 0, 2);
     for (int q = 0; q < 6; ++q)
-        __builtin_prefetch(wr[q] + j, 1, 3);
-    __builtin_prefetch(v->hist + 3 * k, 1, 3), __builtin_prefetch(v->hist + 3 * k + 2, 1, 3);
-    __builtin_prefetch(v->sqrt_mk + k, 0, 3);
+        __builtin_prefetch(wr[q] + j, 1, 2);
+    __builtin_prefetch(v->hist + 3 * k, 1, 2), __builtin_prefetch(v->hist + 3 * k + 2, 1, 2);
+    __builtin_prefetch(v->sqrt_mk + k, 0, 2);
 }
 
 /* Pass 1, pairs [*pk, k1) of the view: appends up to GF_PAIR_BLOCK
