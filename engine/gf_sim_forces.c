@@ -450,11 +450,39 @@ static void wall_rows(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_si
     }
 }
 
+/* gf_sim_finish_range over the grains of [i0, i1) outside the reach runs
+ * (all of them with one chunk, which has none). */
+static gf_drift_d2 finish_outside_runs(gf_sim *s, size_t i0, size_t i1)
+{
+    const gf_nlist *nl = s->nl;
+    const size_t *run = nl->reach_run, n_runs = nl->n_reach_runs;
+    size_t r = 0, hi = n_runs; /* the first run that ends after i0 */
+    while (r < hi) {
+        size_t mid = r + (hi - r) / 2;
+        if (run[2 * mid + 1] <= i0)
+            r = mid + 1;
+        else
+            hi = mid;
+    }
+    gf_drift_d2 d2[2] = {{0.0, 0.0}, {0.0, 0.0}};
+    for (size_t at = i0; at < i1; ++r) {
+        size_t gap_end = r < n_runs && run[2 * r] < i1 ? run[2 * r] : i1;
+        if (at < gap_end) {
+            d2[1] = gf_sim_finish_range(s, at, gap_end);
+            d2[0] = gf_drift_d2_max(d2, 2);
+        }
+        if (r >= n_runs)
+            break;
+        at = run[2 * r + 1] > at ? run[2 * r + 1] : at;
+    }
+    return d2[0];
+}
+
 gf_drift_d2 gf_sim_finish_rows(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_sim_accum *acc)
 {
     wall_rows(s, i0, i1, f, acc);
     const double t0 = gf_wtime(); /* two clock reads per batch of >= 64 rows: no measurable cost (benchmarks.md) */
-    const gf_drift_d2 d2 = gf_sim_finish_range(s, i0, i1);
+    const gf_drift_d2 d2 = finish_outside_runs(s, i0, i1);
     acc->finish_s += gf_wtime() - t0;
     return d2;
 }
@@ -553,8 +581,10 @@ static void wait_for_earlier_chunks(gf_sim *s, int c, unsigned long count)
 }
 
 /* Pair and wall rows of chunk c into the store and the chunk's buffer; then
- * publishes that the chunk is done with the other chunks' grains. */
-static void run_chunk(gf_sim *s, int c, double *const store[6], size_t n, unsigned long count)
+ * publishes that the chunk is done with the other chunks' grains. own: the
+ * thread that runs the chunk also finishes its grains (one chunk per
+ * thread, complete_chunks). */
+static void run_chunk(gf_sim *s, int c, double *const store[6], size_t n, unsigned long count, int own)
 {
     gf_sim_accum *a = &s->acc[c];
     const size_t i0 = s->nl->chunk_row[c], i1 = s->nl->chunk_row[c + 1];
@@ -568,8 +598,10 @@ static void run_chunk(gf_sim *s, int c, double *const store[6], size_t n, unsign
     else if (s->law->kernel == gf_contact_linear) {
         if (s->near.use && !s->near.valid)
             gf_sim_near_build_chunk(s, c);
-        /* one chunk whose step ends here: its grains are finished as their rows complete */
-        a->finished = s->drift_with_forces && s->nl->n_chunks == 1;
+        /* a step that ends here, on the thread that finishes the chunk: the
+         * grains no earlier chunk reaches are finished as their rows complete
+         * (their forces are then whole, and no other row reads them) */
+        a->finished = s->drift_with_forces && (s->nl->n_chunks == 1 || own);
         a->finished_d2 = gf_sim_pair_rows_blocked_linear(s, i0, i1, store, a, a->finished);
     }
     else
@@ -585,9 +617,11 @@ static void run_chunk(gf_sim *s, int c, double *const store[6], size_t n, unsign
  * squared displacement since the build (0 without drift).
  * With one chunk per thread there is no barrier: the grains of a chunk
  * outside the reach runs get no force from other chunks and are read by
- * none, so its thread finishes them at once; it then waits for the earlier
- * chunks' rows only, adds their buffers and finishes the rest (a thread that
- * would wait at a barrier for the slower chunk drifts meanwhile). */
+ * none, so its thread finishes them at once (in its pair loop, as their rows
+ * complete, when the blocked loop runs: run_chunk); it then waits for the
+ * earlier chunks' rows only, adds their buffers and finishes the rest (a
+ * thread that would wait at a barrier for the slower chunk drifts
+ * meanwhile). */
 static gf_drift_d2 complete_chunks(gf_sim *s, int t, int m, int drift, double *const store[6], unsigned long count)
 {
     const int nc = s->nl->n_chunks;
@@ -595,7 +629,7 @@ static gf_drift_d2 complete_chunks(gf_sim *s, int t, int m, int drift, double *c
         return t == 0 ? s->acc[0].finished_d2 : (gf_drift_d2){0.0, 0.0};
     if (drift && m == nc && m > 1) {
         gf_drift_d2 d2[2];
-        d2[0] = drift_chunk(s, t, 0);
+        d2[0] = s->acc[t].finished ? s->acc[t].finished_d2 : drift_chunk(s, t, 0);
         wait_for_earlier_chunks(s, t, count);
         add_from_earlier_chunks(s, t, store);
         d2[1] = drift_chunk(s, t, 1);
@@ -676,7 +710,7 @@ gf_status gf_sim_compute_forces(gf_sim *s)
         int t = 0, m = 1;
 #endif
         for (int c = t; c < s->nl->n_chunks; c += m)
-            run_chunk(s, c, store, n, count);
+            run_chunk(s, c, store, n, count, m == s->nl->n_chunks);
         if (t == 0)
             used = m, drift_t0 = gf_wtime();
         d2[t] = complete_chunks(s, t, m, drift, store, count);

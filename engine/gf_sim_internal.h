@@ -49,7 +49,7 @@ typedef struct gf_sim_accum {
     size_t n_contacts;
     double max_overlap_m;
     size_t near_len;  /* the chunk's near-list entries (gf_sim_near.c) */
-    int finished;     /* the pair loop finished the chunk's grains (gf_sim_finish_rows) */
+    int finished;     /* the pair loop finished the chunk's grains outside the reach runs (gf_sim_finish_rows) */
     gf_drift_d2 finished_d2;
     double finish_s;  /* wall time of those finishes (the integrate timer's share of the force pass) */
     /* the number of the force evaluation whose pair rows this chunk has

@@ -16,6 +16,10 @@
  *     step, Brenner lubrication).
  * A fused step that forgot the fluid forces (tried: both immersed cases
  * fail) or kicked once instead of twice (tried: all four fail) differs.
+ * With one chunk per thread, each chunk's grains that no earlier chunk reaches
+ * are finished inside its pair loop, row batch by row batch (finishing the
+ * reached ones there too, before the earlier chunk has read them: both
+ * 2-thread cases fail).
  * Timers: on one thread the fused kicks and drift run inside the force pass,
  * row batch by row batch; the integrate timer must still get their time
  * (>= 3 % of force + integrate; measured here 19.8 % and 5.7 % on one
