@@ -564,6 +564,19 @@ gf_drift_d2 gf_sim_finish_range(gf_sim *s, size_t i0, size_t i1)
     return kick_drift_range(s, i0, i1, 2);
 }
 
+void gf_sim_prefetch_finish(const gf_sim *s, size_t i0, size_t i1)
+{
+    /* the per-grain arrays that only the finish reads (kick_drift_range):
+     * the pair loop has brought the others into the caches already */
+    const int near = s->near.skin_m > 0.0, spin = !(s->skips & GF_SKIP_TANGENTIAL);
+    const double *const cold[9] = {s->x_ref,    s->y_ref,  s->z_ref,
+                                   near ? s->x_near : NULL, near ? s->y_near : NULL, near ? s->z_near : NULL,
+                                   s->inv_mass, s->mobile, spin ? s->inv_inertia : NULL};
+    for (int q = 0; q < 9; ++q)
+        for (size_t i = i0; cold[q] && i < i1; i += 8) /* a line holds 8 doubles */
+            __builtin_prefetch(cold[q] + i, 0, 2);
+}
+
 gf_drift_d2 gf_sim_finish_share(gf_sim *s, int t, int m)
 {
     size_t i0, i1;

@@ -172,6 +172,10 @@ gf_status gf_sim_compute_forces(gf_sim *s);
 gf_drift_d2 gf_sim_finish_range(gf_sim *s, size_t i0, size_t i1);
 /* The same for thread t of m: the grains of its chunk. */
 gf_drift_d2 gf_sim_finish_share(gf_sim *s, int t, int m);
+/* Requests into the L2 the lines of [i0, i1) that gf_sim_finish_range reads
+ * and the pair loop does not (displacement references, mass factors): for a
+ * store beyond the caches, the row-batch finish asks for the next batch's. */
+void gf_sim_prefetch_finish(const gf_sim *s, size_t i0, size_t i1);
 /* Element-wise largest of n displacement pairs. */
 static inline gf_drift_d2 gf_drift_d2_max(const gf_drift_d2 *d, int n)
 {

@@ -295,9 +295,12 @@ static void scatter(const pair_view *v, const pair_block *b, size_t nc, double *
 /* The rows [*done, upto) are complete (every pair that adds to their grains
  * has been scattered): their walls, and with finish their step's end and the
  * next step's drift (gf_sim_finish_rows), while their lines are still in the
- * caches. Batches of whole cache lines of doubles (8 grains). */
+ * caches. Batches of whole cache lines of doubles (8 grains). prefetch: the
+ * finish's own arrays for a batch as long again are requested, so that they
+ * arrive while the next rows run (docs/benchmarks.md, "Prefetching into the
+ * L2"). */
 static void finish_rows(gf_sim *s, size_t *done, size_t upto, double *const f[6], gf_sim_accum *acc,
-                        gf_drift_d2 *d2, int last)
+                        gf_drift_d2 *d2, int last, int prefetch, size_t i1)
 {
     if (!last)
         upto &= ~(size_t)7;
@@ -305,6 +308,10 @@ static void finish_rows(gf_sim *s, size_t *done, size_t upto, double *const f[6]
         return;
     gf_drift_d2 both[2] = {*d2, gf_sim_finish_rows(s, *done, upto, f, acc)};
     *d2 = gf_drift_d2_max(both, 2);
+    if (prefetch && !last) {
+        const size_t next = upto + (upto - *done);
+        gf_sim_prefetch_finish(s, upto, next < i1 ? next : i1);
+    }
     *done = upto;
 }
 
@@ -335,9 +342,9 @@ gf_drift_d2 gf_sim_pair_rows_blocked_linear(gf_sim *s, size_t i0, size_t i1, dou
             compute_dry(s, &v, &b, nc);
         scatter(&v, &b, nc, f, &rs, acc);
         if (finish) /* the rows before the next pair's are complete */
-            finish_rows(s, &done, k < k1 ? (size_t)v.i[k] : i1, f, acc, &d2, 0);
+            finish_rows(s, &done, k < k1 ? (size_t)v.i[k] : i1, f, acc, &d2, 0, prefetch, i1);
     }
     if (finish)
-        finish_rows(s, &done, i1, f, acc, &d2, 1);
+        finish_rows(s, &done, i1, f, acc, &d2, 1, prefetch, i1);
     return d2;
 }
