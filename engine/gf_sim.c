@@ -546,14 +546,23 @@ static void flush_kick(gf_sim *s)
     s->kick_pending = 0;
 }
 
+/* The arrays the kicks and drift read besides the store: the displacement
+ * references and the per-grain factors. Without a near list its
+ * displacement is the build's: the same arrays, no second stream. */
+static void drift_inputs(const gf_sim *s, gf_drift_refs *ref, gf_integrate_factors *k)
+{
+    const int near = s->near.skin_m > 0.0;
+    *ref = (gf_drift_refs){{s->x_ref, s->y_ref, s->z_ref},
+                           {near ? s->x_near : s->x_ref, near ? s->y_near : s->y_ref, near ? s->z_near : s->z_ref}};
+    *k = (gf_integrate_factors){s->inv_mass, (s->skips & GF_SKIP_TANGENTIAL) ? NULL : s->inv_inertia, s->mobile};
+}
+
 static gf_drift_d2 kick_drift_range(gf_sim *s, size_t i0, size_t i1, int n_kicks)
 {
-    /* without a near list its displacement is the build's: the same arrays, no second stream */
-    const int near = s->near.skin_m > 0.0;
-    const gf_drift_refs ref = {{s->x_ref, s->y_ref, s->z_ref},
-                               {near ? s->x_near : s->x_ref, near ? s->y_near : s->y_ref, near ? s->z_near : s->z_ref}};
+    gf_drift_refs ref;
+    gf_integrate_factors k;
+    drift_inputs(s, &ref, &k);
     double *vp[3] = {s->vx_pred, s->vy_pred, s->vz_pred};
-    gf_integrate_factors k = {s->inv_mass, (s->skips & GF_SKIP_TANGENTIAL) ? NULL : s->inv_inertia, s->mobile};
     return gf_integrate_kick_drift(s->p, i0, i1, n_kicks, s->dt_s, s->gravity_m_s2, &ref, vp, &k);
 }
 
@@ -566,12 +575,15 @@ gf_drift_d2 gf_sim_finish_range(gf_sim *s, size_t i0, size_t i1)
 
 void gf_sim_prefetch_finish(const gf_sim *s, size_t i0, size_t i1)
 {
-    /* the per-grain arrays that only the finish reads (kick_drift_range):
-     * the pair loop has brought the others into the caches already */
-    const int near = s->near.skin_m > 0.0, spin = !(s->skips & GF_SKIP_TANGENTIAL);
-    const double *const cold[9] = {s->x_ref,    s->y_ref,  s->z_ref,
-                                   near ? s->x_near : NULL, near ? s->y_near : NULL, near ? s->z_near : NULL,
-                                   s->inv_mass, s->mobile, spin ? s->inv_inertia : NULL};
+    /* drift_inputs: the arrays only the finish reads (the pair loop has
+     * brought the store's into the caches already) */
+    gf_drift_refs ref;
+    gf_integrate_factors k;
+    drift_inputs(s, &ref, &k);
+    const int near = ref.near[0] != ref.build[0];
+    const double *const cold[9] = {ref.build[0], ref.build[1], ref.build[2],
+                                   near ? ref.near[0] : NULL, near ? ref.near[1] : NULL, near ? ref.near[2] : NULL,
+                                   k.inv_mass, k.mobile, k.inv_inertia};
     for (int q = 0; q < 9; ++q)
         for (size_t i = i0; cold[q] && i < i1; i += 8) /* a line holds 8 doubles */
             __builtin_prefetch(cold[q] + i, 0, 2);

@@ -450,13 +450,15 @@ static void wall_rows(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_si
     }
 }
 
-/* gf_sim_finish_range over the grains of [i0, i1) outside the reach runs
- * (all of them with one chunk, which has none). */
-static gf_drift_d2 finish_outside_runs(gf_sim *s, size_t i0, size_t i1)
+/* The step's end and the next one's drift (gf_sim_finish_range) for the
+ * grains of [i0, i1) outside the reach runs (in_runs 0; all of them with one
+ * chunk, which has none) or inside them (1). The runs start on cache lines,
+ * and so do the chunks and the pair loop's row batches. */
+static gf_drift_d2 finish_runs(gf_sim *s, size_t i0, size_t i1, int in_runs)
 {
     const gf_nlist *nl = s->nl;
     const size_t *run = nl->reach_run, n_runs = nl->n_reach_runs;
-    size_t r = 0, hi = n_runs; /* the first run that ends after i0 */
+    size_t r = 0, hi = n_runs; /* the first run that ends after i0 (row batches call this often) */
     while (r < hi) {
         size_t mid = r + (hi - r) / 2;
         if (run[2 * mid + 1] <= i0)
@@ -466,14 +468,16 @@ static gf_drift_d2 finish_outside_runs(gf_sim *s, size_t i0, size_t i1)
     }
     gf_drift_d2 d2[2] = {{0.0, 0.0}, {0.0, 0.0}};
     for (size_t at = i0; at < i1; ++r) {
-        size_t gap_end = r < n_runs && run[2 * r] < i1 ? run[2 * r] : i1;
-        if (at < gap_end) {
-            d2[1] = gf_sim_finish_range(s, at, gap_end);
+        size_t b = r < n_runs && run[2 * r] < i1 ? run[2 * r] : i1, e = r < n_runs && run[2 * r + 1] < i1 ? run[2 * r + 1] : i1;
+        b = b > at ? b : at;
+        const size_t from = in_runs ? b : at, to = in_runs ? e : b;
+        if (from < to) {
+            d2[1] = gf_sim_finish_range(s, from, to);
             d2[0] = gf_drift_d2_max(d2, 2);
         }
+        at = e > at ? e : at;
         if (r >= n_runs)
             break;
-        at = run[2 * r + 1] > at ? run[2 * r + 1] : at;
     }
     return d2[0];
 }
@@ -482,7 +486,7 @@ gf_drift_d2 gf_sim_finish_rows(gf_sim *s, size_t i0, size_t i1, double *const f[
 {
     wall_rows(s, i0, i1, f, acc);
     const double t0 = gf_wtime(); /* two clock reads per batch of >= 64 rows: no measurable cost (benchmarks.md) */
-    const gf_drift_d2 d2 = finish_outside_runs(s, i0, i1);
+    const gf_drift_d2 d2 = finish_runs(s, i0, i1, 0);
     acc->finish_s += gf_wtime() - t0;
     return d2;
 }
@@ -548,28 +552,6 @@ static void add_from_earlier_chunks(const gf_sim *s, int c, double *const store[
     }
 }
 
-/* The step's end and the next one's drift (gf_sim_finish_range) for the
- * grains of chunk c outside the reach runs (in_runs 0) or inside them (1),
- * where the runs and the chunk start on cache lines. */
-static gf_drift_d2 drift_chunk(gf_sim *s, int c, int in_runs)
-{
-    const gf_nlist *nl = s->nl;
-    const size_t lo = nl->chunk_row[c], hi = nl->chunk_row[c + 1];
-    size_t at = lo;
-    gf_drift_d2 d2[2] = {{0.0, 0.0}, {0.0, 0.0}};
-    for (size_t r = 0; r <= nl->n_reach_runs; ++r) {
-        size_t b = r < nl->n_reach_runs ? nl->reach_run[2 * r] : hi, e = r < nl->n_reach_runs ? nl->reach_run[2 * r + 1] : hi;
-        b = b < lo ? lo : b > hi ? hi : b, e = e < lo ? lo : e > hi ? hi : e;
-        const size_t from = in_runs ? b : at, to = in_runs ? e : b;
-        if (from < to) {
-            d2[1] = gf_sim_finish_range(s, from, to);
-            d2[0] = gf_drift_d2_max(d2, 2);
-        }
-        at = e > at ? e : at;
-    }
-    return d2[0];
-}
-
 /* Waits until every chunk before c has finished its pair rows of force
  * evaluation `count` (a short wait: the thread drifts its own grains first). */
 static void wait_for_earlier_chunks(gf_sim *s, int c, unsigned long count)
@@ -629,10 +611,11 @@ static gf_drift_d2 complete_chunks(gf_sim *s, int t, int m, int drift, double *c
         return t == 0 ? s->acc[0].finished_d2 : (gf_drift_d2){0.0, 0.0};
     if (drift && m == nc && m > 1) {
         gf_drift_d2 d2[2];
-        d2[0] = s->acc[t].finished ? s->acc[t].finished_d2 : drift_chunk(s, t, 0);
+        const size_t lo = s->nl->chunk_row[t], hi = s->nl->chunk_row[t + 1];
+        d2[0] = s->acc[t].finished ? s->acc[t].finished_d2 : finish_runs(s, lo, hi, 0);
         wait_for_earlier_chunks(s, t, count);
         add_from_earlier_chunks(s, t, store);
-        d2[1] = drift_chunk(s, t, 1);
+        d2[1] = finish_runs(s, lo, hi, 1);
         return gf_drift_d2_max(d2, 2);
     }
     if (nc > 1) {
