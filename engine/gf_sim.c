@@ -515,6 +515,13 @@ static void thread_grains(const gf_sim *s, size_t n, int t, int m, size_t *i0, s
     *i0 = (size_t)((long)n * (long)t / m), *i1 = (size_t)((long)n * (long)(t + 1) / m);
 }
 
+/* The per-grain factors of the kicks; no inverse inertia: translation only
+ * (no torque ever, GF_SKIP_TANGENTIAL). */
+static gf_integrate_factors integrate_factors(const gf_sim *s)
+{
+    return (gf_integrate_factors){s->inv_mass, (s->skips & GF_SKIP_TANGENTIAL) ? NULL : s->inv_inertia, s->mobile};
+}
+
 static void kick(gf_sim *s, double h)
 {
     gf_particles *p = s->p;
@@ -530,8 +537,7 @@ static void kick(gf_sim *s, double h)
 #endif
         size_t i0, i1;
         thread_grains(s, (size_t)n, t, m, &i0, &i1);
-        /* no inverse inertia: translation only (no torque ever, GF_SKIP_TANGENTIAL) */
-        gf_integrate_factors k = {s->inv_mass, (s->skips & GF_SKIP_TANGENTIAL) ? NULL : s->inv_inertia, s->mobile};
+        gf_integrate_factors k = integrate_factors(s);
         gf_integrate_kick(p, i0, i1, h, s->gravity_m_s2, &k);
     }
 }
@@ -554,7 +560,7 @@ static void drift_inputs(const gf_sim *s, gf_drift_refs *ref, gf_integrate_facto
     const int near = s->near.skin_m > 0.0;
     *ref = (gf_drift_refs){{s->x_ref, s->y_ref, s->z_ref},
                            {near ? s->x_near : s->x_ref, near ? s->y_near : s->y_ref, near ? s->z_near : s->z_ref}};
-    *k = (gf_integrate_factors){s->inv_mass, (s->skips & GF_SKIP_TANGENTIAL) ? NULL : s->inv_inertia, s->mobile};
+    *k = integrate_factors(s);
 }
 
 static gf_drift_d2 kick_drift_range(gf_sim *s, size_t i0, size_t i1, int n_kicks)
