@@ -11,8 +11,14 @@
  * (D = 7.6 mm, rho_p/rho_f = 8, eta_f = 1 Pa s: Ar ~ 30, viscous regime).
  * Times are in T_visq = eta_f/(drho g H0) and pressures in drho g H0 of the
  * column run. Prints one summary line per run:
- *   phi_i (interior and solid volume / R0 H0 W), start time (front past
- *   R0 (1 + 1/32), i.e. D/2 at R0 = 16 D) and half time (front past
+ *   phi_i (interior and solid volume / R0 H0 W), start time (the deposit's
+ *   edge past R0 (1 + 1/32), i.e. D/2 at R0 = 16 D; the edge is grainflow
+ *   post's deposit front, the furthest right edge of the chain of grains from
+ *   the back wall, gf_deposit_front) and beside it the start of the scene's
+ *   front_position (the upper edge of the farthest bin of D holding D/4 of
+ *   solid height: it moves by whole D, so its threshold rounds up to the
+ *   next whole D, 2 D for R0 = 33-63 D and 3 D at 64 D, where the dense
+ *   column's creep of one or two D no longer counts), half time (front_position past
  *   R0 + (R_inf - R0)/2), run-out R_inf/R0, H_inf/R0, deposit type
  *   (trapezoid when the back keeps >= 90 % of H0), flank angle, the heap's cross-section over
  *   R0 H0 (= Phi_i / Phi_deposit with Phi_i the solid volume / R0 H0 W; mass conservation), the
@@ -70,22 +76,28 @@
 #include "stages/gf_deposit.h" /* the flank angle, as grainflow post's deposit stage measures it */
 
 enum { N_GAUGE = 6, MAX_REC = 4096, WALL_GATE = 2, N_SMOOTH = 10, MAX_SEEDS = 16 };
-/* "start": the front passes R0 (1 + 1/32), D/2 at the thesis' R0 = 16 D (its front curves are (x_f - R0)/R0) */
+/* "start": the deposit's edge passes R0 (1 + 1/32), D/2 at the thesis' R0 = 16 D (its front curves are
+ * (x_f - R0)/R0) */
 #define START_OVER_R0 (1.0 / 32.0)
+/* The edge's advance (x_e - R0)/R0 at which the lag between the columns is also printed: the start's, then
+ * farther along the front curves (a creeping column passes the first ones early, docs/validation-collapse.md) */
+enum { N_LEVEL = 4 };
+static const double EDGE_LEVEL[N_LEVEL] = {START_OVER_R0, 1.0 / 16.0, 1.0 / 8.0, 1.0 / 4.0};
 /* x / R0: the seed's x = 13 D first (the check reads gauge 0), then towards the back wall, to locate where
  * the dense column's basal pressure changes sign */
 static const double GAUGE_X[N_GAUGE] = {13.0 / 16.0, 12.0 / 16.0, 11.0 / 16.0, 10.0 / 16.0, 8.0 / 16.0, 4.0 / 16.0};
 static const double D = 7.6e-3, RHO_P = 8000, RHO_F = 1000, ETA = 1.0, G = 9.81;
 
 typedef struct collapse_run {
-    double phi_l, phi_m, phi_end, t_start, t_half, runout, h_inf, h_back, flank_deg;
+    double phi_l, phi_m, phi_end, t_start, t_start_bins, t_half, runout, h_inf, h_back, flank_deg;
+    double t_edge[N_LEVEL]; /* the edge past R0 (1 + EDGE_LEVEL[k]); t_edge[0] is t_start */
     double area; /* the heap's cross-section over R0 H0 (gf_deposit.h): Phi_i / Phi_deposit */
     double pb_min[N_GAUGE], pb_max[N_GAUGE], t_min[N_GAUGE], t_max[N_GAUGE];
     /* gauge 0 (13/16 R0) as a running mean over N_SMOOTH records (500 T_visq): its extrema and their times */
     double ring[N_SMOOTH], t_ring[N_SMOOTH], sm_min, sm_max, t_sm_min, t_sm_max;
     int n_ring;
-    /* the records, every 50 T_visq from t = 50: time (s), front (m), P_b at 13/16 R0 (Pa) */
-    double t_rec[MAX_REC], f_rec[MAX_REC], pb_rec[MAX_REC];
+    /* the records, every 50 T_visq from t = 50: time (s), front_position and edge (m), P_b at 13/16 R0 (Pa) */
+    double t_rec[MAX_REC], f_rec[MAX_REC], e_rec[MAX_REC], pb_rec[MAX_REC];
     int n_rec;
     double ecx_max, re_max, wall, t_build, t_fluid, t_coupling, t_dem, w_over_D;
     long steps;
@@ -248,6 +260,15 @@ static void record_gauges(gf_sim *sim, double R0, double t, collapse_run *r, dou
     smooth_gauge0(t, r, pb);
 }
 
+/* The first record where x passed x_past; NAN if none. */
+static double first_past(const double *t, const double *x, int n, double x_past)
+{
+    for (int k = 0; k < n; ++k)
+        if (x[k] > x_past)
+            return t[k];
+    return NAN;
+}
+
 /* Half time: first record where the front passed R0 + (R_inf - R0)/2. */
 static double half_time(const double *t, const double *front, int n, double R0, double runout)
 {
@@ -258,26 +279,30 @@ static double half_time(const double *t, const double *front, int n, double R0, 
     return NAN;
 }
 
+/* The mobile grains (not the rough base), as the deposit stage takes them; NULL when out of memory. */
+static unsigned char *mobile_mask(const gf_particles *p)
+{
+    unsigned char *mobile = malloc(p->n_local ? p->n_local : 1);
+    for (size_t i = 0; mobile && i < p->n_local; ++i)
+        mobile[i] = !(p->flags[i] & GF_P_GLUED);
+    return mobile;
+}
+
 /*
  * The final deposit as grainflow post's deposit stage measures it (gf_deposit_envelope,
  * postproc/stages/gf_deposit.h): the height at the back wall (the highest of the two bins of D against
  * it), the slope of the collapsed flank (least-squares line through the surface bins between 0.2 and
  * 0.8 of the deposit's height) and the heap's cross-section. NAN where it cannot tell.
  */
-static void deposit_shape(const gf_particles *p, double *back_m, double *flank_deg, double *area_m2)
+static void deposit_shape(const gf_particles *p, const unsigned char *mobile, double *back_m, double *flank_deg,
+                          double *area_m2)
 {
     gf_ctx ctx = {0};
     gf_deposit dep;
     *back_m = *flank_deg = *area_m2 = NAN;
-    unsigned char *mobile = malloc(p->n_local ? p->n_local : 1);
-    if (!mobile)
-        return;
-    for (size_t i = 0; i < p->n_local; ++i)
-        mobile[i] = !(p->flags[i] & GF_P_GLUED);
     if (gf_deposit_envelope(&ctx, p->x_m, p->y_m, p->radius_m, mobile, p->n_local, D, &dep) == GF_OK)
         *back_m = dep.back_height_m, *flank_deg = dep.flank_angle_deg, *area_m2 = dep.area_m2;
     gf_deposit_free(&dep);
-    free(mobile);
 }
 
 static void print_series_line(double t, double front, const double pb[N_GAUGE], double scale)
@@ -367,7 +392,12 @@ static int run_collapse(const run_args *a, int verbose, collapse_run *r)
     double m_mean = mean_mobile_mass(p, &r->n_grains), v[3], pb[N_GAUGE];
     double t_end = a->end_tv * t_visq, dt = gf_sim_dt_s(sim);
     long n_chunk = (long)ceil(50.0 * t_visq / dt);
-    r->t_start = NAN;
+    unsigned char *mobile = mobile_mask(p);
+    if (!mobile) {
+        fprintf(stderr, "validate_collapse: out of memory\n");
+        gf_sim_destroy(&sim);
+        return 1;
+    }
     t0 = gf_wtime();
     if (verbose)
         printf("# t/T_visq  front/R0  Pb/(drho g H0) at x = 13/16, 12/16, 11/16, 10/16, 8/16, 4/16 R0\n");
@@ -375,15 +405,17 @@ static int run_collapse(const run_args *a, int verbose, collapse_run *r)
         if (gf_sim_advance(sim, n_chunk) != GF_OK) {
             fprintf(stderr, "validate_collapse: %s\n", ctx.last_msg);
             gf_sim_destroy(&sim);
+            free(mobile);
             return 1;
         }
         double t = gf_sim_time_s(sim) - t_off, ecx, re;
         sc->diagnose(sim, v);
         record_gauges(sim, R0, t, r, pb);
-        if (isnan(r->t_start) && v[0] > R0 * (1.0 + START_OVER_R0))
-            r->t_start = t;
-        if (r->n_rec < MAX_REC)
-            r->t_rec[r->n_rec] = t, r->f_rec[r->n_rec] = v[0], r->pb_rec[r->n_rec++] = pb[0];
+        double edge = gf_deposit_front(p->x_m, p->y_m, p->radius_m, mobile, p->n_local, D);
+        if (r->n_rec < MAX_REC) {
+            int k = r->n_rec++;
+            r->t_rec[k] = t, r->f_rec[k] = v[0], r->e_rec[k] = edge, r->pb_rec[k] = pb[0];
+        }
         kinetics(p, r->n_grains, &ecx, &re);
         r->ecx_max = fmax(r->ecx_max, ecx);
         r->re_max = fmax(r->re_max, re);
@@ -394,8 +426,12 @@ static int run_collapse(const run_args *a, int verbose, collapse_run *r)
     sc->diagnose(sim, v);
     r->runout = v[0] / R0, r->h_inf = v[1] / R0, r->phi_end = v[2];
     r->t_half = half_time(r->t_rec, r->f_rec, r->n_rec, R0, v[0]) / t_visq;
-    r->t_start /= t_visq;
-    deposit_shape(p, &r->h_back, &r->flank_deg, &r->area);
+    for (int k = 0; k < N_LEVEL; ++k)
+        r->t_edge[k] = first_past(r->t_rec, r->e_rec, r->n_rec, R0 * (1.0 + EDGE_LEVEL[k])) / t_visq;
+    r->t_start = r->t_edge[0];
+    r->t_start_bins = first_past(r->t_rec, r->f_rec, r->n_rec, R0 * (1.0 + START_OVER_R0)) / t_visq;
+    deposit_shape(p, mobile, &r->h_back, &r->flank_deg, &r->area);
+    free(mobile);
     r->h_back /= h0_m();
     r->area /= R0 * h0_m();
     for (int k = 0; k < N_GAUGE; ++k) {
@@ -435,20 +471,30 @@ static double triangle_bound_deg(double area_over_column)
     return atan(aspect / (2.0 * area_over_column)) * 180.0 / M_PI;
 }
 
+/* " | edge past R0 (1 + 1/32) at .., 1/16 at .., ..": the front curve's times, in T_visq */
+static void print_edge_times(const collapse_run *r)
+{
+    printf(" | edge past R0 (1 + x) at x =");
+    for (int k = 0; k < N_LEVEL; ++k)
+        printf("%s 1/%.0f: %.0f", k ? "," : "", 1.0 / EDGE_LEVEL[k], r->t_edge[k]);
+}
+
 static void print_summary(const char *mode, double phi_req, const collapse_run *r)
 {
     double scale = (RHO_P - RHO_F) * G * h0_m(), tpb;
     double pb = pb_dominant(r, 0, &tpb);
     printf("SUMMARY [%s] W %.0f D | phi_i %.3f (requested %.2f, solid volume/R0 H0 W %.3f; interior at the end "
-           "%.3f) | start %.0f T_visq (half run-out at %.0f) | R_inf/R0 %.2f | H_inf/R0 %.3f | "
+           "%.3f) | start %.0f T_visq (front_position's %.0f; half run-out at %.0f) | R_inf/R0 %.2f | H_inf/R0 %.3f | "
            "back height/H0 %.2f -> %s | flank %.1f deg | deposit area/(R0 H0) %.3f (Phi_deposit %.3f; steepest "
            "straight triangle no higher than H0: %.1f deg) | Pb extremum %+.0f Pa = %+.3f drho g H0 at %.0f T_visq "
            "(min %+.3f at %.0f, max %+.3f at %.0f)",
-           mode, r->w_over_D, r->phi_l, phi_req, r->phi_m, r->phi_end, r->t_start, r->t_half, r->runout, r->h_inf,
+           mode, r->w_over_D, r->phi_l, phi_req, r->phi_m, r->phi_end, r->t_start, r->t_start_bins, r->t_half,
+           r->runout, r->h_inf,
            r->h_back, r->h_back > 0.9 ? "trapezoid" : "triangle", r->flank_deg, r->area, r->phi_m / r->area,
            triangle_bound_deg(r->area), pb * scale, pb, tpb, r->pb_min[0], r->t_min[0], r->pb_max[0], r->t_max[0]);
     printf(" | Pb mean over 500 T_visq min %+.3f at %.0f max %+.3f at %.0f", r->sm_min, r->t_sm_min, r->sm_max,
            r->t_sm_max);
+    print_edge_times(r);
     for (int k = 1; k < N_GAUGE; ++k) /* one field each: validate_fluid.sh picks "Pb at 8/16" */
         printf(" | Pb at %.0f/16 R0 min %+.3f at %.0f max %+.3f at %.0f", 16.0 * GAUGE_X[k], r->pb_min[k],
                r->t_min[k], r->pb_max[k], r->t_max[k]);
@@ -477,6 +523,11 @@ static int check_pair(const collapse_run *d, const collapse_run *l)
     double lag = d->t_start - l->t_start;
     fails += verdict("dense lags loose (row 40: 1000 T_visq +-50 %)", lag >= 500.0 && lag <= 1500.0,
                      "start lag %.0f T_visq (half run-out lag %.0f)", lag, d->t_half - l->t_half);
+    printf("NOTE start lag of front_position (bins of D, threshold rounded up to whole D): %.0f T_visq; lag of the "
+           "edge past R0 (1 + x) at x =", d->t_start_bins - l->t_start_bins);
+    for (int k = 0; k < N_LEVEL; ++k)
+        printf("%s 1/%.0f: %.0f", k ? "," : "", 1.0 / EDGE_LEVEL[k], d->t_edge[k] - l->t_edge[k]);
+    printf(" T_visq\n");
     double gain = l->runout / d->runout - 1.0;
     fails += verdict("loose runs out farther (row 40: +5 to +15 %)", gain >= 0.05 && gain <= 0.15,
                      "loose/dense - 1 = %+.3f (R_inf/R0 dense %.2f)", gain, d->runout);
@@ -504,7 +555,10 @@ static void ensemble(collapse_run *const *runs, int n, collapse_run *e)
     int n_rec = MAX_REC;
     for (int s = 0; s < n; ++s) {
         const collapse_run *r = runs[s];
-        e->t_start += r->t_start / n, e->t_half += r->t_half / n, e->runout += r->runout / n;
+        e->t_start += r->t_start / n, e->t_start_bins += r->t_start_bins / n;
+        for (int k = 0; k < N_LEVEL; ++k)
+            e->t_edge[k] += r->t_edge[k] / n;
+        e->t_half += r->t_half / n, e->runout += r->runout / n;
         e->h_inf += r->h_inf / n, e->h_back += r->h_back / n, e->flank_deg += r->flank_deg / n;
         e->area += r->area / n;
         e->w_over_D = r->w_over_D;
@@ -522,11 +576,14 @@ static void ensemble(collapse_run *const *runs, int n, collapse_run *e)
 
 static void print_ensemble(const char *what, int n, const collapse_run *e)
 {
-    printf("ENSEMBLE [%s] %d seeds | start %.0f T_visq | half run-out %.0f T_visq | R_inf/R0 %.3f | H_inf/R0 %.3f | "
+    printf("ENSEMBLE [%s] %d seeds | start %.0f T_visq (front_position's %.0f) | half run-out %.0f T_visq | "
+           "R_inf/R0 %.3f | H_inf/R0 %.3f | "
            "back height/H0 %.3f | flank %.1f deg | deposit area/(R0 H0) %.3f (steepest straight triangle %.1f deg) | "
-           "Pb at 13/16 R0, seed mean over 500 T_visq: min %+.3f at %.0f max %+.3f at %.0f\n",
-           what, n, e->t_start, e->t_half, e->runout, e->h_inf, e->h_back, e->flank_deg, e->area,
+           "Pb at 13/16 R0, seed mean over 500 T_visq: min %+.3f at %.0f max %+.3f at %.0f",
+           what, n, e->t_start, e->t_start_bins, e->t_half, e->runout, e->h_inf, e->h_back, e->flank_deg, e->area,
            triangle_bound_deg(e->area), e->sm_min, e->t_sm_min, e->sm_max, e->t_sm_max);
+    print_edge_times(e);
+    printf("\n");
 }
 
 int main(int argc, char **argv)
