@@ -91,6 +91,7 @@ static const double D = 7.6e-3, RHO_P = 8000, RHO_F = 1000, ETA = 1.0, G = 9.81;
 typedef struct collapse_run {
     double phi_l, phi_m, phi_end, t_start, t_start_bins, t_half, runout, h_inf, h_back, flank_deg;
     double t_edge[N_LEVEL]; /* the edge past R0 (1 + EDGE_LEVEL[k]); t_edge[0] is t_start */
+    double runout_edge;     /* the edge at the end / R0: grainflow post's R_inf (runout is front_position's) */
     double area; /* the heap's cross-section over R0 H0 (gf_deposit.h): Phi_i / Phi_deposit */
     double pb_min[N_GAUGE], pb_max[N_GAUGE], t_min[N_GAUGE], t_max[N_GAUGE];
     /* gauge 0 (13/16 R0) as a running mean over N_SMOOTH records (500 T_visq): its extrema and their times */
@@ -425,6 +426,7 @@ static int run_collapse(const run_args *a, int verbose, collapse_run *r)
     r->wall = gf_wtime() - t0;
     sc->diagnose(sim, v);
     r->runout = v[0] / R0, r->h_inf = v[1] / R0, r->phi_end = v[2];
+    r->runout_edge = gf_deposit_front(p->x_m, p->y_m, p->radius_m, mobile, p->n_local, D) / R0;
     r->t_half = half_time(r->t_rec, r->f_rec, r->n_rec, R0, v[0]) / t_visq;
     for (int k = 0; k < N_LEVEL; ++k)
         r->t_edge[k] = first_past(r->t_rec, r->e_rec, r->n_rec, R0 * (1.0 + EDGE_LEVEL[k])) / t_visq;
@@ -531,6 +533,8 @@ static int check_pair(const collapse_run *d, const collapse_run *l)
     double gain = l->runout / d->runout - 1.0;
     fails += verdict("loose runs out farther (row 40: +5 to +15 %)", gain >= 0.05 && gain <= 0.15,
                      "loose/dense - 1 = %+.3f (R_inf/R0 dense %.2f)", gain, d->runout);
+    printf("NOTE run-out of the edge (grainflow post's R_inf, not binned): R_inf/R0 dense %.3f, loose %.3f, "
+           "loose/dense - 1 = %+.3f\n", d->runout_edge, l->runout_edge, l->runout_edge / d->runout_edge - 1.0);
     fails += verdict("deposits (row 39: dense trapezoid, loose triangle)", d->h_back > 0.9 && l->h_back <= 0.9,
                      "back height/H0 dense %.2f, loose %.2f", d->h_back, l->h_back);
     fails += verdict("flank angles (row 39: ~26 deg +-3, both columns)",
@@ -558,6 +562,7 @@ static void ensemble(collapse_run *const *runs, int n, collapse_run *e)
         e->t_start += r->t_start / n, e->t_start_bins += r->t_start_bins / n;
         for (int k = 0; k < N_LEVEL; ++k)
             e->t_edge[k] += r->t_edge[k] / n;
+        e->runout_edge += r->runout_edge / n;
         e->t_half += r->t_half / n, e->runout += r->runout / n;
         e->h_inf += r->h_inf / n, e->h_back += r->h_back / n, e->flank_deg += r->flank_deg / n;
         e->area += r->area / n;
