@@ -11,14 +11,14 @@
  * (D = 7.6 mm, rho_p/rho_f = 8, eta_f = 1 Pa s: Ar ~ 30, viscous regime).
  * Times are in T_visq = eta_f/(drho g H0) and pressures in drho g H0 of the
  * column run. Prints one summary line per run:
- *   phi_i (interior and solid volume / R0 H0 W), start time (the deposit's
- *   edge past R0 (1 + 1/32), i.e. D/2 at R0 = 16 D; the edge is grainflow
- *   post's deposit front, the furthest right edge of the chain of grains from
- *   the back wall, gf_deposit_front) and beside it the start of the scene's
- *   front_position (the upper edge of the farthest bin of D holding D/4 of
- *   solid height: it moves by whole D, so its threshold rounds up to the
- *   next whole D, 2 D for R0 = 33-63 D and 3 D at 64 D, where the dense
- *   column's creep of one or two D no longer counts), half time (front_position past
+ *   phi_i (interior and solid volume / R0 H0 W), start time (the scene's
+ *   front_position reaches R0 (1 + 1/32), i.e. D/2 at R0 = 16 D: front_position is the upper
+ *   edge of the farthest bin of D holding D/4 of solid height, so the start is the first bin
+ *   edge at or beyond it, 1 D for R0 <= 32 D, 2 D up to 64 D, 3 D up to 96 D), the times the
+ *   deposit's edge passes R0 (1 + x) for x = 1/32, 1/16, 1/8, 1/4 (the edge is grainflow post's
+ *   deposit front, the furthest right edge of the chain of grains from the back wall,
+ *   gf_deposit_front: resolved to the grain, but grains rolling ahead along the floor carry it)
+ *   and half time (front_position past
  *   R0 + (R_inf - R0)/2), run-out R_inf/R0, H_inf/R0, deposit type
  *   (trapezoid when the back keeps >= 90 % of H0), flank angle, the heap's cross-section over
  *   R0 H0 (= Phi_i / Phi_deposit with Phi_i the solid volume / R0 H0 W; mass conservation), the
@@ -76,11 +76,11 @@
 #include "stages/gf_deposit.h" /* the flank angle, as grainflow post's deposit stage measures it */
 
 enum { N_GAUGE = 6, MAX_REC = 4096, WALL_GATE = 2, N_SMOOTH = 10, MAX_SEEDS = 16 };
-/* "start": the deposit's edge passes R0 (1 + 1/32), D/2 at the thesis' R0 = 16 D (its front curves are
+/* "start": front_position reaches R0 (1 + 1/32), D/2 at the thesis' R0 = 16 D (its front curves are
  * (x_f - R0)/R0) */
 #define START_OVER_R0 (1.0 / 32.0)
 /* The edge's advance (x_e - R0)/R0 at which the lag between the columns is also printed: the start's, then
- * farther along the front curves (a creeping column passes the first ones early, docs/validation-collapse.md) */
+ * farther along the front curves (docs/validation-collapse.md, "Where the start is read") */
 enum { N_LEVEL = 4 };
 static const double EDGE_LEVEL[N_LEVEL] = {START_OVER_R0, 1.0 / 16.0, 1.0 / 8.0, 1.0 / 4.0};
 /* x / R0: the seed's x = 13 D first (the check reads gauge 0), then towards the back wall, to locate where
@@ -89,8 +89,8 @@ static const double GAUGE_X[N_GAUGE] = {13.0 / 16.0, 12.0 / 16.0, 11.0 / 16.0, 1
 static const double D = 7.6e-3, RHO_P = 8000, RHO_F = 1000, ETA = 1.0, G = 9.81;
 
 typedef struct collapse_run {
-    double phi_l, phi_m, phi_end, t_start, t_start_bins, t_half, runout, h_inf, h_back, flank_deg;
-    double t_edge[N_LEVEL]; /* the edge past R0 (1 + EDGE_LEVEL[k]); t_edge[0] is t_start */
+    double phi_l, phi_m, phi_end, t_start, t_half, runout, h_inf, h_back, flank_deg;
+    double t_edge[N_LEVEL]; /* the deposit's edge past R0 (1 + EDGE_LEVEL[k]) */
     double runout_edge;     /* the edge at the end / R0: grainflow post's R_inf (runout is front_position's) */
     double area; /* the heap's cross-section over R0 H0 (gf_deposit.h): Phi_i / Phi_deposit */
     double pb_min[N_GAUGE], pb_max[N_GAUGE], t_min[N_GAUGE], t_max[N_GAUGE];
@@ -430,8 +430,9 @@ static int run_collapse(const run_args *a, int verbose, collapse_run *r)
     r->t_half = half_time(r->t_rec, r->f_rec, r->n_rec, R0, v[0]) / t_visq;
     for (int k = 0; k < N_LEVEL; ++k)
         r->t_edge[k] = first_past(r->t_rec, r->e_rec, r->n_rec, R0 * (1.0 + EDGE_LEVEL[k])) / t_visq;
-    r->t_start = r->t_edge[0];
-    r->t_start_bins = first_past(r->t_rec, r->f_rec, r->n_rec, R0 * (1.0 + START_OVER_R0)) / t_visq;
+    /* front_position moves by bin edges, whole D from the back wall: "reaches" (not "passes", which would
+     * skip a bin where R0 / 32 is a whole number of D, at 32, 64 and 96 D), with a round-off margin */
+    r->t_start = first_past(r->t_rec, r->f_rec, r->n_rec, R0 * (1.0 + START_OVER_R0) - 1e-9 * R0) / t_visq;
     deposit_shape(p, mobile, &r->h_back, &r->flank_deg, &r->area);
     free(mobile);
     r->h_back /= h0_m();
@@ -486,12 +487,11 @@ static void print_summary(const char *mode, double phi_req, const collapse_run *
     double scale = (RHO_P - RHO_F) * G * h0_m(), tpb;
     double pb = pb_dominant(r, 0, &tpb);
     printf("SUMMARY [%s] W %.0f D | phi_i %.3f (requested %.2f, solid volume/R0 H0 W %.3f; interior at the end "
-           "%.3f) | start %.0f T_visq (front_position's %.0f; half run-out at %.0f) | R_inf/R0 %.2f | H_inf/R0 %.3f | "
+           "%.3f) | start %.0f T_visq (half run-out at %.0f) | R_inf/R0 %.2f | H_inf/R0 %.3f | "
            "back height/H0 %.2f -> %s | flank %.1f deg | deposit area/(R0 H0) %.3f (Phi_deposit %.3f; steepest "
            "straight triangle no higher than H0: %.1f deg) | Pb extremum %+.0f Pa = %+.3f drho g H0 at %.0f T_visq "
            "(min %+.3f at %.0f, max %+.3f at %.0f)",
-           mode, r->w_over_D, r->phi_l, phi_req, r->phi_m, r->phi_end, r->t_start, r->t_start_bins, r->t_half,
-           r->runout, r->h_inf,
+           mode, r->w_over_D, r->phi_l, phi_req, r->phi_m, r->phi_end, r->t_start, r->t_half, r->runout, r->h_inf,
            r->h_back, r->h_back > 0.9 ? "trapezoid" : "triangle", r->flank_deg, r->area, r->phi_m / r->area,
            triangle_bound_deg(r->area), pb * scale, pb, tpb, r->pb_min[0], r->t_min[0], r->pb_max[0], r->t_max[0]);
     printf(" | Pb mean over 500 T_visq min %+.3f at %.0f max %+.3f at %.0f", r->sm_min, r->t_sm_min, r->sm_max,
@@ -525,8 +525,7 @@ static int check_pair(const collapse_run *d, const collapse_run *l)
     double lag = d->t_start - l->t_start;
     fails += verdict("dense lags loose (row 40: 1000 T_visq +-50 %)", lag >= 500.0 && lag <= 1500.0,
                      "start lag %.0f T_visq (half run-out lag %.0f)", lag, d->t_half - l->t_half);
-    printf("NOTE start lag of front_position (bins of D, threshold rounded up to whole D): %.0f T_visq; lag of the "
-           "edge past R0 (1 + x) at x =", d->t_start_bins - l->t_start_bins);
+    printf("NOTE lag of the deposit's edge past R0 (1 + x) at x =");
     for (int k = 0; k < N_LEVEL; ++k)
         printf("%s 1/%.0f: %.0f", k ? "," : "", 1.0 / EDGE_LEVEL[k], d->t_edge[k] - l->t_edge[k]);
     printf(" T_visq\n");
@@ -559,7 +558,7 @@ static void ensemble(collapse_run *const *runs, int n, collapse_run *e)
     int n_rec = MAX_REC;
     for (int s = 0; s < n; ++s) {
         const collapse_run *r = runs[s];
-        e->t_start += r->t_start / n, e->t_start_bins += r->t_start_bins / n;
+        e->t_start += r->t_start / n;
         for (int k = 0; k < N_LEVEL; ++k)
             e->t_edge[k] += r->t_edge[k] / n;
         e->runout_edge += r->runout_edge / n;
@@ -581,11 +580,10 @@ static void ensemble(collapse_run *const *runs, int n, collapse_run *e)
 
 static void print_ensemble(const char *what, int n, const collapse_run *e)
 {
-    printf("ENSEMBLE [%s] %d seeds | start %.0f T_visq (front_position's %.0f) | half run-out %.0f T_visq | "
-           "R_inf/R0 %.3f | H_inf/R0 %.3f | "
+    printf("ENSEMBLE [%s] %d seeds | start %.0f T_visq | half run-out %.0f T_visq | R_inf/R0 %.3f | H_inf/R0 %.3f | "
            "back height/H0 %.3f | flank %.1f deg | deposit area/(R0 H0) %.3f (steepest straight triangle %.1f deg) | "
            "Pb at 13/16 R0, seed mean over 500 T_visq: min %+.3f at %.0f max %+.3f at %.0f",
-           what, n, e->t_start, e->t_start_bins, e->t_half, e->runout, e->h_inf, e->h_back, e->flank_deg, e->area,
+           what, n, e->t_start, e->t_half, e->runout, e->h_inf, e->h_back, e->flank_deg, e->area,
            triangle_bound_deg(e->area), e->sm_min, e->t_sm_min, e->sm_max, e->t_sm_max);
     print_edge_times(e);
     printf("\n");
