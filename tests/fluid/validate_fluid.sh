@@ -159,8 +159,9 @@ column flows and the fast tier shows little of the feedback (docs/validation-col
 "Column size"). Times in T_visq = eta_f/(drho g H0); P_b is the basal excess pore pressure at
 x = 13/16 R0 (the seed's x = 13 D for R0 = 16 D), scaled by drho g H0; the other gauges sit under
 the column at 12/16, 11/16, 10/16, 8/16 and 4/16 R0 (the table shows 8/16); every gauge is the
-mean over the transverse cell layers. "start": the front passes R0 (1 + 1/32) (D/2 at the
-thesis' R0); "half run-out": it passes R0 + (R_inf - R0)/2.
+mean over the transverse cell layers. "start": the front reaches R0 (1 + 1/32) (D/2 at the
+thesis' R0; the front moves by bins of D, so the first bin edge at or beyond it); "half
+run-out": it passes R0 + (R_inf - R0)/2.
 
 Preparation (both columns, engine/scenes/gf_scene_column_collapse.c): gf_packing deposits the
 grains with a tuned preparation friction and rotations blocked (the loose-packing route of
