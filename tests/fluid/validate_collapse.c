@@ -474,12 +474,18 @@ static double triangle_bound_deg(double area_over_column)
     return atan(aspect / (2.0 * area_over_column)) * 180.0 / M_PI;
 }
 
-/* " | edge past R0 (1 + 1/32) at .., 1/16 at .., ..": the front curve's times, in T_visq */
+/* " 1/32: .., 1/16: .., ..": one time (T_visq) per edge level */
+static void print_edge_levels(const double t[N_LEVEL])
+{
+    for (int k = 0; k < N_LEVEL; ++k)
+        printf("%s 1/%.0f: %.0f", k ? "," : "", 1.0 / EDGE_LEVEL[k], t[k]);
+}
+
+/* " | edge past R0 (1 + x) at x = 1/32: .., ..": the front curve's times */
 static void print_edge_times(const collapse_run *r)
 {
     printf(" | edge past R0 (1 + x) at x =");
-    for (int k = 0; k < N_LEVEL; ++k)
-        printf("%s 1/%.0f: %.0f", k ? "," : "", 1.0 / EDGE_LEVEL[k], r->t_edge[k]);
+    print_edge_levels(r->t_edge);
 }
 
 static void print_summary(const char *mode, double phi_req, const collapse_run *r)
@@ -525,9 +531,11 @@ static int check_pair(const collapse_run *d, const collapse_run *l)
     double lag = d->t_start - l->t_start;
     fails += verdict("dense lags loose (row 40: 1000 T_visq +-50 %)", lag >= 500.0 && lag <= 1500.0,
                      "start lag %.0f T_visq (half run-out lag %.0f)", lag, d->t_half - l->t_half);
-    printf("NOTE lag of the deposit's edge past R0 (1 + x) at x =");
+    double edge_lag[N_LEVEL];
     for (int k = 0; k < N_LEVEL; ++k)
-        printf("%s 1/%.0f: %.0f", k ? "," : "", 1.0 / EDGE_LEVEL[k], d->t_edge[k] - l->t_edge[k]);
+        edge_lag[k] = d->t_edge[k] - l->t_edge[k];
+    printf("NOTE lag of the deposit's edge past R0 (1 + x) at x =");
+    print_edge_levels(edge_lag);
     printf(" T_visq\n");
     double gain = l->runout / d->runout - 1.0;
     fails += verdict("loose runs out farther (row 40: +5 to +15 %)", gain >= 0.05 && gain <= 0.15,
