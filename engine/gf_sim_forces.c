@@ -468,7 +468,8 @@ static gf_drift_d2 finish_runs(gf_sim *s, size_t i0, size_t i1, int in_runs)
     }
     gf_drift_d2 d2[2] = {{0.0, 0.0}, {0.0, 0.0}};
     for (size_t at = i0; at < i1; ++r) {
-        size_t b = r < n_runs && run[2 * r] < i1 ? run[2 * r] : i1, e = r < n_runs && run[2 * r + 1] < i1 ? run[2 * r + 1] : i1;
+        size_t b = r < n_runs && run[2 * r] < i1 ? run[2 * r] : i1;
+        size_t e = r < n_runs && run[2 * r + 1] < i1 ? run[2 * r + 1] : i1;
         b = b > at ? b : at;
         const size_t from = in_runs ? b : at, to = in_runs ? e : b;
         if (from < to) {

@@ -270,14 +270,17 @@ static double first_past(const double *t, const double *x, int n, double x_past)
     return NAN;
 }
 
-/* Half time: first record where the front passed R0 + (R_inf - R0)/2. */
+/* front_position moves by bin edges, whole D from the back wall: the first record where it reached x
+ * ("passed" would skip a bin where x is itself a bin edge), with a round-off margin */
+static double first_reaching(const double *t, const double *front, int n, double R0, double x)
+{
+    return first_past(t, front, n, x - 1e-9 * R0);
+}
+
+/* Half time: first record where the front reached R0 + (R_inf - R0)/2. */
 static double half_time(const double *t, const double *front, int n, double R0, double runout)
 {
-    double target = R0 + 0.5 * (runout - R0);
-    for (int k = 0; k < n; ++k)
-        if (front[k] >= target && runout > R0)
-            return t[k];
-    return NAN;
+    return runout > R0 ? first_reaching(t, front, n, R0, R0 + 0.5 * (runout - R0)) : NAN;
 }
 
 /* The mobile grains (not the rough base), as the deposit stage takes them; NULL when out of memory. */
@@ -430,9 +433,8 @@ static int run_collapse(const run_args *a, int verbose, collapse_run *r)
     r->t_half = half_time(r->t_rec, r->f_rec, r->n_rec, R0, v[0]) / t_visq;
     for (int k = 0; k < N_LEVEL; ++k)
         r->t_edge[k] = first_past(r->t_rec, r->e_rec, r->n_rec, R0 * (1.0 + EDGE_LEVEL[k])) / t_visq;
-    /* front_position moves by bin edges, whole D from the back wall: "reaches" (not "passes", which would
-     * skip a bin where R0 / 32 is a whole number of D, at 32, 64 and 96 D), with a round-off margin */
-    r->t_start = first_past(r->t_rec, r->f_rec, r->n_rec, R0 * (1.0 + START_OVER_R0) - 1e-9 * R0) / t_visq;
+    /* reached, not passed: R0 / 32 is a whole number of D at 32, 64 and 96 D */
+    r->t_start = first_reaching(r->t_rec, r->f_rec, r->n_rec, R0, R0 * (1.0 + START_OVER_R0)) / t_visq;
     deposit_shape(p, mobile, &r->h_back, &r->flank_deg, &r->area);
     free(mobile);
     r->h_back /= h0_m();
