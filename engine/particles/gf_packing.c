@@ -588,9 +588,10 @@ static gf_status prep_setup(gf_ctx *ctx, const gf_packing_spec *sp, double mu_pr
     s->k_t = 0.2 * s->k_n;
     s->mu = mu_prep;
     s->mu_obs = sp->mu_obstacles > 0.0 ? sp->mu_obstacles : mu_prep;
-    s->rolling = 0;
+    s->rolling = sp->free_pour;
     s->dt = PREP_DT_OVER_TC * t_c;
-    s->tau = PREP_TERMINAL_ND * sqrt(D / g) ; /* g tau = terminal speed PREP_TERMINAL_ND sqrt(gD) */
+    /* g tau = terminal speed PREP_TERMINAL_ND sqrt(gD); a free pour has no drag */
+    s->tau = sp->free_pour ? INFINITY : PREP_TERMINAL_ND * sqrt(D / g);
     s->g = g;
     s->skin = PREP_SKIN_D * D;
     return prep_rebuild(ctx, s);
@@ -656,6 +657,10 @@ static gf_status check_spec(gf_ctx *ctx, const gf_packing_spec *sp)
         return GF_FAIL(ctx, GF_ERR_CONFIG, "packing: the vertical axis cannot be periodic");
     if (!(sp->density_kg_m3 > 0.0) || !(sp->gravity_m_s2 > 0.0))
         return GF_FAIL(ctx, GF_ERR_CONFIG, "packing: grain density and gravity must be > 0");
+    if (sp->free_pour && !isnan(sp->phi_target))
+        return GF_FAIL(ctx, GF_ERR_CONFIG,
+                       "packing: a free pour takes the packing it reaches; phi_initial %g cannot be requested with it",
+                       sp->phi_target);
     if (!isnan(sp->phi_target) && !(sp->phi_target >= 0.5 && sp->phi_target <= 0.645))
         return GF_FAIL(ctx, GF_ERR_PHYSICS,
                        "packing: phi_initial %g outside what deposition can build [0.50, 0.645]", sp->phi_target);
@@ -860,6 +865,18 @@ gf_status gf_packing_build(gf_ctx *ctx, const gf_packing_spec *sp, gf_particles 
                 next = fmax(0.0, mu - 0.05);
             }
             mu = next;
+        }
+        if (best_err > tol) {
+            /* a small control box samples few grains: its Phi scatters by more than the tolerance */
+            double lo[3], hi[3], D = 2.0 * sp->psd.mean_radius_m;
+            control_box(sp, lo, hi);
+            prep_free(&best);
+            return GF_FAIL(ctx, GF_ERR_PHYSICS,
+                           "packing: phi_initial %.4f not reached within %.2g in %d deposits (closest %.4f at mu_prep "
+                           "= %.4f), measured over an interior box of %.1f x %.1f x %.1f D: a larger container or "
+                           "tolerance may help",
+                           sp->phi_target, tol, max_it, best_phi, best_mu, (hi[0] - lo[0]) / D, (hi[1] - lo[1]) / D,
+                           (hi[2] - lo[2]) / D);
         }
     }
     /* trim at H and export */

@@ -22,12 +22,17 @@
  *      with mu_prep in [0, 0.4] (up to the sampling noise of a finite
  *      deposit); mu_prep is found by safeguarded regula falsi until the
  *      interior value is within the
- *      tolerance of the target (or the iteration budget is spent; the best
- *      deposit is kept and the residual is reported).
+ *      tolerance of the target. When the iteration budget is spent first,
+ *      the preparation fails (GF_ERR_PHYSICS, naming the closest deposit):
+ *      a run never starts from a packing other than the one requested.
  *   4. The deposit is trimmed: grains whose centre lies above the target
  *      height H are removed, so the column top is at H within one radius.
  *   Targets below what the most frictional deposit reaches are reported as
  *   GF_ERR_PHYSICS (no silent clamp).
+ *   Free pour (free_pour = 1, phi_target NaN): one deposit at mu_natural
+ *   with free rotations and no drag, the grains falling from the loose
+ *   lattice (twice the final height): the thesis' "settling from a taller
+ *   box" for its Janssen silo. The packing is what the pour reaches.
  *
  * Measures (both stored in the result, for phi_initial_measured and
  * phi_initial_local of the run's metadata):
@@ -68,6 +73,10 @@ typedef struct gf_packing_spec {
                                      so that no grain squeezed through the obstacles' gaps leaves the box) */
     double phi_target;            /* requested interior Phi; NaN: one deposit at mu_prep = mu_natural */
     double mu_natural;            /* friction used when phi_target is NaN (the run's mu_c) */
+    int free_pour;                /* 1 (phi_target NaN only): the grains fall from the loose lattice with free
+                                     rotations and no preparation drag, at mu_natural, i.e. they settle "from a
+                                     taller box" with the run's own friction and restitution 0.3 (Izard 2014
+                                     §2.1.3.2, the Janssen silo); 0: the tuned protocol above */
     double tolerance;             /* |phi_local - target| accepted; 0: 0.005 */
     int max_iterations;           /* deposits in the bisection; 0: 8 */
     double interior_margin_m;     /* margin of the control box; 0: 1.5 D */

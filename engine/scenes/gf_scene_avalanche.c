@@ -43,6 +43,7 @@ static const gf_param_info avalanche_params[] = {
     {"bed_height_over_D", "1", 8.0, 2.0, 500.0, "initial bed height / D"},
     {"incline_deg", "degree", 25.0, 0.0, 60.0, "incline angle theta, applied at t = 0"},
     {"phi_target", "1", 0.60, 0.50, 0.645, "bed packing fraction requested (the campaign's phi_initial wins)"},
+    {"phi_tolerance", "1", 0.005, 0.001, 0.05, "accepted |Phi - phi_target| of the preparation (thin beds: more)"},
     {"settle_time_nd", "1", 5.0, 0.0, 1e4, "re-equilibration at theta = 0 before t = 0, sqrt(D/g)"},
 };
 
@@ -85,7 +86,7 @@ static gf_status avalanche_build(gf_sim *sim, const gf_run_spec *spec)
                               NULL);
     gf_packing_spec ps = {.lo_m = {0, 0, 0}, .hi_m = {L, h_bed, W}, .periodic = {1, 0, 1}, .phi_target = phi,
                           .psd = psd, .density_kg_m3 = rho, .gravity_m_s2 = spec->gravity_m_s2, .obstacles = base,
-                          .seed = spec->seed};
+                          .seed = spec->seed, .tolerance = gf_run_spec_param(spec, "phi_tolerance", 0.005)};
     gf_packing_result pr;
     if (st == GF_OK)
         st = gf_packing_build_cached(ctx, &ps, gf_sim_preparation_dir(sim), p, &pr);

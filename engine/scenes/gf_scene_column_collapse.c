@@ -68,6 +68,7 @@ static const gf_param_info column_params[] = {
     {"width_over_D", "1", 3.0, 1.0, 100.0, "transverse periodic width W / D"},
     {"rough_base", "1", 1.0, 0.0, 1.0, "1: glued grains centred on the floor; 0: plain frictional floor"},
     {"phi_target", "1", 0.60, 0.50, 0.645, "requested interior Phi_i (the campaign's phi_initial wins when set)"},
+    {"phi_tolerance", "1", 0.005, 0.001, 0.05, "accepted |Phi - phi_target| of the preparation (small columns: more)"},
     {"domain_length_over_R0", "1", 0.0, 0.0, 100.0, "domain length / R0; 0: from the published run-out law"},
     {"settle_time_nd", "1", 5.0, 0.0, 1e4, "re-equilibration with the run's contacts before t = 0, sqrt(D/g)"},
     {"settle_rotation_locked", "1", 0.0, 0.0, 1.0,
@@ -149,7 +150,8 @@ static gf_status column_build(gf_sim *sim, const gf_run_spec *spec)
     }
     gf_packing_spec ps = {.lo_m = {0, 0, 0}, .hi_m = {g.R0, g.H0, g.W}, .periodic = {0, 0, 1}, .walls_x = 1,
                           .phi_target = g.phi, .psd = psd, .density_kg_m3 = spec->grains.density_kg_m3,
-                          .gravity_m_s2 = spec->gravity_m_s2, .obstacles = under, .seed = spec->seed};
+                          .gravity_m_s2 = spec->gravity_m_s2, .obstacles = under, .seed = spec->seed,
+                          .tolerance = gf_run_spec_param(spec, "phi_tolerance", 0.005)};
     gf_packing_result pr;
     if (st == GF_OK)
         st = gf_packing_build_cached(ctx, &ps, gf_sim_preparation_dir(sim), p, &pr);

@@ -3,7 +3,10 @@
  * preparations"), end to end through the scheduler.
  *
  * Three small dry collapses: two differ only in the restitution (same
- * column), the third asks for another Phi_i. Run in order by one worker:
+ * column), the third asks for another Phi_i. The columns are 8 D x 8 D: at
+ * a = 0.5 the preparation's interior control box would be half a grain tall,
+ * too few grains for Phi_i within 0.005, and the runs would be refused. Run
+ * in order by one worker:
  * - the campaign's preparations/ holds two deposits, not three;
  * - the second run, which read the first run's column back, writes the same
  *   particles.nc (positions and velocities at every output instant, bit for
@@ -22,7 +25,7 @@
 static const char campaign_text[] =
     "name: shared_prep\n"
     "end_time: 1\n"
-    "scene: {name: column_collapse, aspect_ratio: 0.5, column_length_over_D: 8, phi_target: 0.58,\n"
+    "scene: {name: column_collapse, aspect_ratio: 1, column_length_over_D: 8, phi_target: 0.58,\n"
     "        settle_time_nd: 1}\n"
     "grains: {diameter_m: 7.6e-3, density_kg_m3: 2500}\n"
     "output: {interval_nd: 0.5, fields: false, probes: false}\n"

@@ -49,7 +49,8 @@
  * edge. Each seed's
  * values are printed; saturation, the law's consistency and the interior
  * Phi stay checked on every realisation.
- * GF_TEST_TC, GF_TEST_DROP (floor_drop_over_D) and GF_TEST_SEED override the
+ * GF_TEST_TC, GF_TEST_DROP (floor_drop_over_D), GF_TEST_PHI (phi_target),
+ * GF_TEST_POUR (free_pour: the thesis' filling) and GF_TEST_SEED override the
  * set-up (exploration).
  */
 #include <stddef.h>
@@ -87,6 +88,10 @@ static gf_sim *settle(double side, double fill, unsigned seed, silo *o)
     spec.contact.wall_friction = 0.25;
     spec.contact.restitution = 0.3;
     spec.contact.t_contact_nd = getenv("GF_TEST_TC") ? atof(getenv("GF_TEST_TC")) : 0.02;
+    if (getenv("GF_TEST_PHI"))
+        gf_run_spec_set_param(&ctx, &spec, "phi_target", atof(getenv("GF_TEST_PHI")));
+    if (getenv("GF_TEST_POUR"))
+        gf_run_spec_set_param(&ctx, &spec, "free_pour", atof(getenv("GF_TEST_POUR")));
     if (getenv("GF_TEST_DROP"))
         gf_run_spec_set_param(&ctx, &spec, "floor_drop_over_D", atof(getenv("GF_TEST_DROP")));
     gf_run_spec_set_param(&ctx, &spec, "side_over_D", side);
