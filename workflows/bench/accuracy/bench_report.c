@@ -13,11 +13,13 @@
  * The order in cell size h is the same formula along the cell sweep (at
  * dt = t_c/50): p = ln(e_1 / e_2) / ln(h_1 / h_2).
  */
+#include <errno.h>
 #include <math.h>
 #include <netcdf.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
 
 #include "bench_accuracy.h"
@@ -328,6 +330,8 @@ gf_status bench_write(gf_ctx *ctx, const char *dir, const bench_point *pts, int 
                       int n_cases, int full)
 {
     char path[1024];
+    if (mkdir(dir, 0777) != 0 && errno != EEXIST)
+        return GF_FAIL(ctx, GF_ERR_IO, "bench: cannot create %s: %s", dir, strerror(errno));
     snprintf(path, sizeof path, "%s/bench_accuracy.csv", dir);
     GF_TRY(write_csv(ctx, path, pts, n, cases));
     snprintf(path, sizeof path, "%s/bench_accuracy.nc", dir);
