@@ -872,9 +872,9 @@ gf_status gf_packing_build(gf_ctx *ctx, const gf_packing_spec *sp, gf_particles 
             control_box(sp, lo, hi);
             prep_free(&best);
             return GF_FAIL(ctx, GF_ERR_PHYSICS,
-                           "packing: phi_initial %.4f not reached within %.2g in %d deposits (closest %.4f at mu_prep "
-                           "= %.4f), measured over an interior box of %.1f x %.1f x %.1f D: a larger container or "
-                           "tolerance may help",
+                           "packing: phi_initial %.4f not reached within %.2g in %d deposits (closest %.4f at "
+                           "mu_prep = %.4f), measured over an interior box of %.1f x %.1f x %.1f D: a larger "
+                           "container or a larger phi_tolerance may help",
                            sp->phi_target, tol, max_it, best_phi, best_mu, (hi[0] - lo[0]) / D, (hi[1] - lo[1]) / D,
                            (hi[2] - lo[2]) / D);
         }
