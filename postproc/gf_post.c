@@ -197,7 +197,8 @@ static void read_identity(gf_post_row *row)
                                              {"phi_initial", "Phi_i"},
                                              {"realised_St", "realised_St"},
                                              {"realised_r", "realised_r"},
-                                             {"phi_initial_measured", "phi_initial_measured"}};
+                                             {"phi_initial_measured", "phi_initial_measured"},
+                                             {"phi_initial_local", "phi_initial_local"}};
         for (size_t m = 0; m < sizeof map / sizeof map[0]; ++m)
             gf_post_row_set(row, map[m][1], gf_ncr_att_double_or(&f, map[m][0], NAN));
         if (strcmp(row->scene, "column_collapse") == 0) {
