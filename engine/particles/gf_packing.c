@@ -505,6 +505,20 @@ static double container_base_m(const gf_packing_spec *sp)
     return base;
 }
 
+/* Contact law of the mean pair: stiffness for t_c (unclipped law, Schäfer et al. 1996), damping ratio for
+ * eps, k_t = 0.2 k_n, friction mu (and on the obstacles unless mu_obstacles is set); dt follows t_c. */
+static void prep_contacts(prep *s, const gf_packing_spec *sp, double t_c, double eps, double mu)
+{
+    double D = 2.0 * sp->psd.mean_radius_m, m_mean = sp->density_kg_m3 * M_PI * D * D * D / 6.0;
+    double le = log(eps);
+    s->k_n = 0.5 * m_mean * (M_PI * M_PI + le * le) / (t_c * t_c);
+    s->zeta = -le / sqrt(M_PI * M_PI + le * le);
+    s->k_t = 0.2 * s->k_n;
+    s->mu = mu;
+    s->mu_obs = sp->mu_obstacles > 0.0 ? sp->mu_obstacles : mu;
+    s->dt = PREP_DT_OVER_TC * t_c;
+}
+
 static gf_status prep_setup(gf_ctx *ctx, const gf_packing_spec *sp, double mu_prep, prep *s)
 {
     memset(s, 0, sizeof *s);
@@ -580,16 +594,8 @@ static gf_status prep_setup(gf_ctx *ctx, const gf_packing_spec *sp, double mu_pr
         s->wall[s->n_walls++] = (prep_wall){{0, 0, sp->lo_m[2] - back}, {0, 0, 1}};
         s->wall[s->n_walls++] = (prep_wall){{0, 0, sp->hi_m[2] + back}, {0, 0, -1}};
     }
-    /* stiffness of the mean pair for t_c (unclipped law, Schäfer et al. 1996); damping ratio for eps */
-    double m_mean = sp->density_kg_m3 * M_PI * D * D * D / 6.0, t_c = PREP_TC_ND * sqrt(D / g);
-    double le = log(PREP_RESTITUTION);
-    s->k_n = 0.5 * m_mean * (M_PI * M_PI + le * le) / (t_c * t_c);
-    s->zeta = -le / sqrt(M_PI * M_PI + le * le);
-    s->k_t = 0.2 * s->k_n;
-    s->mu = mu_prep;
-    s->mu_obs = sp->mu_obstacles > 0.0 ? sp->mu_obstacles : mu_prep;
+    prep_contacts(s, sp, PREP_TC_ND * sqrt(D / g), PREP_RESTITUTION, mu_prep);
     s->rolling = sp->free_pour;
-    s->dt = PREP_DT_OVER_TC * t_c;
     /* g tau = terminal speed PREP_TERMINAL_ND sqrt(gD); a free pour has no drag */
     s->tau = sp->free_pour ? INFINITY : PREP_TERMINAL_ND * sqrt(D / g);
     s->g = g;
@@ -657,6 +663,10 @@ static gf_status check_spec(gf_ctx *ctx, const gf_packing_spec *sp)
         return GF_FAIL(ctx, GF_ERR_CONFIG, "packing: the vertical axis cannot be periodic");
     if (!(sp->density_kg_m3 > 0.0) || !(sp->gravity_m_s2 > 0.0))
         return GF_FAIL(ctx, GF_ERR_CONFIG, "packing: grain density and gravity must be > 0");
+    if (sp->relax.mu > 0.0 && !(sp->relax.t_contact_s > 0.0 && sp->relax.restitution > 0.0 &&
+                                sp->relax.restitution <= 1.0))
+        return GF_FAIL(ctx, GF_ERR_CONFIG, "packing: the relaxation needs t_c > 0 and 0 < eps <= 1 (got %g s, %g)",
+                       sp->relax.t_contact_s, sp->relax.restitution);
     if (sp->free_pour && !isnan(sp->phi_target))
         return GF_FAIL(ctx, GF_ERR_CONFIG,
                        "packing: a free pour takes the packing it reaches; phi_initial %g cannot be requested with it",
@@ -746,6 +756,15 @@ static gf_status deposit(gf_ctx *ctx, const gf_packing_spec *sp, double mu_prep,
     GF_TRY(check_spec(ctx, sp));
     GF_TRY(prep_setup(ctx, sp, mu_prep, s));
     gf_status st = prep_settle(ctx, s, 2.0 * sp->psd.mean_radius_m);
+    if (st == GF_OK && sp->relax.mu > 0.0) {
+        /* as the run will start: its contacts, unloaded tangential springs (gf_packing.h, step 3) */
+        prep_contacts(s, sp, sp->relax.t_contact_s, sp->relax.restitution, sp->relax.mu);
+        memset(s->hist, 0, 3 * s->n_pairs * sizeof *s->hist);
+        memset(s->wall_hist, 0, s->n * PREP_MAX_WALLS * 3 * sizeof *s->wall_hist);
+        st = prep_rebuild(ctx, s); /* the pairs' sqrt(m k_n) follow the new stiffness */
+        if (st == GF_OK)
+            st = prep_settle(ctx, s, 2.0 * sp->psd.mean_radius_m);
+    }
     if (st != GF_OK) {
         prep_free(s);
         return st;
