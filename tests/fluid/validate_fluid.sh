@@ -165,11 +165,14 @@ run-out": it passes R0 + (R_inf - R0)/2.
 
 Preparation (both columns, engine/scenes/gf_scene_column_collapse.c): gf_packing deposits the
 grains with a tuned preparation friction and rotations blocked (the loose-packing route of
-engine/particles/gf_packing.h), trims the deposit at H0, then the column re-equilibrates dry for
-5 sqrt(D/g) with the run's contacts, rotations still blocked (settle_rotation_locked = 1); the
-rotations are free from t = 0, when the gate opens into the fluid at rest. phi_i is the sampled
-interior solid fraction, "solid volume/R0 H0 W" the Rondon-style estimate (H0 measured from the
-floor plane, through the half-grains of the rough base).
+engine/particles/gf_packing.h); each deposit relaxes with the run's contacts from unloaded
+tangential springs before its Phi is measured (relax_preparation = 1, so that the tuned Phi is
+the one the run starts from: without it the loose column started at 0.557-0.559 for 0.55), is
+trimmed at H0, then the column re-equilibrates dry for 5 sqrt(D/g) with the run's contacts,
+rotations still blocked (settle_rotation_locked = 1); the rotations are free from t = 0, when the
+gate opens into the fluid at rest. phi_i is the sampled interior solid fraction at t = 0,
+"solid volume/R0 H0 W" the Rondon-style estimate (H0 measured from the floor plane, through the
+half-grains of the rough base).
 
 Command: \`validate_collapse $DENSE 20000 0 check column_length_over_D=48 seeds=5\` (the ctest
 test collapse_dense_loose, labels slow and open): five seeds (packing and rough base) of each column;
