@@ -28,9 +28,9 @@ static int key_text(const gf_packing_spec *sp, char *buf, size_t n)
                     GF_VERSION, GF_GIT_HASH, GF_PACKING_PROTOCOL, gf_packing_build_stamp(), sp->lo_m[0], sp->lo_m[1], sp->lo_m[2],
                     sp->hi_m[0], sp->hi_m[1], sp->hi_m[2], sp->periodic[0], sp->periodic[1], sp->periodic[2],
                     sp->walls_x, sp->walls_z, sp->wall_setback_m, sp->phi_target, sp->mu_natural, sp->free_pour,
-                    sp->relax.mu, sp->relax.t_contact_s, sp->relax.restitution, sp->tolerance, sp->max_iterations, sp->interior_margin_m,
-                    sp->psd.mean_radius_m, sp->psd.polydispersity, sp->density_kg_m3, sp->gravity_m_s2,
-                    sp->mu_obstacles, n_obs, sp->seed);
+                    sp->relax.mu, sp->relax.t_contact_s, sp->relax.restitution, sp->tolerance, sp->max_iterations,
+                    sp->interior_margin_m, sp->psd.mean_radius_m, sp->psd.polydispersity, sp->density_kg_m3,
+                    sp->gravity_m_s2, sp->mu_obstacles, n_obs, sp->seed);
 }
 
 static uint64_t fnv1a(uint64_t h, const void *data, size_t n)

@@ -26,12 +26,15 @@
  * may roll, as a loose column does once disturbed (Rondon et al. 2011: the
  * contraction expels pore fluid, positive basal excess pressure);
  * validate_collapse's mode "held" measures how far it contracts behind a
- * closed gate. Even with the rotations blocked, a loose column prepared at
- * mu_prep above the run's mu_c compacts when its contacts slide at mu_c:
- * 0.557 at t = 0 for a 0.55 request (48 D, seed 1; 0.552 with the run at
- * mu 0.4 or without the re-equilibration). relax_preparation = 1 has each
- * deposit relax at mu_c before the preparation measures it (gf_packing's
- * mu_relax), so that the bisection tunes the Phi the run starts from.
+ * closed gate. Even with the rotations blocked, a loose column compacts in
+ * the re-equilibration: the run's contacts start with unloaded tangential
+ * springs, stiffer than the preparation's and at mu_c below its mu_prep
+ * (0.557 at t = 0 for a 0.55 request, 48 D, seed 1; 0.552 without the
+ * re-equilibration or with the run at mu 0.4, 0.553 at the preparation's
+ * t_c). relax_preparation = 1 has each deposit relax with the run's mu_c,
+ * t_c and eps_max before the preparation measures it (gf_packing_spec.relax;
+ * the preparation's linear law, an approximation for a Hertz run), so that
+ * the bisection tunes the Phi the run starts from (0.550 there).
  *
  * The domain length follows the published run-out laws with a 30 % margin:
  *     (R_inf - R0)/R0 = lambda1 a (a small),  lambda2 a^(2/3) (a large),
@@ -77,8 +80,8 @@ static const gf_param_info column_params[] = {
     {"domain_length_over_R0", "1", 0.0, 0.0, 100.0, "domain length / R0; 0: from the published run-out law"},
     {"settle_time_nd", "1", 5.0, 0.0, 1e4, "re-equilibration with the run's contacts before t = 0, sqrt(D/g)"},
     {"relax_preparation", "1", 0.0, 0.0, 1.0,
-     "1: each deposit of the preparation relaxes at the run's mu_c before its Phi is measured, so that a "
-     "column prepared above mu_c keeps phi_target through the re-equilibration (with settle_rotation_locked)"},
+     "1: each deposit of the preparation relaxes with the run's contacts before its Phi is measured, so that "
+     "the column keeps phi_target through the re-equilibration (with settle_rotation_locked)"},
     {"settle_rotation_locked", "1", 0.0, 0.0, 1.0,
      "1: rotations blocked during the re-equilibration, as in the preparation (keeps loose packings); 0: free"},
     {"rest_energy", "1", 1e-4, 0.0, 1.0, "done() when kinetic energy per grain < rest_energy m g D"},
@@ -161,7 +164,8 @@ static gf_status column_build(gf_sim *sim, const gf_run_spec *spec)
                           .gravity_m_s2 = spec->gravity_m_s2, .obstacles = under, .seed = spec->seed,
                           .tolerance = gf_run_spec_param(spec, "phi_tolerance", 0.005)};
     if (gf_run_spec_param(spec, "relax_preparation", 0.0) > 0.5)
-        ps.relax = (gf_packing_relax){spec->contact.friction, gf_run_spec_t_contact_s(spec), spec->contact.restitution};
+        ps.relax = (gf_packing_relax){.mu = spec->contact.friction, .t_contact_s = gf_run_spec_t_contact_s(spec),
+                                      .restitution = spec->contact.restitution};
     gf_packing_result pr;
     if (st == GF_OK)
         st = gf_packing_build_cached(ctx, &ps, gf_sim_preparation_dir(sim), p, &pr);

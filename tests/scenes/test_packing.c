@@ -70,8 +70,8 @@ static void check_rough_base(void)
 
 /*
  * Refusals: a target the bisection does not reach within its budget (one deposit, a tolerance of 1e-5),
- * a free pour asked for a packing fraction, a relaxation without a contact duration; each names what went wrong instead of handing a run a
- * packing other than the one requested.
+ * a free pour asked for a packing fraction, a relaxation without a contact duration; each names what
+ * went wrong instead of handing a run a packing other than the one requested.
  */
 static void check_refusals(void)
 {
