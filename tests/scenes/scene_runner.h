@@ -38,6 +38,16 @@ static inline void runner_dry_spec(gf_run_spec *s, const char *scene)
     snprintf(s->fluid.model, sizeof s->fluid.model, "none");
 }
 
+/* The simulation of spec on one thread (the validations' figures are one-thread runs); NULL, with the
+ * failure counted, when gf_sim_create refuses it. */
+static inline gf_sim *runner_create(gf_ctx *ctx, const gf_run_spec *spec)
+{
+    gf_sim *sim = NULL;
+    gf_sim_options opt = {.n_threads = 1};
+    GF_CHECK_OK(gf_sim_create(ctx, spec, &opt, &sim), ctx);
+    return sim;
+}
+
 /* Advances until done() or t_max_nd (sqrt(D/g)); checks done every `every_nd`. Returns steps run. */
 static inline long runner_until_done(gf_sim *sim, double t_max_nd, double every_nd)
 {

@@ -82,9 +82,7 @@ static int flow_open(flow *f, double theta_deg, double length_over_D, double bed
     gf_run_spec_set_param(ctx, &spec, "width_over_D", 6.0);
     gf_run_spec_set_param(ctx, &spec, "bed_height_over_D", bed_over_D);
     gf_run_spec_set_param(ctx, &spec, "height_over_D", bed_over_D + 10.0);
-    gf_sim_options opt = {.n_threads = 1};
-    f->sim = NULL;
-    GF_CHECK_OK(gf_sim_create(ctx, &spec, &opt, &f->sim), ctx);
+    f->sim = runner_create(ctx, &spec);
     if (!f->sim)
         return 0;
     f->D = spec.grains.diameter_m, f->theta = theta_deg * M_PI / 180.0, f->rho = spec.grains.density_kg_m3;

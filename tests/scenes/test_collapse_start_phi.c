@@ -35,9 +35,7 @@ static double start_phi(int relax, double *build_s)
     GF_CHECK_OK(gf_run_spec_set_param(&ctx, &spec, "settle_rotation_locked", 1.0), &ctx);
     GF_CHECK_OK(gf_run_spec_set_param(&ctx, &spec, "relax_preparation", relax), &ctx);
     double t0 = runner_now_s();
-    gf_sim *sim = NULL;
-    gf_sim_options opt = {.n_threads = 1};
-    GF_CHECK_OK(gf_sim_create(&ctx, &spec, &opt, &sim), &ctx);
+    gf_sim *sim = runner_create(&ctx, &spec);
     if (!sim)
         return NAN;
     double phi_global, phi_local;

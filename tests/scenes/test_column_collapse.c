@@ -57,9 +57,7 @@ static void collapse(double a, unsigned seed, double *runout, double *h_over_r0,
     if (getenv("GF_TEST_WIDTH"))
         GF_CHECK_OK(gf_run_spec_set_param(&ctx, &spec, "width_over_D", atof(getenv("GF_TEST_WIDTH"))), &ctx);
     double t0 = runner_now_s();
-    gf_sim *sim = NULL;
-    gf_sim_options opt = {.n_threads = 1};
-    GF_CHECK_OK(gf_sim_create(&ctx, &spec, &opt, &sim), &ctx);
+    gf_sim *sim = runner_create(&ctx, &spec);
     if (!sim) {
         *runout = *h_over_r0 = *phi_i = NAN;
         return;

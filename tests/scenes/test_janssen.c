@@ -97,9 +97,7 @@ static gf_sim *settle(double side, double fill, unsigned seed, silo *o)
     gf_run_spec_set_param(&ctx, &spec, "side_over_D", side);
     gf_run_spec_set_param(&ctx, &spec, "fill_height_over_D", fill);
     double t0 = runner_now_s();
-    gf_sim *sim = NULL;
-    gf_sim_options opt = {.n_threads = 1};
-    GF_CHECK_OK(gf_sim_create(&ctx, &spec, &opt, &sim), &ctx);
+    gf_sim *sim = runner_create(&ctx, &spec);
     if (!sim)
         return NULL;
     double t1 = runner_now_s(), phi_local;
