@@ -23,6 +23,8 @@
 # usage: parallel_efficiency.sh [N] [STEPS] [ROUNDS] [BUILD_DIR]
 #        (defaults 10000 3000 3 build)
 # GF_BED=PREFIX reuses (or keeps) the settled bed PREFIX_<N>.h5 (default /tmp/gfbed).
+# GF_CPUS=A,B pins to cpus A and B instead of 0 and 1 (where cpu0 and cpu1 are
+# two hardware threads of one core, pick two cores: lscpu -e).
 # OMP_WAIT_POLICY is left to the caller (unset: libgomp spins, then sleeps).
 set -eu
 N=${1:-10000}
@@ -34,6 +36,9 @@ case $BUILD in /*) ;; *) BUILD=$ROOT/$BUILD ;; esac
 BENCH=$BUILD/workflows/bench/gf-bench-dem
 LATENCY=$BUILD/workflows/bench/gf-core-latency
 BED=${GF_BED:-/tmp/gfbed}
+CPUS=${GF_CPUS:-0,1}
+CPU_A=${CPUS%,*}
+CPU_B=${CPUS#*,}
 for exe in "$BENCH" "$LATENCY"; do
     [ -x "$exe" ] || { echo "parallel_efficiency.sh: $exe not built (cmake --build $BUILD --target gf-bench-dem gf-core-latency)" >&2; exit 1; }
 done
@@ -44,15 +49,15 @@ rate() { # cpus threads -> particle-steps per wall second
         sed -n 's/.* \([0-9.e+]*\) particle-steps\/s wall.*/\1/p' | tail -1
 }
 
-rate 0 1 >/dev/null # settles and keeps the bed on the first call
-echo "N = $N, $STEPS steps, $ROUNDS rounds, OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-(unset)}"
-printf '%-6s %-11s %-11s %-11s %-9s %-9s %-10s %s\n' round R0_cpu0 R1_cpu1 R2_both max/min speed-up efficiency line_ns
+rate "$CPU_A" 1 >/dev/null # settles and keeps the bed on the first call
+echo "N = $N, $STEPS steps, $ROUNDS rounds, cpus $CPU_A and $CPU_B, OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-(unset)}"
+printf '%-6s %-11s %-11s %-11s %-9s %-9s %-10s %s\n' round "R0_cpu$CPU_A" "R1_cpu$CPU_B" R2_both max/min speed-up efficiency line_ns
 r=1
 while [ "$r" -le "$ROUNDS" ]; do
-    R0=$(rate 0 1)
-    R1=$(rate 1 1)
-    LAT=$("$LATENCY" 0 1 | sed -n 's/.*one-way \([0-9.]*\) ns.*/\1/p')
-    R2=$(rate 0,1 2)
+    R0=$(rate "$CPU_A" 1)
+    R1=$(rate "$CPU_B" 1)
+    LAT=$("$LATENCY" "$CPU_A" "$CPU_B" | sed -n 's/.*one-way \([0-9.]*\) ns.*/\1/p')
+    R2=$(rate "$CPU_A,$CPU_B" 2)
     awk -v r="$r" -v a="$R0" -v b="$R1" -v c="$R2" -v l="$LAT" 'BEGIN {
         hi = a > b ? a : b; lo = a > b ? b : a;
         printf "%-6d %-11.4g %-11.4g %-11.4g %-9.3f %-9.3f %-10.3f %s\n", r, a, b, c, hi / lo, c / hi, c / (a + b), l }'
