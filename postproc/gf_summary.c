@@ -15,6 +15,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "core/gf_build_info.h"
 #include "gf_ncread.h"
 
 const gf_post_col gf_summary_identity_cols[] = {
@@ -158,7 +159,7 @@ static gf_status write_nc(gf_ctx *ctx, const char *dir, const gf_post_row *rows,
     snprintf(buf, sizeof buf, "%s: grainflow post %s", stamp, dir);
     NCW(att(ncid, NC_GLOBAL, "history", buf));
 #ifdef GF_VERSION
-    snprintf(buf, sizeof buf, "grainflow %s (%s)", GF_VERSION, GF_GIT_HASH);
+    snprintf(buf, sizeof buf, "grainflow %s (%s)", GF_VERSION, gf_build_revision());
 #else
     snprintf(buf, sizeof buf, "grainflow");
 #endif

@@ -29,11 +29,10 @@
 #include <string.h>
 #include <time.h>
 
+#include "core/gf_build_info.h"
+
 #ifndef GF_VERSION
 #define GF_VERSION "unknown"
-#endif
-#ifndef GF_GIT_HASH
-#define GF_GIT_HASH "unknown"
 #endif
 
 /* First error wins: OR-ing netCDF codes would garble the message. */
@@ -110,10 +109,11 @@ static int put_cf_globals(int ncid, const gf_run_spec *spec, gf_nc_kind kind, co
     gmtime_r(&now, &utc);
     char stamp[32];
     strftime(stamp, sizeof stamp, "%Y-%m-%dT%H:%M:%SZ", &utc);
-    snprintf(buf, sizeof buf, "%s: created by grainflow %s (%s), scene %s", stamp, GF_VERSION, GF_GIT_HASH,
+    snprintf(buf, sizeof buf, "%s: created by grainflow %s (%s), scene %s", stamp, GF_VERSION, gf_build_revision(),
              spec->scene);
     NC_SEQ(rc, put_text(ncid, "history", buf));
-    NC_SEQ(rc, put_text(ncid, "source", "grainflow " GF_VERSION " (" GF_GIT_HASH ")"));
+    snprintf(buf, sizeof buf, "grainflow %s (%s)", GF_VERSION, gf_build_revision());
+    NC_SEQ(rc, put_text(ncid, "source", buf));
     NC_SEQ(rc, put_text(ncid, "references",
                    "Izard E., PhD thesis, INP Toulouse (2014); Courrech du Pont S. et al., Phys. Rev. Lett. 90, "
                    "044301 (2003); variable names: grainflow docs/output.md"));

@@ -9,6 +9,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "core/gf_build_info.h"
 #include "schedule/gf_comm.h"
 
 static const char usage_text[] =
@@ -126,7 +127,7 @@ int gf_cli_main(int argc, char **argv)
         fputs(usage_text, stdout);
         code = GF_EXIT_OK;
     } else if (strcmp(argv[1], "--version") == 0 || strcmp(argv[1], "version") == 0) {
-        printf("grainflow %s (%s)\n", GF_VERSION, GF_GIT_HASH);
+        printf("grainflow %s (%s)\n", GF_VERSION, gf_build_revision());
         code = GF_EXIT_OK;
     } else {
         static const struct {

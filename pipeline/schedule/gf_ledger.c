@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "core/gf_build_info.h"
 #include "campaign/gf_spec_text.h"
 
 gf_status gf_ledger_mkdirs(gf_ctx *ctx, const char *path)
@@ -131,7 +132,7 @@ char *gf_ledger_run_yaml(const gf_run_spec *spec, const char *campaign, size_t *
                       "# grainflow %s (%s): resolved spec of run %s.\n"
                       "# Every value is explicit; `grainflow run run.yaml` reproduces the run (same id).\n"
                       "name: %s\n",
-                      GF_VERSION, GF_GIT_HASH, spec->run_id, campaign);
+                      GF_VERSION, gf_build_revision(), spec->run_id, campaign);
     memcpy(text + nh, body, nb + 1);
     *len = (size_t)nh + nb;
     return text;

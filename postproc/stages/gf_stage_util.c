@@ -9,6 +9,8 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "core/gf_build_info.h"
+
 void gf_stage_path(const gf_stage_in *in, const char *name, char *buf, size_t size)
 {
     snprintf(buf, size, "%s/%s", in->run_dir, name);
@@ -160,7 +162,7 @@ gf_status gf_postnc_create(gf_ctx *ctx, const gf_stage_in *in, const char *stage
     snprintf(buf, sizeof buf, "grainflow post-processing stage %s", stage);
     put_text(w->ncid, NC_GLOBAL, "title", buf);
 #ifdef GF_VERSION
-    snprintf(buf, sizeof buf, "grainflow %s (%s)", GF_VERSION, GF_GIT_HASH);
+    snprintf(buf, sizeof buf, "grainflow %s (%s)", GF_VERSION, gf_build_revision());
 #else
     snprintf(buf, sizeof buf, "grainflow");
 #endif

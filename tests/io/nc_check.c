@@ -11,6 +11,7 @@
 #include <time.h>
 #include <udunits2.h>
 
+#include "core/gf_build_info.h"
 #include "gf_test.h"
 
 void nc_test_run_init(nc_test_run *run)
@@ -108,7 +109,9 @@ void nc_check_globals(const char *path, const nc_test_run *run, const char *feat
     nc_inq_format(ncid, &format);
     GF_CHECK(format == NC_FORMAT_NETCDF4);
     GF_CHECK(text_att_is(ncid, NC_GLOBAL, "Conventions", "CF-1.10"));
-    GF_CHECK(text_att_is(ncid, NC_GLOBAL, "source", "grainflow " GF_VERSION " (" GF_GIT_HASH ")"));
+    char source[128];
+    snprintf(source, sizeof source, "grainflow %s (%s)", GF_VERSION, gf_build_revision());
+    GF_CHECK(text_att_is(ncid, NC_GLOBAL, "source", source));
     GF_CHECK(text_att_is(ncid, NC_GLOBAL, "run_spec_yaml", run->yaml));
     GF_CHECK(text_att_is(ncid, NC_GLOBAL, "run_id", run->spec.run_id));
     GF_CHECK(text_att_is(ncid, NC_GLOBAL, "scene", run->spec.scene));

@@ -23,6 +23,7 @@
 #include <time.h>
 
 #include "bench_accuracy.h"
+#include "core/gf_build_info.h"
 #include "figures/gf_figures.h"
 
 void bench_analyse(bench_point *pts, int n, const bench_case *cases, int n_cases)
@@ -215,7 +216,9 @@ static gf_status write_nc(gf_ctx *ctx, const char *path, const bench_point *pts,
     NC(put_text(ncid, NC_GLOBAL, "Conventions", "CF-1.10"));
     NC(put_text(ncid, NC_GLOBAL, "title", "grainflow accuracy benchmark: error against run time per setting"));
     NC(put_text(ncid, NC_GLOBAL, "history", full ? strcat(hist, " --full") : strcat(hist, " --quick")));
-    NC(put_text(ncid, NC_GLOBAL, "source", "grainflow " GF_VERSION " (" GF_GIT_HASH ")"));
+    char source[128];
+    snprintf(source, sizeof source, "grainflow %s (%s)", GF_VERSION, gf_build_revision());
+    NC(put_text(ncid, NC_GLOBAL, "source", source));
     NC(put_text(ncid, NC_GLOBAL, "institution", "grainflow simulation framework"));
     NC(put_text(ncid, NC_GLOBAL, "references",
                 "Izard 2014 (digest izard-immersed-dem §1.2, §8); tolerances from the validation table"));
