@@ -13,12 +13,13 @@
  * preparation protocol's version (GF_PACKING_PROTOCOL, raised whenever
  * gf_packing.c changes what it builds) and the build (GF_VERSION, the
  * source revision gf_build_revision(), and the time gf_packing.c was
- * compiled: an edit rebuilt without a new commit is another build too). The file name is a 64-bit FNV-1a hash of all of it; on
- * reading, the key text and the obstacles are compared in full, so a hash
- * collision is a miss, never a wrong deposit. A file that cannot be read (cut
- * short, foreign) is a miss too: the deposit is rebuilt and the file
- * replaced. Files are written under a per-process temporary name and renamed,
- * so runs preparing the same column at the same time never see half a file.
+ * compiled: an edit rebuilt without a new commit is another build too).
+ * The file name is a 64-bit FNV-1a hash of all of it; on reading, the key
+ * text and the obstacles are compared in full, so a hash collision is a
+ * miss, never a wrong deposit. A file that cannot be read (cut short,
+ * foreign) is a miss too: the deposit is rebuilt and the file replaced.
+ * Files are written under a per-process temporary name and renamed, so runs
+ * preparing the same column at the same time never see half a file.
  */
 #ifndef GF_PACKING_CACHE_H
 #define GF_PACKING_CACHE_H

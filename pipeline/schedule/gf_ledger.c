@@ -8,8 +8,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "core/gf_build_info.h"
 #include "campaign/gf_spec_text.h"
+#include "core/gf_build_info.h"
 
 gf_status gf_ledger_mkdirs(gf_ctx *ctx, const char *path)
 {

@@ -39,6 +39,7 @@ BED=${GF_BED:-/tmp/gfbed}
 CPUS=${GF_CPUS:-0,1}
 CPU_A=${CPUS%,*}
 CPU_B=${CPUS#*,}
+[ "$CPU_A" != "$CPU_B" ] || { echo "parallel_efficiency.sh: GF_CPUS=$CPUS: name two different cpus, as A,B" >&2; exit 2; }
 for exe in "$BENCH" "$LATENCY"; do
     [ -x "$exe" ] || { echo "parallel_efficiency.sh: $exe not built (cmake --build $BUILD --target gf-bench-dem gf-core-latency)" >&2; exit 1; }
 done
