@@ -23,12 +23,8 @@ static double start_phi(int relax, double *build_s)
 {
     gf_ctx ctx = {0};
     gf_run_spec spec;
-    gf_run_spec_defaults(&spec);
-    snprintf(spec.scene, sizeof spec.scene, "column_collapse");
-    snprintf(spec.fluid.model, sizeof spec.fluid.model, "none");
-    spec.grains.diameter_m = 7.6e-3;
-    spec.grains.density_kg_m3 = 8000.0;
-    spec.output.particles = spec.output.fields = spec.output.probes = spec.output.diagnostics = 0;
+    runner_dry_spec(&spec, "column_collapse");
+    spec.grains = (gf_grains_spec){.diameter_m = 7.6e-3, .polydispersity = 0.05, .density_kg_m3 = 8000.0};
     spec.phi_initial = 0.55;
     spec.aspect_ratio_a = 0.5;
     GF_CHECK_OK(gf_run_spec_set_param(&ctx, &spec, "column_length_over_D", 48.0), &ctx);
