@@ -43,8 +43,7 @@ if [ "$2" != "--no-collapse" ] && [ -x "$T/validate_collapse" ]; then
     run collapse_cell1 $VC $DENSE 10000 0 check cell_over_D=1
     run collapse_held_dense $VC $DENSE 4000 0 held
     run collapse_held_loose $VC $LOOSE 4000 0 held
-    run collapse_dry $VC $DENSE 10000 0 dry
-    run collapse_thin $VC $DENSE 10000 0 thin
+    run collapse_dry_limit $VC $DENSE 10000 0 dry_limit seeds=12
     run collapse_dryp $VC $DENSE 10000 0 dry_perturbed
     wait
 fi
@@ -247,12 +246,21 @@ echo '```'
 grep -h SUMMARY "$TMP/collapse_held_dense.txt" "$TMP/collapse_held_loose.txt" 2>/dev/null | tr '|' '\n' | grep 'SUMMARY\|Pb extremum\|Pb at 8' | sed 's/^ */  /; s/^  SUMMARY/SUMMARY/' || true
 echo '```'
 echo
-echo 'Dry limit (issue #4): the same dense column with the fluid off, and with a fluid of negligible'
-echo 'density and viscosity through the unresolved tier; the run-outs must agree within 5 %. The third'
-echo 'run repeats the dry one with g changed by 1e-7: the spread it shows is the chaotic sensitivity of'
-echo 'the collapse (front detected in bins of D = 0.0625 R0), the floor for any such comparison:'
+cat <<'TXT'
+Dry limit (issue #4): the same dense column with the fluid off ("dry"), and through the
+unresolved tier with a fluid of negligible density and viscosity ("thin": rho_f 1e-3 kg/m3,
+eta_f 1e-7 Pa s); the run-outs must agree within 5 %. One collapse is chaotic: the dry run
+repeated with g changed by 1e-7 ("dry_perturbed", last) moves by about as much as any pair
+differs, and the front is read in bins of D = 0.0625 R0. So the check (ctest
+collapse_dry_limit, label slow) compares the means over packing seeds 1-12, and refuses to
+pass unless the standard error of the paired difference is below the tolerance. R_inf/R0 per
+seed, dry then thin:
+TXT
 echo '```'
-grep SUMMARY "$TMP/collapse_dry.txt" "$TMP/collapse_thin.txt" "$TMP/collapse_dryp.txt" 2>/dev/null | sed 's/^.*SUMMARY/SUMMARY/' | tr '|' '\n' | grep 'SUMMARY\|R_inf\|wall' || true
+grep '^SUMMARY' "$TMP/collapse_dry_limit.txt" 2>/dev/null | awk -F'|' '{ split($4, f, " "); v[++n] = f[2] }
+    END { for (i = 1; i < n; i += 2) printf "seed %d: dry %s, thin %s\n", (i + 1) / 2, v[i], v[i + 1] }' || true
+grep '^ENSEMBLE\|^PASS\|^FAIL\|^NOTE\|dry limit over\|exit status' "$TMP/collapse_dry_limit.txt" 2>/dev/null || true
+grep SUMMARY "$TMP/collapse_dryp.txt" 2>/dev/null | sed 's/^.*SUMMARY/SUMMARY/' | tr '|' '\n' | grep 'SUMMARY\|R_inf\|wall' || true
 echo '```'
 fi
 cat <<'TXT'
