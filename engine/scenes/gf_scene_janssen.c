@@ -5,9 +5,18 @@
  * Geometry (seed: 0.1 x 0.1 x 5 m, R = 5 mm +- 10 %, 56 400 grains): a free
  * box [0, S]^2 x [0, h] (S = side_over_D D, 10 D in the seed; h the fill
  * height) whose four side walls are glued grains ("walls made of glued
- * grains, so that the wall friction is under control"): a square lattice of
- * glued grains on each side (add_glued_wall) whose largest grains touch the
- * side plane; a plane floor y = 0 and a lid well above the fill.
+ * grains, so that the wall friction is under control"); a plane floor y = 0
+ * and a lid well above the fill. The thesis does not say how its glued
+ * grains are arranged, and the wall friction they mobilise depends on it
+ * (docs/validation-dem.md, row 6: f_p 0.28 on the lattice, 0.34 on the
+ * random wall). Default (random_walls = 1), a random wall as the rough
+ * bases of the other scenes: a layer of glued grains placed by random
+ * sequential adsorption (add_random_wall), backed half a grain behind by a
+ * square lattice of glued grains, because the random layer's holes are
+ * nearly a grain wide: alone, it let grains through to the safety planes
+ * (10.7 % of the side load on them at the seed's section, measured).
+ * random_walls = 0: the square lattice alone (add_glued_wall), whose
+ * largest grains touch the side plane; its spacing is fitted to the side.
  * Frictionless plane walls through the glued centres are only a safety net
  * (no vertical force, so they do not bias the wall load). S^2 and 4 S are the nominal cross-section and perimeter, and
  * the seed's C_tot = N V / (S^2 h) uses the same box (grains nesting into
@@ -57,6 +66,9 @@ static const gf_param_info janssen_params[] = {
     {"free_pour", "1", 0.0, 0.0, 1.0,
      "1: the seed's filling, grains falling from a loose lattice with the run's friction, free rotations and no "
      "drag, at the packing they reach (phi_target unused); 0: deposited at phi_target"},
+    {"random_walls", "1", 1.0, 0.0, 1.0,
+     "1: each glued wall is a random layer (random sequential adsorption, as the rough bases) backed by a square "
+     "lattice; 0: the square lattice alone"},
 };
 
 static double glued_radius_max(const gf_run_spec *s)
@@ -66,16 +78,17 @@ static double glued_radius_max(const gf_run_spec *s)
 
 /* One wall of glued grains whose inner face is the plane x_axis = face (`out` = -1 for the low side,
  * +1 for the high side): a square lattice of spacing D (1 + p) in (t, y), t over [-r_w, S + r_w] so that
- * the corners close, centres at face + out r_w (r_w = R (1 + p)): the largest grains touch the face, the
- * others sit up to 2 p R behind it. A grain resting in a lattice hole keeps its centre ~0.1 D inside the
- * face (holes of diagonal 0.55 D), so the section is S^2 within a few per cent. */
+ * the corners close, centres at face + out (r_w + behind) (r_w = R (1 + p)): with behind = 0 the largest
+ * grains touch the face, the others sit up to 2 p R behind it. A grain resting in a lattice hole keeps its
+ * centre ~0.1 D inside the face (holes of diagonal 0.55 D), so the section is S^2 within a few per cent.
+ * behind > 0: the backing of a random wall. */
 static gf_status add_glued_wall(gf_ctx *ctx, gf_particles *p, const gf_run_spec *spec, int axis, double face,
-                                double out, double side, double height, gf_rng *rng)
+                                double out, double side, double height, double behind, gf_rng *rng)
 {
     double D = spec->grains.diameter_m, pd = spec->grains.polydispersity, a = D * (1.0 + pd);
     double rw = glued_radius_max(spec), span = side + 2.0 * rw;
     int nt = (int)ceil(span / a) + 1, ny = (int)ceil(height / a);
-    double at_t = span / (nt - 1), n_pos = face + out * rw;
+    double at_t = span / (nt - 1), n_pos = face + out * (rw + behind);
     for (int j = 0; j < ny; ++j)
         for (int k = 0; k < nt; ++k) {
             if (axis == 2 && (k == 0 || k == nt - 1))
@@ -86,6 +99,40 @@ static gf_status add_glued_wall(gf_ctx *ctx, gf_particles *p, const gf_run_spec 
             GF_TRY(gf_particles_add(ctx, p, x, y, z, r, spec->grains.density_kg_m3, GF_P_GLUED, NULL));
         }
     return GF_OK;
+}
+
+/* The random wall's backing lattice, this far / D behind its random layer: the random layer's holes are
+ * nearly a grain wide, so the column's grains nest into them down to the backing (not through them). */
+#define RANDOM_WALL_BACK_OVER_D 0.5
+
+/* Where a wall's frictionless safety plane sits behind its face: behind the glued grains. */
+static double wall_setback(const gf_run_spec *s, int random_walls)
+{
+    double rw = glued_radius_max(s);
+    return random_walls ? 2.0 * rw + RANDOM_WALL_BACK_OVER_D * s->grains.diameter_m : rw;
+}
+
+/* The front layer of a random wall: glued grains placed by random sequential adsorption on the plane
+ * (gf_packing_rough_base, the rough bases' method: close to the jammed coverage, 0.55 of the plane),
+ * centres at face + out r_w as the lattice's, over t in [-2 r_w, S + 2 r_w] for the x walls (which close
+ * the corners) and [0, S] for the z walls. */
+static gf_status add_random_wall(gf_ctx *ctx, gf_particles *p, const gf_run_spec *spec, int axis, double face,
+                                 double out, double side, double height, uint64_t seed)
+{
+    double rw = glued_radius_max(spec), n_pos = face + out * rw;
+    double t0 = axis == 0 ? -2.0 * rw : 0.0, t1 = axis == 0 ? side + 2.0 * rw : side;
+    gf_psd psd = {0.5 * spec->grains.diameter_m, spec->grains.polydispersity};
+    gf_particles *layer = NULL;
+    GF_TRY(gf_particles_create(ctx, 1024, &layer));
+    gf_status st = gf_packing_rough_base(ctx, layer, &psd, spec->grains.density_kg_m3, 0.0, t0, t1, 0.0, height,
+                                         (const int[2]){0, 0}, seed);
+    for (size_t i = 0; st == GF_OK && i < layer->n_local; ++i) { /* (t, 0, height) -> the wall plane */
+        double t = layer->x_m[i], y = layer->z_m[i];
+        st = gf_particles_add(ctx, p, axis == 0 ? n_pos : t, y, axis == 0 ? t : n_pos, layer->radius_m[i],
+                              spec->grains.density_kg_m3, GF_P_GLUED, NULL);
+    }
+    gf_particles_destroy(&layer);
+    return st;
 }
 
 /* Mobilises the wall friction as Vanel et al. (PRL 2000) do by pulling the silo's bottom piston down:
@@ -119,13 +166,14 @@ static gf_status janssen_build(gf_sim *sim, const gf_run_spec *spec)
     double S = gf_run_spec_param(spec, "side_over_D", 10.0) * D;
     double h = gf_run_spec_param(spec, "fill_height_over_D", 40.0) * D;
     double top = h + 6.0 * D;
-    double rw = glued_radius_max(spec);
-    double lo[3] = {-2.0 * D, -D, -2.0 * D}, hi[3] = {S + 2.0 * D, top, S + 2.0 * D}, grav[3] = {0, -g, 0};
+    int random_walls = gf_run_spec_param(spec, "random_walls", 1.0) > 0.5;
+    double sb = wall_setback(spec, random_walls), margin = fmax(2.0 * D, sb + D);
+    double lo[3] = {-margin, -D, -margin}, hi[3] = {S + margin, top, S + margin}, grav[3] = {0, -g, 0};
     int periodic[3] = {0, 0, 0};
     GF_TRY(gf_sim_set_box(sim, lo, hi, periodic));
     GF_TRY(gf_sim_set_gravity(sim, grav));
-    const double planes[6][6] = {{0, 0, 0, 0, 1, 0},       {0, top, 0, 0, -1, 0},  {-rw, 0, 0, 1, 0, 0},
-                                 {S + rw, 0, 0, -1, 0, 0}, {0, 0, -rw, 0, 0, 1},   {0, 0, S + rw, 0, 0, -1}};
+    const double planes[6][6] = {{0, 0, 0, 0, 1, 0},       {0, top, 0, 0, -1, 0},  {-sb, 0, 0, 1, 0, 0},
+                                 {S + sb, 0, 0, -1, 0, 0}, {0, 0, -sb, 0, 0, 1},   {0, 0, S + sb, 0, 0, -1}};
     for (int w = 0; w < 6; ++w)
         GF_TRY(gf_sim_add_wall(sim, planes[w], planes[w] + 3, w < 2 ? spec->contact.wall_friction : 0.0, NULL));
     /* glued walls first (kept apart as the preparation's obstacles), then the deposit between them */
@@ -134,14 +182,23 @@ static gf_status janssen_build(gf_sim *sim, const gf_run_spec *spec)
     GF_TRY(gf_particles_create(ctx, 1024, &walls));
     gf_status st = GF_OK;
     for (int k = 0; k < 4 && st == GF_OK; ++k)
-        st = add_glued_wall(ctx, walls, spec, k < 2 ? 0 : 2, k % 2 ? S : 0.0, k % 2 ? 1.0 : -1.0, S, top, rng);
+    {
+        int axis = k < 2 ? 0 : 2;
+        double face = k % 2 ? S : 0.0, out = k % 2 ? 1.0 : -1.0;
+        if (random_walls) {
+            st = add_random_wall(ctx, walls, spec, axis, face, out, S, top, spec->seed + 7919u * (uint64_t)(k + 1));
+            if (st == GF_OK)
+                st = add_glued_wall(ctx, walls, spec, axis, face, out, S, top, RANDOM_WALL_BACK_OVER_D * D, rng);
+        } else
+            st = add_glued_wall(ctx, walls, spec, axis, face, out, S, top, 0.0, rng);
+    }
     for (size_t i = 0; st == GF_OK && i < walls->n_local; ++i)
         st = gf_particles_add(ctx, p, walls->x_m[i], walls->y_m[i], walls->z_m[i], walls->radius_m[i],
                               spec->grains.density_kg_m3, GF_P_GLUED, NULL);
     int pour = gf_run_spec_param(spec, "free_pour", 0.0) > 0.5;
     double phi_req = isnan(spec->phi_initial) ? gf_run_spec_param(spec, "phi_target", 0.59) : spec->phi_initial;
     gf_packing_spec ps = {.lo_m = {0, 0, 0}, .hi_m = {S, h, S}, .periodic = {0, 0, 0}, .walls_x = 1, .walls_z = 1,
-                          .wall_setback_m = rw, /* the run's frictionless safety planes, behind the glued walls */
+                          .wall_setback_m = sb, /* the run's frictionless safety planes, behind the glued walls */
                           .phi_target = pour ? NAN : phi_req, .free_pour = pour,
                           .mu_natural = spec->contact.friction,
                           .tolerance = gf_run_spec_param(spec, "phi_tolerance", 0.01),
