@@ -49,7 +49,7 @@
  *   length    (slow) theta = 25 deg, L = 5 D and 10 D after 400 sqrt(D/g),
  *             averaged over 100: time-averaged Q_g agree within 5 % (Izard
  *             §4.1.2.2 domain tests, row 25 style).
- * GF_TEST_TC overrides t_c sqrt(g/D), GF_TEST_SEED the packing seed;
+ * GF_TEST_TC overrides t_c sqrt(g/D), GF_TEST_SEED the packing seed, GF_TEST_EPS the restitution;
  * GF_TEST_BED the steady bed depth / D, GF_TEST_ANGLE runs one steady angle;
  * GF_TEST_VERBOSE prints the transient, GF_TEST_DEBUG the stress components.
  */
@@ -73,7 +73,7 @@ static int flow_open(flow *f, double theta_deg, double length_over_D, double bed
     gf_run_spec spec;
     runner_dry_spec(&spec, "avalanche");
     spec.seed = getenv("GF_TEST_SEED") ? (unsigned)atoi(getenv("GF_TEST_SEED")) : seed;
-    spec.contact.restitution = 0.5;
+    spec.contact.restitution = getenv("GF_TEST_EPS") ? atof(getenv("GF_TEST_EPS")) : 0.5;
     spec.contact.friction = 0.25;
     spec.contact.wall_friction = 0.25;
     spec.contact.t_contact_nd = getenv("GF_TEST_TC") ? atof(getenv("GF_TEST_TC")) : tc_nd;
