@@ -17,7 +17,7 @@
  * (10.7 % of the side load on them at the seed's section, measured).
  * random_walls = 0: the square lattice alone (add_glued_wall), whose
  * largest grains touch the side plane; its spacing is fitted to the side.
- * Frictionless plane walls through the glued centres are only a safety net
+ * Frictionless plane walls behind the glued grains are only a safety net
  * (no vertical force, so they do not bias the wall load). S^2 and 4 S are the nominal cross-section and perimeter, and
  * the seed's C_tot = N V / (S^2 h) uses the same box (grains nesting into
  * the wall make the effective section slightly larger; the test measures it).
@@ -181,8 +181,7 @@ static gf_status janssen_build(gf_sim *sim, const gf_run_spec *spec)
     gf_particles *walls = NULL;
     GF_TRY(gf_particles_create(ctx, 1024, &walls));
     gf_status st = GF_OK;
-    for (int k = 0; k < 4 && st == GF_OK; ++k)
-    {
+    for (int k = 0; k < 4 && st == GF_OK; ++k) {
         int axis = k < 2 ? 0 : 2;
         double face = k % 2 ? S : 0.0, out = k % 2 ? 1.0 : -1.0;
         if (random_walls) {
