@@ -627,6 +627,10 @@ static void mean_se(const double *x, int n, double *mean, double *se)
 static int dry_limit(run_args a, int n_seeds, collapse_run *runs)
 {
     double dry[MAX_SEEDS], thin[MAX_SEEDS], diff[MAX_SEEDS], edge_dry[MAX_SEEDS], edge_thin[MAX_SEEDS];
+    if (n_seeds < 2) { /* one pair has no standard error, and would pass on its difference alone */
+        fprintf(stderr, "validate_collapse: dry_limit needs seeds >= 2 (got %d)\n", n_seeds);
+        return 1;
+    }
     for (int s = 0; s < n_seeds; ++s) {
         a.seed_offset = s;
         a.mode = "dry";
