@@ -75,6 +75,7 @@
 #include "gf_sim_internal.h" /* DEM substeps per fluid step, for the cost line */
 #include "scenes/gf_scene.h"
 #include "scenes/gf_measure.h"
+#include "scene_runner.h"      /* runner_mean_sd */
 #include "stages/gf_deposit.h" /* the flank angle, as grainflow post's deposit stage measures it */
 
 enum { N_GAUGE = 6, MAX_REC = 4096, WALL_GATE = 2, N_SMOOTH = 10, MAX_SEEDS = 16 };
@@ -604,15 +605,11 @@ static void print_ensemble(const char *what, int n, const collapse_run *e)
     printf("\n");
 }
 
-/* Mean and standard error of the mean of x[0..n). */
+/* Mean and standard error of the mean of x[0..n), n >= 2. */
 static void mean_se(const double *x, int n, double *mean, double *se)
 {
-    double m = 0.0, v = 0.0;
-    for (int k = 0; k < n; ++k)
-        m += x[k] / n;
-    for (int k = 0; k < n; ++k)
-        v += (x[k] - m) * (x[k] - m) / (n > 1 ? n - 1 : 1);
-    *mean = m, *se = sqrt(v / n);
+    runner_mean_sd(x, n, mean, se);
+    *se /= sqrt((double)n);
 }
 
 /*

@@ -93,4 +93,24 @@ static inline void runner_mean_sd(const double *x, int n, double *mean, double *
     *sd = n > 1 ? sqrt(q / (n - 1)) : 0.0;
 }
 
+/* The Janssen silo (scene janssen, side S): the share of the horizontal load its side walls receive that
+ * the frictionless safety planes behind the glued grains carry (the scene's walls 2-5: x low, x high,
+ * z low, z high), against the glued grains' load normal to their wall (the x walls hold the corners). A
+ * grain that leans on a plane meets a wall without friction. */
+static inline double runner_silo_plane_share(gf_sim *sim, double S)
+{
+    const gf_particles *p = gf_sim_particles(sim);
+    double planes = 0.0, glued = 0.0, f[3];
+    for (int w = 2; w < 6; ++w) {
+        gf_sim_wall_force(sim, w, f);
+        planes += fabs(f[w < 4 ? 0 : 2]);
+    }
+    for (size_t i = 0; i < p->n_local; ++i)
+        if (p->flags[i] & GF_P_GLUED) {
+            int on_x = p->x_m[i] < 0.0 || p->x_m[i] > S;
+            glued += fabs(on_x ? p->fx_N[i] : p->fz_N[i]);
+        }
+    return planes / (planes + glued);
+}
+
 #endif

@@ -160,20 +160,6 @@ static void wall_loads(gf_sim *sim, double S, int n, double *shear, double *norm
         }
 }
 
-/* The share of the horizontal load that reaches the frictionless safety planes behind the glued walls (the
- * scene's walls 2-5): grains that nest through the glued layer down to them meet a wall without friction. */
-static double plane_share(gf_sim *sim, const silo *o)
-{
-    double planes = 0.0, glued = 0.0, f[3];
-    for (int w = 2; w < 6; ++w) {
-        gf_sim_wall_force(sim, w, f);
-        planes += fabs(f[w < 4 ? 0 : 2]);
-    }
-    for (int k = 0; k < o->n; ++k)
-        glued += o->normal[k];
-    return planes / (planes + glued);
-}
-
 /* Janssen fit from the top down, skipping the lowest 3 D where the floor lets the pressure rise again. */
 static void fit(double D, double S, silo *o)
 {
@@ -248,7 +234,7 @@ static void measure(gf_sim *sim, double side, silo *o)
     gf_ctx ctx = {0};
     GF_CHECK_OK(gf_measure_silo_vertical_stress(&ctx, gf_sim_particles(sim), g, A, 0.0, D, o->n, o->sig), &ctx);
     wall_loads(sim, S, o->n, o->shear, o->normal);
-    o->plane_share = plane_share(sim, o);
+    o->plane_share = runner_silo_plane_share(sim, S);
     fit(D, S, o);
     local(D, o->shear, o->normal, o);
     bulk_k(sim, D, S, o);

@@ -19,7 +19,6 @@
 
 #include "scene_runner.h"
 
-enum { WALL_X_LOW = 2 }; /* the scene's side planes are walls 2-5: x low, x high, z low, z high */
 
 /* Builds the 6 D x 12 D silo with the given wall kind and lets it rest 2 sqrt(D/g) more. */
 static gf_sim *build_silo(int random_walls, gf_ctx *ctx)
@@ -39,23 +38,6 @@ static gf_sim *build_silo(int random_walls, gf_ctx *ctx)
                                                     gf_sim_dt_s(sim))),
                     ctx);
     return sim;
-}
-
-/* Horizontal load the side planes carry over all the side load (glued grains of the four walls + planes). */
-static double plane_share(gf_sim *sim, double S)
-{
-    const gf_particles *p = gf_sim_particles(sim);
-    double planes = 0.0, glued = 0.0, f[3];
-    for (int w = WALL_X_LOW; w < WALL_X_LOW + 4; ++w) {
-        gf_sim_wall_force(sim, w, f);
-        planes += fabs(f[w < WALL_X_LOW + 2 ? 0 : 2]);
-    }
-    for (size_t i = 0; i < p->n_local; ++i)
-        if (p->flags[i] & GF_P_GLUED && p->y_m[i] > 0.0) {
-            int on_x = p->x_m[i] < 0.0 || p->x_m[i] > S; /* the x walls hold the corners */
-            glued += fabs(on_x ? p->fx_N[i] : p->fz_N[i]);
-        }
-    return planes / (planes + glued);
 }
 
 /* How far the deepest grain's centre lies behind the walls' faces x, z = 0 and S (m; <= 0 when none). */
@@ -81,7 +63,7 @@ static void check_walls(int random_walls)
         return;
     const gf_run_spec *s = gf_sim_spec(sim);
     double D = s->grains.diameter_m, S = 6.0 * D, r_w = 0.5 * D * (1.0 + s->grains.polydispersity);
-    double share = plane_share(sim, S), deepest = deepest_behind_face(sim, S);
+    double share = runner_silo_plane_share(sim, S), deepest = deepest_behind_face(sim, S);
     printf("%s walls: %zu grains, safety planes carry %.2f %% of the side load, deepest grain centre %.3f D "
            "behind the face (front layer's centres at %.3f D), %.1f s\n",
            random_walls ? "random" : "lattice", gf_sim_particles(sim)->n_local, 100.0 * share, deepest / D, r_w / D,
