@@ -347,3 +347,31 @@ gf_status gf_measure_fit_bagnold(gf_ctx *ctx, const double *y, const double *u, 
         *rel_rms = umax > 0 ? sqrt(res / used) / umax : 0.0;
     return GF_OK;
 }
+
+gf_status gf_measure_chute_bagnold(gf_ctx *ctx, const double *phi, const double *u, int n_slabs, double D,
+                                   double g, double theta, gf_measure_chute *out)
+{
+    *out = (gf_measure_chute){NAN, NAN, NAN, NAN, NAN, NAN, NAN};
+    double *y = malloc(2 * (size_t)n_slabs * sizeof *y);
+    if (!y)
+        return GF_FAIL(ctx, GF_ERR_NOMEM, "measure: cannot allocate %d slabs", n_slabs);
+    double *uf = y + n_slabs, h = gf_measure_bed_height_m(phi, n_slabs, 0.0, D, 0.5) - 0.5 * D;
+    int n = 0;
+    for (int k = 1; k < n_slabs && (k + 0.5) * D - 0.5 * D <= h; ++k)
+        y[n] = (k + 0.5) * D - 0.5 * D, uf[n] = u[k], ++n;
+    out->h_m = h;
+    gf_status st = gf_measure_fit_bagnold(ctx, y, uf, n, h, &out->A, &out->B, &out->rel_rms);
+    free(y);
+    if (st != GF_OK)
+        return st;
+    out->slip_over_h = -out->B / (1.5 * out->A * sqrt(h)) / h;
+    int top = (int)floor(gf_measure_bed_height_m(phi, n_slabs, 0.0, 1.0, 0.5)), nb = 0;
+    double phib = 0.0;
+    for (int k = 2; k <= top - 3 && k < n_slabs; ++k)
+        phib += phi[k], ++nb;
+    if (nb == 0)
+        return GF_FAIL(ctx, GF_ERR_ARG, "measure: chute bed of %d slabs too thin for a bulk solid fraction", top);
+    out->phi_bulk = phib / nb;
+    out->I = 1.5 * out->A * D / sqrt(out->phi_bulk * g * cos(theta));
+    return GF_OK;
+}

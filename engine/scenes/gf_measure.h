@@ -132,4 +132,22 @@ void gf_measure_fit_runout(const double *a, const double *runout, int n, double 
 gf_status gf_measure_fit_bagnold(gf_ctx *ctx, const double *y_m, const double *u_m_s, int n, double h_m, double *A,
                                  double *B, double *rel_rms);
 
+/* The seed's reading of a steady chute flow (Izard 2014 §2.1.3.3, (2.23)),
+ * from a time-averaged profile on slabs of D from the floor y = 0 (glued
+ * half-grains centred on it): phi and the downslope velocity u per slab.
+ *   h: the flowing depth above the glued layer's top (D/2), i.e. the bed
+ *      height (half-plateau of phi) less D/2;
+ *   A, B, rel_rms: the Bagnold fit u = A (h^(3/2) - (h - y)^(3/2)) + B over
+ *      the slab centres 1 D and up, y measured from D/2;
+ *   slip_over_h: the Robin slip length of (2.22), lambda = -B / (1.5 A h^(1/2)), over h;
+ *   phi_bulk: phi over the slabs from 2 D above the floor to 3 D below the top;
+ *   I: with hydrostatic P = rho_p phi g cos(theta) (h - y) and
+ *      du/dy = 1.5 A (h - y)^(1/2), a uniform I = 1.5 A D / sqrt(phi g cos(theta)). */
+typedef struct gf_measure_chute {
+    double h_m, A, B, rel_rms, slip_over_h, phi_bulk, I;
+} gf_measure_chute;
+
+gf_status gf_measure_chute_bagnold(gf_ctx *ctx, const double *phi, const double *u, int n_slabs, double D_m,
+                                   double g_m_s2, double theta_rad, gf_measure_chute *out);
+
 #endif

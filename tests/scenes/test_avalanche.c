@@ -40,7 +40,10 @@
  *   steady    (slow) theta = 22.5, 25, 27.5 deg after 200 sqrt(D/g), averaged
  *             over 50: per angle I from the Bagnold amplitude (hydrostatic
  *             P, measured Phi) and mu = tan(theta), the seed's per-angle
- *             fits; mu1, mu2 vs 0.29, 0.64 within +-0.02 (row 8); the
+ *             fits (gf_measure_chute_bagnold); mu1, mu2 vs 0.29, 0.64 within
+ *             +-0.02 (row 8; Debian LAMMPS from the same state, read the same
+ *             way, gives 0.281, 0.703 as grainflow's 0.280, 0.703:
+ *             workflows/bench/lammps_avalanche.sh); the
  *             coarse-grained tau/P_G vs I fit is printed (the thesis finds
  *             it close to the unsteady law, above the profile fits);
  *             Bagnold profile (2.23) fits the velocity with rms < 10 % of
@@ -246,32 +249,19 @@ static void steady(double theta_deg, double length_over_D, double tc_nd, double 
     *I_bulk = isum;
     *mu_bulk = msum;
     *q_mean = q;
-    double *phi_s = w.phi, *u_s = w.u;
     printf("  bulk mu = tau/P = %.3f (tan theta = %.3f)\n", msum, tan(theta_deg * M_PI / 180.0));
-    /* Bagnold fit over the flowing layer, y from the glued layer's top (D/2) */
-    double y[NS], u[NS], h = gf_measure_bed_height_m(phi_s, NS, 0.0, f.D, 0.5) - 0.5 * f.D, A, B;
-    int n = 0;
-    for (int k = 1; k < NS && (k + 0.5) * f.D - 0.5 * f.D <= h; ++k)
-        y[n] = (k + 0.5) * f.D - 0.5 * f.D, u[n] = u_s[k], ++n;
-    if (gf_measure_fit_bagnold(gf_sim_ctx(f.sim), y, u, n, h, &A, &B, bagnold_rms) == GF_OK) {
-        /* Robin condition lambda du/dy + u = 0 at y = 0: lambda = -B / (1.5 A h^(1/2)) */
-        *slip_over_h = -B / (1.5 * A * sqrt(h)) / h;
-        /* the seed's I (§2.1.3.3, (2.23)): hydrostatic P = rho_p Phi g cos(theta) (h - y) and
-         * du/dy = 1.5 A (h - y)^(1/2) give a uniform I = 1.5 A D / sqrt(Phi g cos(theta)) */
-        double phib = 0.0;
-        int nb = 0;
-        for (int k = 2; k <= top - 3 && k < NS; ++k)
-            phib += phi_s[k], ++nb;
-        if (nb > 0)
-            *I_profile = 1.5 * A * f.D / sqrt(phib / nb * (f.D / (f.tg * f.tg)) * cos(f.theta));
-    }
+    /* the seed's per-angle reading: Bagnold fit over the flowing layer, I from its amplitude */
+    gf_measure_chute c;
+    if (gf_measure_chute_bagnold(gf_sim_ctx(f.sim), w.phi, w.u, NS, f.D, f.D / (f.tg * f.tg), f.theta, &c) == GF_OK)
+        *bagnold_rms = c.rel_rms, *slip_over_h = c.slip_over_h, *I_profile = c.I;
+    double h = c.h_m;
     printf("steady %.1f deg, L = %.0f D: I_bulk = %.4f (%d slabs), I from the Bagnold fit = %.4f, "
            "Q_g = %.4e m3/s, h = %.2f D, Bagnold rms %.3f, lambda/h = %.3f, %.1f s\n",
            theta_deg, length_over_D, *I_bulk, m, *I_profile, q, h / f.D, *bagnold_rms, *slip_over_h,
            runner_now_s() - t0);
     printf("  u/sqrt(gD) by slab:");
     for (int k = 0; k <= top && k < NS; ++k)
-        printf(" %.2f", u_s[k] / sqrt(9.81 * f.D));
+        printf(" %.2f", w.u[k] / sqrt(9.81 * f.D));
     printf("\n");
     fflush(stdout);
     flow_close(&f);

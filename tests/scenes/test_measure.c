@@ -200,6 +200,31 @@ static void test_bagnold_fit(void)
     GF_CHECK(rel < 1e-9);
 }
 
+/* The seed's chute reading (2.23) of slab profiles: a bed of 12 slabs of D at phi = 0.6 has its top at 12 D
+ * (half-plateau between the centres of slabs 11 and 12), so h = 11.5 D above the glued layer's top; a
+ * Bagnold profile sampled at the slab centres (y = k D from D/2) is recovered exactly, and I follows from its
+ * amplitude with the bulk phi (reading the samples half a slab higher would give A 5.5 % high). */
+static void test_chute_reading(void)
+{
+    gf_ctx ctx = {0};
+    enum { N = 20 };
+    const double D = 0.01, g = 9.81, th = 25.0 * M_PI / 180.0, A = 40.0, B = 0.02, h = 11.5 * D;
+    double phi[N] = {0}, u[N] = {0};
+    for (int k = 0; k < 12; ++k)
+        phi[k] = 0.6, u[k] = A * (pow(h, 1.5) - pow(h - k * D, 1.5)) + B;
+    gf_measure_chute c;
+    GF_CHECK_OK(gf_measure_chute_bagnold(&ctx, phi, u, N, D, g, th, &c), &ctx);
+    GF_CHECK_REL(c.h_m, h, 1e-12);
+    GF_CHECK_REL(c.A, A, 1e-9);
+    GF_CHECK_REL(c.B, B, 1e-7);
+    GF_CHECK_REL(c.phi_bulk, 0.6, 1e-12);
+    GF_CHECK_REL(c.I, 1.5 * A * D / sqrt(0.6 * g * cos(th)), 1e-9);
+    GF_CHECK_REL(c.slip_over_h, -B / (1.5 * A * sqrt(h)) / h, 1e-7);
+    GF_CHECK(c.rel_rms < 1e-9);
+    double thin[N] = {0.6, 0.6, 0.6}; /* a bed too thin for a bulk fraction is refused */
+    GF_CHECK(gf_measure_chute_bagnold(&ctx, thin, u, N, D, g, th, &c) != GF_OK);
+}
+
 int main(void)
 {
     test_slab_volumes_add_up();
@@ -210,6 +235,7 @@ int main(void)
     test_janssen_fit_recovers_lambda();
     test_runout_fit();
     test_bagnold_fit();
+    test_chute_reading();
     test_stress_planes_on_a_stack();
     return gf_test_finish();
 }

@@ -1,0 +1,278 @@
+/*
+ * gf-bench-avalanche: the dry steady chute flow of test_avalanche (row 8,
+ * Izard 2014 §2.1.3.3), for the side-by-side comparison with LAMMPS
+ * (workflows/bench/lammps_avalanche.sh).
+ *
+ *   gf-bench-avalanche [--angle DEG] [--seed S] [--bed H_over_D] [--length L_over_D] [--width W_over_D]
+ *                      [--tc TC_ND] [--eps E] [--spin T_ND] [--avg T_ND]
+ *                      [--lammps-data PATH] [--measure-dump PATH]
+ *
+ * The grains and contacts of test_avalanche's steady mode: D = 1 cm +- 10 %,
+ * rho_p = 2500, mu_c = 0.25 on grains and walls, eps 0.5, t_c = 3.1e-3
+ * sqrt(D/g) (the thesis' 1e-4 s), dt = t_c/50; the avalanche scene (rough
+ * base of glued half-grains on y = 0, periodic in x and z, lid at bed + 10 D),
+ * its bed prepared at theta = 0 and gravity tilted at t = 0 (gf_sim_create
+ * runs all of it). Defaults: 27.5 deg, packing seed 31, a 12 D bed on a
+ * 6 D x 6 D footprint, 200 sqrt(D/g) of spin-up, then one sample per
+ * sqrt(D/g) for 50.
+ *
+ * --lammps-data writes that t = 0 state (gf_lammps_data.h) and PATH.params,
+ * to which the chute's geometry and schedule are appended: the floor y = 0
+ * and lid y = TOP, the tilt, the steps of the spin-up and between samples,
+ * the sample count. The run then samples the slab profiles of phi and the
+ * downslope velocity (gf_measure_profile_y, slabs of D) and Q_g, and prints
+ * the seed's reading of the averaged profile (gf_measure_chute_bagnold: I from
+ * the Bagnold amplitude, the slip length, the fit's rms).
+ *
+ * --measure-dump PATH skips the run: it reads the snapshots of a LAMMPS text
+ * dump (columns x y z vx vy vz radius, mobile grains) and applies the same
+ * sampling and reading to them, in the box of the same scene (recreated, so
+ * pass the same options), so that both codes' flows are measured by one
+ * definition.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "gf_lammps_data.h"
+#include "gf_sim.h"
+#include "particles/gf_particles.h"
+#include "scenes/gf_measure.h"
+#include "scenes/gf_scene.h"
+
+enum { N_SLABS = 64 };
+
+typedef struct chute_args {
+    long seed;
+    double angle_deg, bed_D, length_D, width_D, tc_nd, eps, spin_nd, avg_nd;
+    const char *lammps, *dump;
+} chute_args;
+
+/* Time-averaged slab profiles and flow rate over the samples. */
+typedef struct chute_window {
+    double phi[N_SLABS], u[N_SLABS], q;
+    int n;
+} chute_window;
+
+static double cpu_time_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+static int parse(int argc, char **argv, chute_args *a)
+{
+    *a = (chute_args){.seed = 31, .angle_deg = 27.5, .bed_D = 12.0, .length_D = 6.0, .width_D = 6.0,
+                      .tc_nd = 3.1e-3, .eps = 0.5, .spin_nd = 200.0, .avg_nd = 50.0};
+    for (int i = 1; i < argc; i += 2) {
+        const char *k = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (!v)
+            return 0;
+        double *num[] = {&a->angle_deg, &a->bed_D, &a->length_D, &a->width_D, &a->tc_nd, &a->eps, &a->spin_nd,
+                         &a->avg_nd};
+        const char *names[] = {"--angle", "--bed", "--length", "--width", "--tc", "--eps", "--spin", "--avg"};
+        int known = 0;
+        for (int q = 0; q < 8; ++q)
+            if (!strcmp(k, names[q]))
+                *num[q] = atof(v), known = 1;
+        if (!strcmp(k, "--seed"))
+            a->seed = atol(v), known = 1;
+        else if (!strcmp(k, "--lammps-data"))
+            a->lammps = v, known = 1;
+        else if (!strcmp(k, "--measure-dump"))
+            a->dump = v, known = 1;
+        if (!known)
+            return 0;
+    }
+    return a->seed > 0 && a->bed_D > 0.0 && a->length_D > 0.0 && a->width_D > 0.0 && a->tc_nd > 0.0 &&
+           a->spin_nd >= 0.0 && a->avg_nd >= 1.0;
+}
+
+static gf_status make_spec(gf_ctx *ctx, const chute_args *a, gf_run_spec *s)
+{
+    gf_run_spec_defaults(s);
+    snprintf(s->scene, sizeof s->scene, "avalanche");
+    snprintf(s->fluid.model, sizeof s->fluid.model, "none");
+    s->output.particles = s->output.fields = s->output.probes = s->output.diagnostics = 0;
+    s->seed = (uint64_t)a->seed;
+    s->grains.diameter_m = 0.01;
+    s->grains.polydispersity = 0.10;
+    s->grains.density_kg_m3 = 2500.0;
+    s->contact.restitution = a->eps;
+    s->contact.friction = s->contact.wall_friction = 0.25;
+    s->contact.t_contact_nd = a->tc_nd;
+    GF_TRY(gf_run_spec_set_param(ctx, s, "incline_deg", a->angle_deg));
+    GF_TRY(gf_run_spec_set_param(ctx, s, "length_over_D", a->length_D));
+    GF_TRY(gf_run_spec_set_param(ctx, s, "width_over_D", a->width_D));
+    GF_TRY(gf_run_spec_set_param(ctx, s, "bed_height_over_D", a->bed_D));
+    return gf_run_spec_set_param(ctx, s, "height_over_D", a->bed_D + 10.0);
+}
+
+/* Steps of one advance of t_nd sqrt(D/g), as test_avalanche's flow_advance. */
+static long steps_of(gf_sim *sim, double t_nd)
+{
+    const gf_run_spec *s = gf_sim_spec(sim);
+    return (long)ceil(t_nd * sqrt(s->grains.diameter_m / s->gravity_m_s2) / gf_sim_dt_s(sim));
+}
+
+/* Steps of the spin-up, advanced in pieces of 25 sqrt(D/g) as test_avalanche does. */
+static long spin_steps(gf_sim *sim, double spin_nd)
+{
+    long n = 0;
+    for (double t = 0.0; t < spin_nd - 1e-9; t += 25.0)
+        n += steps_of(sim, fmin(25.0, spin_nd - t));
+    return n;
+}
+
+/* The geometry and schedule the LAMMPS input needs besides the law. */
+static int append_chute(gf_sim *sim, const chute_args *a, const char *data_path)
+{
+    double lo[3], hi[3];
+    int per[3];
+    gf_sim_box(sim, lo, hi, per);
+    char pp[600];
+    snprintf(pp, sizeof pp, "%s.params", data_path);
+    FILE *f = fopen(pp, "a");
+    if (!f)
+        return 0;
+    double th = a->angle_deg * M_PI / 180.0;
+    fprintf(f, "TOP=%.17g\nGX_UNIT=%.17g\nGY_UNIT=%.17g\nSPIN_STEPS=%ld\nSAMPLE_STEPS=%ld\nSAMPLES=%d\n", hi[1],
+            sin(th), -cos(th), spin_steps(sim, a->spin_nd), steps_of(sim, 1.0), (int)a->avg_nd);
+    return fclose(f) == 0;
+}
+
+/* Adds one sample of the mobile grains p (domain dom) to the window. */
+static gf_status sample(gf_ctx *ctx, const gf_particles *p, const gf_measure_domain *dom, double D, chute_window *w)
+{
+    double phi[N_SLABS], u[3 * N_SLABS];
+    GF_TRY(gf_measure_profile_y(ctx, p, dom, 0.0, D, N_SLABS, phi, u));
+    for (int k = 0; k < N_SLABS; ++k)
+        w->phi[k] += phi[k], w->u[k] += isnan(u[3 * k]) ? 0.0 : u[3 * k];
+    w->q += gf_measure_grain_flow_rate(p, dom);
+    w->n++;
+    return GF_OK;
+}
+
+/* The averaged window read the seed's way; one line. */
+static int report(gf_ctx *ctx, const char *who, gf_sim *sim, const chute_args *a, chute_window *w, double cpu_s)
+{
+    const gf_run_spec *s = gf_sim_spec(sim);
+    const double D = s->grains.diameter_m, g = s->gravity_m_s2;
+    for (int k = 0; k < N_SLABS; ++k)
+        w->phi[k] /= w->n, w->u[k] /= w->n;
+    w->q /= w->n;
+    gf_measure_chute c;
+    if (gf_measure_chute_bagnold(ctx, w->phi, w->u, N_SLABS, D, g, a->angle_deg * M_PI / 180.0, &c) != GF_OK)
+        return 0;
+    int top = (int)floor(c.h_m / D + 0.5);
+    printf("%s: %.1f deg, %d samples: I from the Bagnold fit %.4f, Q_g %.4e m3/s, h %.2f D, phi_bulk %.4f, "
+           "surface u %.3f sqrt(gD), Bagnold rms %.4f, lambda/h %.4f, %.1f s CPU\n",
+           who, a->angle_deg, w->n, c.I, w->q, c.h_m / D, c.phi_bulk, w->u[top > 0 ? top : 0] / sqrt(g * D),
+           c.rel_rms, c.slip_over_h, cpu_s);
+    printf("%s: u/sqrt(gD) by slab:", who);
+    for (int k = 0; k <= top + 1 && k < N_SLABS; ++k)
+        printf(" %.3f", w->u[k] / sqrt(g * D));
+    printf("\n");
+    return 1;
+}
+
+/* grainflow's own run: spin-up, then one sample per sqrt(D/g). */
+static int run(gf_ctx *ctx, gf_sim *sim, const chute_args *a, const gf_measure_domain *dom)
+{
+    const double D = gf_sim_spec(sim)->grains.diameter_m;
+    chute_window w = {0};
+    double c0 = cpu_time_s();
+    for (double t = 0.0; t < a->spin_nd - 1e-9; t += 25.0)
+        if (gf_sim_advance(sim, steps_of(sim, fmin(25.0, a->spin_nd - t))) != GF_OK)
+            return 0;
+    for (int k = 0; k < (int)a->avg_nd; ++k)
+        if (gf_sim_advance(sim, steps_of(sim, 1.0)) != GF_OK || sample(ctx, gf_sim_particles(sim), dom, D, &w) != GF_OK)
+            return 0;
+    return report(ctx, "grainflow", sim, a, &w, cpu_time_s() - c0);
+}
+
+/* Reads one snapshot of a LAMMPS text dump (ITEM: TIMESTEP ... ITEM: ATOMS x y z vx vy vz radius) into p;
+ * 0 at the end of the file, -1 on a malformed snapshot. */
+static int read_snapshot(gf_ctx *ctx, FILE *f, double rho, gf_particles *p)
+{
+    char line[512];
+    long n = -1;
+    while (fgets(line, sizeof line, f)) {
+        if (!strncmp(line, "ITEM: NUMBER OF ATOMS", 21) && fgets(line, sizeof line, f))
+            n = atol(line);
+        else if (!strncmp(line, "ITEM: ATOMS", 11))
+            break;
+    }
+    if (feof(f) || n < 0)
+        return n < 0 ? 0 : -1;
+    while (p->n_local > 0)
+        gf_particles_remove(p, p->n_local - 1);
+    for (long i = 0; i < n; ++i) {
+        double x, y, z, vx, vy, vz, r;
+        size_t at;
+        if (!fgets(line, sizeof line, f) || sscanf(line, "%lf %lf %lf %lf %lf %lf %lf", &x, &y, &z, &vx, &vy, &vz, &r) != 7 ||
+            gf_particles_add(ctx, p, x, y, z, r, rho, 0, &at) != GF_OK)
+            return -1;
+        p->vx_m_s[at] = vx, p->vy_m_s[at] = vy, p->vz_m_s[at] = vz;
+    }
+    return 1;
+}
+
+/* The LAMMPS run's snapshots, measured as grainflow's samples. */
+static int measure_dump(gf_ctx *ctx, gf_sim *sim, const chute_args *a, const gf_measure_domain *dom)
+{
+    FILE *f = fopen(a->dump, "r");
+    if (!f) {
+        fprintf(stderr, "gf-bench-avalanche: cannot read %s\n", a->dump);
+        return 0;
+    }
+    gf_particles *p = NULL;
+    chute_window w = {0};
+    int r = gf_particles_create(ctx, 1024, &p) == GF_OK ? 1 : -1;
+    const gf_run_spec *s = gf_sim_spec(sim);
+    while (r > 0 && (r = read_snapshot(ctx, f, s->grains.density_kg_m3, p)) > 0)
+        if (sample(ctx, p, dom, s->grains.diameter_m, &w) != GF_OK)
+            r = -1;
+    fclose(f);
+    gf_particles_destroy(&p);
+    if (r < 0 || w.n == 0) {
+        fprintf(stderr, "gf-bench-avalanche: %s: no readable snapshot (%s)\n", a->dump, ctx->last_msg);
+        return 0;
+    }
+    return report(ctx, "LAMMPS", sim, a, &w, 0.0);
+}
+
+int main(int argc, char **argv)
+{
+    chute_args a;
+    if (!parse(argc, argv, &a)) {
+        fprintf(stderr, "usage: gf-bench-avalanche [--angle DEG] [--seed S] [--bed H_over_D] [--length L_over_D] "
+                        "[--width W_over_D] [--tc TC_ND] [--eps E] [--spin T_ND] [--avg T_ND] "
+                        "[--lammps-data PATH] [--measure-dump PATH]\n");
+        return 2;
+    }
+    gf_ctx ctx = {0};
+    gf_run_spec spec;
+    gf_sim *sim = NULL;
+    gf_sim_options opt = {.n_threads = 1};
+    if (make_spec(&ctx, &a, &spec) != GF_OK || gf_sim_create(&ctx, &spec, &opt, &sim) != GF_OK) {
+        fprintf(stderr, "gf-bench-avalanche: %s\n", ctx.last_msg);
+        return 1;
+    }
+    gf_measure_domain dom;
+    gf_sim_box(sim, dom.lo_m, dom.hi_m, dom.periodic);
+    int ok = 1;
+    if (a.dump)
+        ok = measure_dump(&ctx, sim, &a, &dom);
+    else {
+        if (a.lammps && !(gf_bench_write_lammps(sim, a.lammps) && append_chute(sim, &a, a.lammps)))
+            fprintf(stderr, "gf-bench-avalanche: cannot write %s\n", a.lammps), ok = 0;
+        if (ok && !run(&ctx, sim, &a, &dom))
+            fprintf(stderr, "gf-bench-avalanche: %s\n", ctx.last_msg), ok = 0;
+    }
+    gf_sim_destroy(&sim);
+    return ok ? 0 : 1;
+}
