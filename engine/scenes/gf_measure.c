@@ -357,8 +357,8 @@ gf_status gf_measure_chute_bagnold(gf_ctx *ctx, const double *phi, const double 
         return GF_FAIL(ctx, GF_ERR_NOMEM, "measure: cannot allocate %d slabs", n_slabs);
     double *uf = y + n_slabs, h = gf_measure_bed_height_m(phi, n_slabs, 0.0, D, 0.5) - 0.5 * D;
     int n = 0;
-    for (int k = 1; k < n_slabs && (k + 0.5) * D - 0.5 * D <= h; ++k)
-        y[n] = (k + 0.5) * D - 0.5 * D, uf[n] = u[k], ++n;
+    for (int k = 1; k < n_slabs && k * D <= h; ++k) /* slab centre (k + 1/2) D, from the layer's top D/2 */
+        y[n] = k * D, uf[n] = u[k], ++n;
     out->h_m = h;
     gf_status st = gf_measure_fit_bagnold(ctx, y, uf, n, h, &out->A, &out->B, &out->rel_rms);
     free(y);

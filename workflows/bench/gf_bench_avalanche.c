@@ -1,10 +1,10 @@
 /*
- * gf-bench-avalanche: the dry steady chute flow of test_avalanche (row 8,
+ * gf-bench-avalanche: the dry chute flows of test_avalanche (rows 7-8,
  * Izard 2014 §2.1.3.3), for the side-by-side comparison with LAMMPS
  * (workflows/bench/lammps_avalanche.sh).
  *
  *   gf-bench-avalanche [--angle DEG] [--seed S] [--bed H_over_D] [--length L_over_D] [--width W_over_D]
- *                      [--tc TC_ND] [--eps E] [--spin T_ND] [--avg T_ND]
+ *                      [--tc TC_ND] [--eps E] [--spin T_ND] [--avg T_ND] [--every T_ND] [--window K]
  *                      [--lammps-data PATH] [--measure-dump PATH]
  *
  * The grains and contacts of test_avalanche's steady mode: D = 1 cm +- 10 %,
@@ -14,7 +14,7 @@
  * its bed prepared at theta = 0 and gravity tilted at t = 0 (gf_sim_create
  * runs all of it). Defaults: 27.5 deg, packing seed 31, a 12 D bed on a
  * 6 D x 6 D footprint, 200 sqrt(D/g) of spin-up, then one sample per
- * sqrt(D/g) for 50.
+ * sqrt(D/g) for 50 (--every sets the interval).
  *
  * --lammps-data writes that t = 0 state (gf_lammps_data.h) and PATH.params,
  * to which the chute's geometry and schedule are appended: the floor y = 0
@@ -22,7 +22,13 @@
  * the sample count. The run then samples the slab profiles of phi and the
  * downslope velocity (gf_measure_profile_y, slabs of D) and Q_g, and prints
  * the seed's reading of the averaged profile (gf_measure_chute_bagnold: I from
- * the Bagnold amplitude, the slip length, the fit's rms).
+ * the Bagnold amplitude, the slip length, the fit's rms). --window K reports
+ * instead every K samples, for a transient (row 7: --angle 40 --bed 34 --seed
+ * 21 --spin 0 --avg 76 --every 0.5 --window 4, test_avalanche's unsteady
+ * set-up and windows): the window's end time, Q_g, the surface speed (slab
+ * below the top), the bed height and the bulk I from the velocity profile
+ * with hydrostatic pressure, |du/dy| D / sqrt(phi g cos(theta) (h - y)),
+ * averaged over the slabs from 2 D above the floor to 3 D below the top.
  *
  * --measure-dump PATH skips the run: it reads the snapshots of a LAMMPS text
  * dump (columns x y z vx vy vz radius, mobile grains) and applies the same
@@ -46,7 +52,8 @@ enum { N_SLABS = 64 };
 
 typedef struct chute_args {
     long seed;
-    double angle_deg, bed_D, length_D, width_D, tc_nd, eps, spin_nd, avg_nd;
+    double angle_deg, bed_D, length_D, width_D, tc_nd, eps, spin_nd, avg_nd, every_nd;
+    int window; /* samples per report; 0: one report of all */
     const char *lammps, *dump;
 } chute_args;
 
@@ -66,20 +73,22 @@ static double cpu_time_s(void)
 static int parse(int argc, char **argv, chute_args *a)
 {
     *a = (chute_args){.seed = 31, .angle_deg = 27.5, .bed_D = 12.0, .length_D = 6.0, .width_D = 6.0,
-                      .tc_nd = 3.1e-3, .eps = 0.5, .spin_nd = 200.0, .avg_nd = 50.0};
+                      .tc_nd = 3.1e-3, .eps = 0.5, .spin_nd = 200.0, .avg_nd = 50.0, .every_nd = 1.0};
     for (int i = 1; i < argc; i += 2) {
         const char *k = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         if (!v)
             return 0;
-        double *num[] = {&a->angle_deg, &a->bed_D, &a->length_D, &a->width_D, &a->tc_nd, &a->eps, &a->spin_nd,
-                         &a->avg_nd};
-        const char *names[] = {"--angle", "--bed", "--length", "--width", "--tc", "--eps", "--spin", "--avg"};
+        double *num[] = {&a->angle_deg, &a->bed_D, &a->length_D, &a->width_D, &a->tc_nd,
+                         &a->eps,       &a->spin_nd, &a->avg_nd,  &a->every_nd};
+        const char *names[] = {"--angle", "--bed", "--length", "--width", "--tc", "--eps", "--spin", "--avg", "--every"};
         int known = 0;
-        for (int q = 0; q < 8; ++q)
+        for (int q = 0; q < 9; ++q)
             if (!strcmp(k, names[q]))
                 *num[q] = atof(v), known = 1;
         if (!strcmp(k, "--seed"))
             a->seed = atol(v), known = 1;
+        else if (!strcmp(k, "--window"))
+            a->window = atoi(v), known = 1;
         else if (!strcmp(k, "--lammps-data"))
             a->lammps = v, known = 1;
         else if (!strcmp(k, "--measure-dump"))
@@ -88,7 +97,7 @@ static int parse(int argc, char **argv, chute_args *a)
             return 0;
     }
     return a->seed > 0 && a->bed_D > 0.0 && a->length_D > 0.0 && a->width_D > 0.0 && a->tc_nd > 0.0 &&
-           a->spin_nd >= 0.0 && a->avg_nd >= 1.0;
+           a->spin_nd >= 0.0 && a->every_nd > 0.0 && a->avg_nd >= a->every_nd && a->window >= 0;
 }
 
 static gf_status make_spec(gf_ctx *ctx, const chute_args *a, gf_run_spec *s)
@@ -118,6 +127,11 @@ static long steps_of(gf_sim *sim, double t_nd)
     return (long)ceil(t_nd * sqrt(s->grains.diameter_m / s->gravity_m_s2) / gf_sim_dt_s(sim));
 }
 
+static int n_samples(const chute_args *a)
+{
+    return (int)floor(a->avg_nd / a->every_nd + 1e-9);
+}
+
 /* Steps of the spin-up, advanced in pieces of 25 sqrt(D/g) as test_avalanche does. */
 static long spin_steps(gf_sim *sim, double spin_nd)
 {
@@ -140,7 +154,7 @@ static int append_chute(gf_sim *sim, const chute_args *a, const char *data_path)
         return 0;
     double th = a->angle_deg * M_PI / 180.0;
     fprintf(f, "TOP=%.17g\nGX_UNIT=%.17g\nGY_UNIT=%.17g\nSPIN_STEPS=%ld\nSAMPLE_STEPS=%ld\nSAMPLES=%d\n", hi[1],
-            sin(th), -cos(th), spin_steps(sim, a->spin_nd), steps_of(sim, 1.0), (int)a->avg_nd);
+            sin(th), -cos(th), spin_steps(sim, a->spin_nd), steps_of(sim, a->every_nd), n_samples(a));
     return fclose(f) == 0;
 }
 
@@ -179,19 +193,74 @@ static int report(gf_ctx *ctx, const char *who, gf_sim *sim, const chute_args *a
     return 1;
 }
 
-/* grainflow's own run: spin-up, then one sample per sqrt(D/g). */
+/* One code's samples on their way to the reports. */
+typedef struct chute_reader {
+    gf_ctx *ctx;
+    const char *who;
+    gf_sim *sim; /* the scene: grain size, gravity, box */
+    const chute_args *a;
+    const gf_measure_domain *dom;
+    chute_window w;
+    int taken;
+} chute_reader;
+
+/* A window of a transient: one line (see the head of the file). */
+static void report_window(chute_reader *r)
+{
+    const gf_run_spec *s = gf_sim_spec(r->sim);
+    const double D = s->grains.diameter_m, g = s->gravity_m_s2, th = r->a->angle_deg * M_PI / 180.0;
+    chute_window *w = &r->w;
+    for (int k = 0; k < N_SLABS; ++k)
+        w->phi[k] /= w->n, w->u[k] /= w->n;
+    w->q /= w->n;
+    double bed = gf_measure_bed_height_m(w->phi, N_SLABS, 0.0, D, 0.5), ib = 0.0;
+    int top = (int)floor(bed / D), nb = 0;
+    for (int k = 2; k <= top - 3 && k < N_SLABS - 1; ++k) {
+        double depth = bed - (k + 0.5) * D;
+        if (w->phi[k] > 0.0 && depth > 0.0)
+            ib += fabs(w->u[k + 1] - w->u[k - 1]) / 2.0 / sqrt(w->phi[k] * g * cos(th) * depth), ++nb;
+    }
+    printf("%s: t %.1f sqrt(D/g): Q_g %.4e m3/s, surface u %.3f sqrt(gD), bed %.2f D, bulk I (hydrostatic) %.4f\n",
+           r->who, r->a->spin_nd + r->taken * r->a->every_nd, w->q, top > 0 ? w->u[top - 1] / sqrt(g * D) : NAN,
+           bed / D, nb > 0 ? ib / nb : NAN);
+    *w = (chute_window){0};
+}
+
+/* Adds the sample p; reports a full window. */
+static int take_sample(chute_reader *r, const gf_particles *p)
+{
+    if (sample(r->ctx, p, r->dom, gf_sim_spec(r->sim)->grains.diameter_m, &r->w) != GF_OK)
+        return 0;
+    r->taken++;
+    if (r->a->window > 0 && r->w.n == r->a->window)
+        report_window(r);
+    return 1;
+}
+
+/* The closing report: the steady reading of all samples, unless windows were reported. */
+static int finish(chute_reader *r, double cpu_s)
+{
+    if (r->taken == 0)
+        return 0;
+    if (r->a->window > 0) {
+        printf("%s: %d samples, %.1f s CPU\n", r->who, r->taken, cpu_s);
+        return 1;
+    }
+    return report(r->ctx, r->who, r->sim, r->a, &r->w, cpu_s);
+}
+
+/* grainflow's own run: spin-up, then one sample per --every. */
 static int run(gf_ctx *ctx, gf_sim *sim, const chute_args *a, const gf_measure_domain *dom)
 {
-    const double D = gf_sim_spec(sim)->grains.diameter_m;
-    chute_window w = {0};
+    chute_reader r = {.ctx = ctx, .who = "grainflow", .sim = sim, .a = a, .dom = dom};
     double c0 = cpu_time_s();
     for (double t = 0.0; t < a->spin_nd - 1e-9; t += 25.0)
         if (gf_sim_advance(sim, steps_of(sim, fmin(25.0, a->spin_nd - t))) != GF_OK)
             return 0;
-    for (int k = 0; k < (int)a->avg_nd; ++k)
-        if (gf_sim_advance(sim, steps_of(sim, 1.0)) != GF_OK || sample(ctx, gf_sim_particles(sim), dom, D, &w) != GF_OK)
+    for (int k = 0; k < n_samples(a); ++k)
+        if (gf_sim_advance(sim, steps_of(sim, a->every_nd)) != GF_OK || !take_sample(&r, gf_sim_particles(sim)))
             return 0;
-    return report(ctx, "grainflow", sim, a, &w, cpu_time_s() - c0);
+    return finish(&r, cpu_time_s() - c0);
 }
 
 /* Reads one snapshot of a LAMMPS text dump (ITEM: TIMESTEP ... ITEM: ATOMS x y z vx vy vz radius) into p;
@@ -230,19 +299,19 @@ static int measure_dump(gf_ctx *ctx, gf_sim *sim, const chute_args *a, const gf_
         return 0;
     }
     gf_particles *p = NULL;
-    chute_window w = {0};
+    chute_reader rd = {.ctx = ctx, .who = "LAMMPS", .sim = sim, .a = a, .dom = dom};
     int r = gf_particles_create(ctx, 1024, &p) == GF_OK ? 1 : -1;
     const gf_run_spec *s = gf_sim_spec(sim);
     while (r > 0 && (r = read_snapshot(ctx, f, s->grains.density_kg_m3, p)) > 0)
-        if (sample(ctx, p, dom, s->grains.diameter_m, &w) != GF_OK)
+        if (!take_sample(&rd, p))
             r = -1;
     fclose(f);
     gf_particles_destroy(&p);
-    if (r < 0 || w.n == 0) {
+    if (r < 0 || rd.taken == 0) {
         fprintf(stderr, "gf-bench-avalanche: %s: no readable snapshot (%s)\n", a->dump, ctx->last_msg);
         return 0;
     }
-    return report(ctx, "LAMMPS", sim, a, &w, 0.0);
+    return finish(&rd, 0.0);
 }
 
 int main(int argc, char **argv)
@@ -250,8 +319,8 @@ int main(int argc, char **argv)
     chute_args a;
     if (!parse(argc, argv, &a)) {
         fprintf(stderr, "usage: gf-bench-avalanche [--angle DEG] [--seed S] [--bed H_over_D] [--length L_over_D] "
-                        "[--width W_over_D] [--tc TC_ND] [--eps E] [--spin T_ND] [--avg T_ND] "
-                        "[--lammps-data PATH] [--measure-dump PATH]\n");
+                        "[--width W_over_D] [--tc TC_ND] [--eps E] [--spin T_ND] [--avg T_ND] [--every T_ND] "
+                        "[--window K] [--lammps-data PATH] [--measure-dump PATH]\n");
         return 2;
     }
     gf_ctx ctx = {0};

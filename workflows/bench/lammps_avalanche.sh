@@ -2,7 +2,7 @@
 # usage: lammps_avalanche.sh [ANGLES] [BUILD_DIR] [SEED]
 #        (defaults "27.5" build 31; needs `apt-get install -y lammps`, binary `lmp`)
 #
-# The dry steady chute flow of test_avalanche (row 8 of the seed, Izard 2014
+# The dry chute flows of test_avalanche (rows 7-8 of the seed, Izard 2014
 # §2.1.3.3) side by side in grainflow and Debian LAMMPS, from the SAME t = 0
 # state: gf-bench-avalanche prepares the avalanche scene (rough base of glued
 # half-grains, bed 12 D on 6 D x 6 D, periodic in x and z, gravity tilted at
@@ -23,7 +23,9 @@
 # sqrt(D/g) (their dashpots differ by construction: grainflow damps with the
 # predicted end-of-step velocity, LAMMPS with the half-step one), so what is
 # compared is the steady state's averages.
-# CHUTE_ARGS: more gf-bench-avalanche options for both runs (e.g. "--spin 20 --avg 5 --eps 0.8").
+# CHUTE_ARGS: more gf-bench-avalanche options for both runs (e.g. "--spin 20 --avg 5 --eps 0.8");
+# row 7's transient, test_avalanche's unsteady set-up, window by window:
+#   CHUTE_ARGS="--bed 34 --spin 0 --avg 76 --every 0.5 --window 4" lammps_avalanche.sh 40 build 21
 # NICE=, PIN=CPU: how both codes run (workflows/bench/lammps_common.sh).
 set -eu
 SCRIPT=lammps_avalanche
@@ -67,7 +69,7 @@ EOS
 }
 
 for ANGLE in $ANGLES; do
-    echo "== steady chute flow, $ANGLE deg, packing seed $SEED (test_avalanche's steady set-up)"
+    echo "== chute flow, $ANGLE deg, packing seed $SEED${CHUTE_ARGS:+, $CHUTE_ARGS}"
     OMP_NUM_THREADS=1 $PINNED $NICE "$BENCH" --angle "$ANGLE" --seed "$SEED" $CHUTE_ARGS --lammps-data "$WORK/c.data" |
         tee "$WORK/gf.out"
     . "$WORK/c.data.params"
