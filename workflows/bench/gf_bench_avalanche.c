@@ -40,8 +40,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
+#include "gf_bench_clock.h"
 #include "gf_lammps_data.h"
 #include "gf_sim.h"
 #include "particles/gf_particles.h"
@@ -62,13 +62,6 @@ typedef struct chute_window {
     double phi[N_SLABS], u[N_SLABS], q;
     int n;
 } chute_window;
-
-static double cpu_time_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
 
 static int parse(int argc, char **argv, chute_args *a)
 {
@@ -147,9 +140,7 @@ static int append_chute(gf_sim *sim, const chute_args *a, const char *data_path)
     double lo[3], hi[3];
     int per[3];
     gf_sim_box(sim, lo, hi, per);
-    char pp[600];
-    snprintf(pp, sizeof pp, "%s.params", data_path);
-    FILE *f = fopen(pp, "a");
+    FILE *f = gf_bench_append_params(data_path);
     if (!f)
         return 0;
     double th = a->angle_deg * M_PI / 180.0;
@@ -253,14 +244,14 @@ static int finish(chute_reader *r, double cpu_s)
 static int run(gf_ctx *ctx, gf_sim *sim, const chute_args *a, const gf_measure_domain *dom)
 {
     chute_reader r = {.ctx = ctx, .who = "grainflow", .sim = sim, .a = a, .dom = dom};
-    double c0 = cpu_time_s();
+    double c0 = gf_bench_cpu_time_s();
     for (double t = 0.0; t < a->spin_nd - 1e-9; t += 25.0)
         if (gf_sim_advance(sim, steps_of(sim, fmin(25.0, a->spin_nd - t))) != GF_OK)
             return 0;
     for (int k = 0; k < n_samples(a); ++k)
         if (gf_sim_advance(sim, steps_of(sim, a->every_nd)) != GF_OK || !take_sample(&r, gf_sim_particles(sim)))
             return 0;
-    return finish(&r, cpu_time_s() - c0);
+    return finish(&r, gf_bench_cpu_time_s() - c0);
 }
 
 /* Reads one snapshot of a LAMMPS text dump (ITEM: TIMESTEP ... ITEM: ATOMS x y z vx vy vz radius) into p;

@@ -28,8 +28,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
+#include "gf_bench_clock.h"
 #include "gf_lammps_data.h"
 #include "gf_sim.h"
 #include "scenes/gf_scene.h"
@@ -39,13 +39,6 @@ typedef struct collapse_args {
     double aspect, length_D, width_D, end_nd;
     const char *lammps, *dump;
 } collapse_args;
-
-static double cpu_time_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
 
 static int parse(int argc, char **argv, collapse_args *a)
 {
@@ -91,9 +84,7 @@ static int append_geometry(gf_sim *sim, const collapse_args *a, const char *data
     double lo[3], hi[3];
     int per[3];
     gf_sim_box(sim, lo, hi, per);
-    char pp[600];
-    snprintf(pp, sizeof pp, "%s.params", data_path);
-    FILE *f = fopen(pp, "a");
+    FILE *f = gf_bench_append_params(data_path);
     if (!f)
         return 0;
     double D = s->grains.diameter_m;
@@ -121,9 +112,9 @@ static gf_status run_to_rest(gf_sim *sim, const gf_scene_desc *d, double *cpu_s)
     long chunk = (long)ceil(0.25 * sqrt(s->grains.diameter_m / s->gravity_m_s2) / gf_sim_dt_s(sim));
     *cpu_s = 0.0;
     while (gf_sim_time_s(sim) < gf_sim_end_time_s(sim) && !d->done(sim)) {
-        double c0 = cpu_time_s();
+        double c0 = gf_bench_cpu_time_s();
         GF_TRY(gf_sim_advance(sim, chunk));
-        *cpu_s += cpu_time_s() - c0;
+        *cpu_s += gf_bench_cpu_time_s() - c0;
     }
     return GF_OK;
 }

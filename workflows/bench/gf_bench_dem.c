@@ -42,15 +42,9 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "gf_bench_clock.h"
 #include "gf_lammps_data.h"
 #include "gf_sim.h"
-
-static double cpu_time_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
 
 typedef struct bench_args {
     long n[8];
@@ -251,12 +245,12 @@ int main(int argc, char **argv)
             const gf_timers *t = gf_sim_timers(sim);
             double e0[GF_TIMER_COUNT];
             memcpy(e0, t->elapsed_s, sizeof e0);
-            double t0 = gf_wtime(), c0 = cpu_time_s();
+            double t0 = gf_wtime(), c0 = gf_bench_cpu_time_s();
             if (gf_sim_advance(sim, a.steps) != GF_OK) {
                 fprintf(stderr, "gf-bench-dem: %s\n", ctx.last_msg);
                 return 1;
             }
-            double wall = gf_wtime() - t0, cpu = cpu_time_s() - c0;
+            double wall = gf_wtime() - t0, cpu = gf_bench_cpu_time_s() - c0;
             const gf_sim_list_stats ls = gf_sim_list_counters(sim);
             const long ng = (long)gf_sim_particles(sim)->n_local; /* the collapse sets its own count */
             double rate = (double)ng * a.steps / wall;

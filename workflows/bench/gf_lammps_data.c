@@ -76,6 +76,13 @@ static int write_atoms(gf_sim *sim, const char *path)
     return fclose(f) == 0;
 }
 
+FILE *gf_bench_append_params(const char *path)
+{
+    char pp[600];
+    snprintf(pp, sizeof pp, "%s.params", path);
+    return fopen(pp, "a");
+}
+
 int gf_bench_write_lammps(gf_sim *sim, const char *path)
 {
     if (!write_atoms(sim, path))

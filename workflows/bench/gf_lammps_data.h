@@ -12,10 +12,16 @@
 #ifndef GF_LAMMPS_DATA_H
 #define GF_LAMMPS_DATA_H
 
+#include <stdio.h>
+
 #include "gf_sim.h"
 
 /* Writes path and path.params; 1 on success, 0 when a file cannot be written. */
 int gf_bench_write_lammps(gf_sim *sim, const char *path);
+
+/* PATH.params opened for appending a scene's own assignments (geometry,
+ * schedule) after gf_bench_write_lammps; NULL when it cannot be opened. */
+FILE *gf_bench_append_params(const char *path);
 
 /* Input e of LAMMPS pair granular's `damping tsuji` (29 Sep 2021: damping
  * alpha(e) sqrt(m* k_n), alpha Tsuji's sixth-order polynomial) for which

@@ -41,20 +41,10 @@ WORK=$(mktemp -d /tmp/gf_lmp_avalanche_XXXXXX)
 trap 'rm -rf "$WORK"' EXIT
 
 lammps_input() { # data file $1, snapshots to $2
+    lammps_head "p f p" "$1"
+    lammps_glued_pairs
     cat <<EOS
-units           si
-atom_style      sphere
-atom_modify     map array
-boundary        p f p
-comm_modify     vel yes
-read_data       $1
-group           mobile type 1
-group           glued type 2
-neighbor        $SKIN bin
-neigh_modify    delay 0 every 1 check yes exclude type 2 2
-pair_style      granular
-pair_coeff      * * hooke $KN $TSUJI tangential linear_history $KT 0 $MU damping tsuji limit_damping
-fix             ywalls mobile wall/gran granular hooke $KN $TSUJI tangential linear_history $KT 0 $MUW damping tsuji limit_damping yplane 0.0 $TOP
+fix             ywalls mobile wall/gran $WALL yplane 0.0 $TOP
 fix             base glued freeze
 fix             grav mobile gravity $G vector $GX_UNIT $GY_UNIT 0
 fix             int mobile nve/sphere

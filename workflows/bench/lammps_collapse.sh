@@ -64,28 +64,9 @@ trap 'rm -rf "$WORK"' EXIT
 
 # LAMMPS input: data file $1, $2 steps, final grains to $3 ("x y z radius type")
 lammps_input() {
-    if [ "${LMP_LAW:-granular}" = hooke ]; then
-        PAIR="gran/hooke/history $KN $KT $GAMMAN $GAMMAT $MU 0"
-        WALL="hooke/history $KN $KT $GAMMAN $GAMMAT $MUW 0"
-        COEFF=""
-    else
-        PAIR=granular
-        WALL="granular hooke $KN $TSUJI tangential linear_history $KT 0 $MUW damping tsuji limit_damping"
-        COEFF="hooke $KN $TSUJI tangential linear_history $KT 0 $MU damping tsuji limit_damping"
-    fi
+    lammps_head "f f p" "$1"
+    lammps_glued_pairs
     cat <<EOS
-units           si
-atom_style      sphere
-atom_modify     map array
-boundary        f f p
-comm_modify     vel yes
-read_data       $1
-group           mobile type 1
-group           glued type 2
-neighbor        $SKIN bin
-neigh_modify    delay 0 every 1 check yes exclude type 2 2
-pair_style      $PAIR
-pair_coeff      * * $COEFF
 fix             xwalls mobile wall/gran $WALL xplane 0.0 $L
 fix             ywalls mobile wall/gran $WALL yplane 0.0 $TOP
 fix             base glued freeze

@@ -58,13 +58,8 @@ GF_RATE=$(sed -n 's/.*s wall (speed-up [0-9.]*), \([0-9.e+]*\) per CPU-second.*/
 
 # LAMMPS input: data file $1, $2 steps, final positions to $3 (x y z radius)
 lammps_input() {
+    lammps_head "p f p" "$1"
     cat <<EOS
-units           si
-atom_style      sphere
-atom_modify     map array
-boundary        p f p
-comm_modify     vel yes
-read_data       $1
 neighbor        ${LMP_SKIN:-$SKIN} bin
 neigh_modify    delay 0 every 1 check yes
 pair_style      gran/hooke/history $KN $KT $GAMMAN $GAMMAT $MU 0
