@@ -161,21 +161,35 @@ static gf_status sample(gf_ctx *ctx, const gf_particles *p, const gf_measure_dom
     return GF_OK;
 }
 
+/* The window's sums to means. */
+static void window_mean(chute_window *w)
+{
+    for (int k = 0; k < N_SLABS; ++k)
+        w->phi[k] /= w->n, w->u[k] /= w->n;
+    w->q /= w->n;
+}
+
+/* The surface speed / sqrt(gD): the slab just below the one holding the bed's top (half-plateau of phi),
+ * the test's reading (the top slab holds the dilute grains above the surface). */
+static double surface_speed(const chute_window *w, double D, double g)
+{
+    int top = (int)floor(gf_measure_bed_height_m(w->phi, N_SLABS, 0.0, D, 0.5) / D);
+    return top > 0 && top <= N_SLABS ? w->u[top - 1] / sqrt(g * D) : NAN;
+}
+
 /* The averaged window read the seed's way; one line. */
 static int report(gf_ctx *ctx, const char *who, gf_sim *sim, const chute_args *a, chute_window *w, double cpu_s)
 {
     const gf_run_spec *s = gf_sim_spec(sim);
     const double D = s->grains.diameter_m, g = s->gravity_m_s2;
-    for (int k = 0; k < N_SLABS; ++k)
-        w->phi[k] /= w->n, w->u[k] /= w->n;
-    w->q /= w->n;
+    window_mean(w);
     gf_measure_chute c;
     if (gf_measure_chute_bagnold(ctx, w->phi, w->u, N_SLABS, D, g, a->angle_deg * M_PI / 180.0, &c) != GF_OK)
         return 0;
     int top = (int)floor(c.h_m / D + 0.5);
     printf("%s: %.1f deg, %d samples: I from the Bagnold fit %.4f, Q_g %.4e m3/s, h %.2f D, phi_bulk %.4f, "
            "surface u %.3f sqrt(gD), Bagnold rms %.4f, lambda/h %.4f, %.1f s CPU\n",
-           who, a->angle_deg, w->n, c.I, w->q, c.h_m / D, c.phi_bulk, w->u[top > 0 ? top : 0] / sqrt(g * D),
+           who, a->angle_deg, w->n, c.I, w->q, c.h_m / D, c.phi_bulk, surface_speed(w, D, g),
            c.rel_rms, c.slip_over_h, cpu_s);
     printf("%s: u/sqrt(gD) by slab:", who);
     for (int k = 0; k <= top + 1 && k < N_SLABS; ++k)
@@ -201,9 +215,7 @@ static void report_window(chute_reader *r)
     const gf_run_spec *s = gf_sim_spec(r->sim);
     const double D = s->grains.diameter_m, g = s->gravity_m_s2, th = r->a->angle_deg * M_PI / 180.0;
     chute_window *w = &r->w;
-    for (int k = 0; k < N_SLABS; ++k)
-        w->phi[k] /= w->n, w->u[k] /= w->n;
-    w->q /= w->n;
+    window_mean(w);
     double bed = gf_measure_bed_height_m(w->phi, N_SLABS, 0.0, D, 0.5), ib = 0.0;
     int top = (int)floor(bed / D), nb = 0;
     for (int k = 2; k <= top - 3 && k < N_SLABS - 1; ++k) {
@@ -212,7 +224,7 @@ static void report_window(chute_reader *r)
             ib += fabs(w->u[k + 1] - w->u[k - 1]) / 2.0 / sqrt(w->phi[k] * g * cos(th) * depth), ++nb;
     }
     printf("%s: t %.1f sqrt(D/g): Q_g %.4e m3/s, surface u %.3f sqrt(gD), bed %.2f D, bulk I (hydrostatic) %.4f\n",
-           r->who, r->a->spin_nd + r->taken * r->a->every_nd, w->q, top > 0 ? w->u[top - 1] / sqrt(g * D) : NAN,
+           r->who, r->a->spin_nd + r->taken * r->a->every_nd, w->q, surface_speed(w, D, g),
            bed / D, nb > 0 ? ib / nb : NAN);
     *w = (chute_window){0};
 }
