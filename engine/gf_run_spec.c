@@ -12,7 +12,7 @@ void gf_run_spec_defaults(gf_run_spec *s)
     s->seed = 1;
     s->gravity_m_s2 = 9.81;
     s->end_time_nd = 0.0;
-    /* Izard 2014 §5.2: D = 7.6 mm (erratum §9.12), 5 % polydispersity. */
+    /* Izard 2014 §5.2: D = 7.6 mm (D, not R: Ar ~ 30), 5 % polydispersity. */
     s->grains = (gf_grains_spec){.diameter_m = 7.6e-3, .polydispersity = 0.05, .density_kg_m3 = 2500.0};
     /* Izard 2014 §5.2: eps_max = 0.87, mu_c = 0.25; t_c sqrt(g/D) = 2.5e-3 there; a softer
      * 1e-2 keeps grains rigid (overlap << D at these pressures) at 4x fewer steps. */

@@ -1,5 +1,5 @@
 /*
- * gf_sim: set-up, validation and the step loop (ARCHITECTURE.md; STYLE.md §7).
+ * gf_sim: set-up, validation and the step loop (docs/architecture.md).
  *
  * Time step. dt = t_c dt_over_tc, never a bare number (t_c = t_contact_nd
  * sqrt(D/g)). Stability bound: velocity Verlet on one linear spring is stable
@@ -12,7 +12,7 @@
  * covers those network and polydispersity factors (up to 10 %; wider
  * distributions lower it, gf_run_spec_dt_limit_over_tc); accuracy wants t_c/50
  * (the default) anyway. Lubrication adds an explicit damping rate
- * c / m* = 6 pi eta R_eff^2/(eta_e m*); c dt / m* must stay below 1 (digest §4.2).
+ * c / m* = 6 pi eta R_eff^2/(eta_e m*); c dt / m* must stay below 1 (Izard 2014 (3.18)).
  *
  * Step (dry):  kick(dt/2) -> drift(dt) -> [rebuild if a grain moved > skin/2]
  *              -> contacts (+ lubrication when immersed) -> kick(dt/2)

@@ -1,6 +1,6 @@
 /*
  * gf_sim: one simulation — a scene built from a gf_run_spec, advanced by a
- * step loop made only of the stages the scene needs (ARCHITECTURE.md):
+ * step loop made only of the stages the scene needs (docs/architecture.md):
  *
  *   dry:      contacts -> integrate -> (diagnostics, output)
  *   immersed: fluid step -> (contacts + lubrication + fluid forces) x substeps -> ...
@@ -122,7 +122,7 @@ void gf_sim_wall_force(const gf_sim *sim, int wall_id, double f_N[3]);
 double gf_sim_excess_pressure_Pa(const gf_sim *sim, const double x_m[3]);
 
 /* Full granular stress tensor sigma_G = sigma^p + sigma^k of the seed
- * (Izard 2014 (2.16)-(2.20), digest §1.10) on n horizontal slabs
+ * (Izard 2014 (2.16)-(2.20)) on n horizontal slabs
  * [y0 + k dy, y0 + (k + 1) dy] spanning the x-z footprint, with the sign
  * flipped so that compression is positive:
  *   S_ij = (1/V_k) sum_c f^c_i b^c_j w_k(c) + (1/V_k) sum_{alpha in k} m u'_i u'_j

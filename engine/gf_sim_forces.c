@@ -3,7 +3,7 @@
  * lubrication over the Verlet half list, grain-wall contacts and lubrication,
  * and the neighbour-list rebuild.
  *
- * Geometry (Izard 2014 §2.1.1; digest §1.2-1.5): n = (x_i - x_j)/|x_i - x_j|
+ * Geometry (Izard 2014 §2.1.1, (2.4)-(2.6)): n = (x_i - x_j)/|x_i - x_j|
  * points from j to i, overlap delta = R_i + R_j - |x_i - x_j| > 0 in contact,
  * relative surface velocity at the contact point
  *     u_rel = u_i - u_j - (R_i w_i + R_j w_j) x n     (Djouwe 2012 §1.1),
@@ -14,11 +14,11 @@
  * contact point, the force on j is -F_t).
  *
  * Lubrication (Brenner 1961 with effective roughness eta_e; Izard 2014 (2.36),
- * (3.18); digest §4.2), normal only, on i:
+ * (3.18)), normal only, on i:
  *     F = -6 pi eta_f ((u_i - u_j).n) / (gap + eta_e) (R_i R_j/(R_i+R_j))^2 n
  * active for gap <= cutoff (lub_cutoff_over_R x mean R), gap clamped at 0
  * during overlap (constant damping 6 pi eta R_eff^2/eta_e, the choice of the
- * §3 rebound model, digest §4.2 [I]); wall: R_eff^2 -> R_i^2.
+ * rebound model of Izard 2014 §3.1, which the thesis leaves unstated); wall: R_eff^2 -> R_i^2.
  *
  * OpenMP: a half list races on j, so the rows are cut into one pair-balanced
  * chunk per configured thread. Each chunk adds into the particle store the

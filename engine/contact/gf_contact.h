@@ -1,11 +1,11 @@
 /*
  * Contact laws: a registry table of pure kernels on a small parameter struct
- * (STYLE.md §8; LAMMPS pair granular sub-models). A law is normal (+) damping
+ * (as LAMMPS' pair granular sub-models).  A law is normal (+) damping
  * (+) tangential; the step loop evaluates the geometry (unit normal n from j
  * to i, overlap delta > 0, relative surface velocity at the contact point)
  * and the kernel returns the force on grain i. The force on j is its
  * opposite; torques are r_c x F_t with r_c = -R_i n for i and +R_j n for j
- * (Izard 2014 (2.6), sign-safe form of the digest §1.4).
+ * (Izard 2014 (2.6), (3.12), in a sign-safe form).
  *
  * Linear spring-dashpot of the seeds (Schäfer, Dippel & Wolf, J. Phys. I 1996;
  * Izard 2014 (2.4), (3.13), (3.16)-(3.17)), for a pair of effective mass m*:
@@ -15,20 +15,20 @@
  * (two grains of the mean diameter D: m* = m_D/2), so every pair shares the
  * stiffness of one material, as a physical material does; the damping of a
  * pair is then gamma_n = 2 zeta sqrt(m* k_n) with the damping ratio
- * zeta = -ln eps / sqrt(pi^2 + ln^2 eps) (Djouwe 2012 §1.4 [D]), so that every
+ * zeta = -ln eps / sqrt(pi^2 + ln^2 eps) (Djouwe Meffeja 2012 §2.4.3, (2.8)), so that every
  * pair (walls included, m* = m_i) has the same restitution eps_max of the
  * unclipped law, while its contact duration scales as sqrt(m*). For the mean
  * pair these formulas are exactly (3.16)-(3.17).
  *
  * Tangential: vector spring (Cundall & Strack 1979; Silbert et al. PRE 2001),
- * digest §1.3 [I]: the history delta_t is rotated back onto the current
+ * as Izard 2014 (2.5) leaves open: the history delta_t is rotated back onto the current
  * tangent plane keeping its length, incremented by u_t dt (u_t the tangential
- * part of the relative surface velocity, rotation included, erratum 3), then
+ * part of the relative surface velocity, rotation included, which the printed (3.15) omits), then
  * F_t = -k_t delta_t with k_t = kt_over_kn k_n; when |F_t| > mu |F_n| the
  * force is capped at mu |F_n| and delta_t rescaled to -F_t/k_t (slip). No
  * tangential dashpot (Izard §1.3).
  *
- * Hertz-Mindlin row (not a thesis law; digest Djouwe §1.4 [R]): F_n =
+ * Hertz-Mindlin row (not a thesis law; Djouwe Meffeja 2012 §2.4.3): F_n =
  * k_n delta (delta/delta_ref)^(1/2) - gamma_n (delta/delta_ref)^(1/4) v_n with
  * the same k_n and delta_ref = the overlap that the mean pair reaches at the
  * free-fall speed sqrt(gD) under the linear law, so the two laws coincide there;

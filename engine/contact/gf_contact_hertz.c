@@ -1,6 +1,6 @@
 /*
  * Hertz-Mindlin normal/tangential law (not used by the thesis, which is
- * linear throughout; provided for comparison, digest Djouwe §1.4 [R]).
+ * linear throughout; provided for comparison, as Djouwe Meffeja 2012 §2.4.3 discusses).
  * With s = sqrt(delta/delta_ref):
  *   F_n = k_n s delta - gamma_n sqrt(s) v_n,   k_t(delta) = kt_over_kn k_n s,
  * i.e. the Hertz force (4/3) E* sqrt(R*) delta^(3/2) written with the linear

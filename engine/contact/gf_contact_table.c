@@ -1,8 +1,8 @@
 /*
- * The contact-law registry (STYLE.md §8): one row per law, selected by
+ * The contact-law registry (docs/architecture.md): one row per law, selected by
  * spec.contact.law. A new law is one kernel file and one row here.
  * Also: derivation of the law parameters from the run spec, and the closed
- * form of the clipped linear law used by the tests (digest §1.2 [D]).
+ * form of the clipped linear law used by the tests (Schäfer, Dippel & Wolf 1996).
  */
 #include "contact/gf_contact.h"
 

@@ -2,7 +2,7 @@
  * Tangential sub-model shared by the normal laws: a vector spring on the
  * accumulated tangential displacement delta_t with a Coulomb cap
  * (Cundall & Strack, Geotechnique 1979; Silbert et al., PRE 64, 2001;
- * Izard 2014 (2.5), (3.14)-(3.15) with rotation included, digest erratum 3).
+ * Izard 2014 (2.5), (3.14)-(3.15) with rotation included, which the printed (3.15) omits).
  *
  * Per step, with n the current unit normal and u_t the tangential part of
  * the relative surface velocity:

@@ -1,7 +1,7 @@
 /*
  * Normal lubrication between two grains (or a grain and a wall) closer than
  * the cut-off: Brenner (1961) with an effective roughness eta_e (Izard 2014
- * §2.3.2, digest §4.2),
+ * §2.3.2, (2.36), (3.18)),
  *     F = -c v_n n,   c = 6 pi eta_f R_eff^2 / (gap + eta_e),
  * R_eff = R_i R_j / (R_i + R_j) (R_i for a wall), gap clamped at 0 in overlap.
  *

@@ -1,7 +1,7 @@
 /*
  * Dimensionless groups and reference time scales, computed in one place.
  *
- * Definitions (Izard 2014, §4.1.1, §4.1.3, §5.3; digest ../shared/spec §6.1–6.2, §7.4):
+ * Definitions (Izard 2014, §4.1.1, §4.1.3, §5.3):
  *   St   = sqrt(rho_p drho g_eff D) D / (18 sqrt(2) eta_f)      Courrech du Pont et al., PRL 90 (2003)
  *   r    = sqrt(5 rho_p / (3 rho_f))                           (the seed's density ratio)
  *   Ar   = rho_f drho g D^3 / eta_f^2
@@ -16,7 +16,7 @@
  * (slope_sin = 1). With no fluid (rho_f = eta_f = 0) St, r and Ar are +inf and
  * T_v, T_i, T_visq are 0: the free-fall limit.
  *
- * The inverse map, used by campaigns at fixed D, rho_p, g, theta (digest §6.1 [D]):
+ * The inverse map, used by campaigns at fixed D, rho_p, g, theta (Izard 2014 §4.1.1):
  *   rho_f = 5 rho_p / (3 r^2),  eta_f = sqrt(rho_p drho g_eff D) D / (18 sqrt(2) St).
  * It needs r > sqrt(5/3) (grains denser than the fluid).
  */

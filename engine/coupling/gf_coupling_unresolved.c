@@ -29,7 +29,8 @@
  * Desjardins 2013). When glued grains exist (a rough bed carries the weight,
  * e.g. an avalanche on a periodic incline) G = 0: the fluid then stays at rest
  * far from the grains and each grain keeps the full buoyancy -rho V g, which
- * is the "physical tank" form of spec §6.3/§9.9, not the seed's (4.6).
+ * is the "physical tank" form, not Izard 2014 (4.6), which may drop the
+ * downslope buoyancy.
  *
  * Drag closures: gf_drag.h. Two choices made here:
  *  1. The closure's phi excludes the grain's own kernel-smoothed volume: a lone
@@ -55,7 +56,7 @@
  *     at finite kernel Reynolds number rho W sigma/eta by the Oseen factor of
  *     oseen_factor_exact (the disturbance is swept downstream).
  *
- * Time stepping (Izard 2014 §2.3.1 sub-cycling, spec §4.1): per fluid step
+ * Time stepping (Izard 2014 §2.3.1 sub-cycling): per fluid step
  * the grains are frozen, eps^{n+1} and K_i are built from them, the fluid
  * advances with the drag implicit (gf_project.c), then the fluid velocity at
  * each grain and grad p' are held for the M DEM substeps. The drag in
@@ -139,7 +140,7 @@ static const gf_var_info field_vars[FLD_N] = {
  * R = rho W sigma / mu, Fourier variable s = k sigma, c = cos(k, W). The c
  * integral is 2a[(1 + a^2) atan(1/a) - a] with a = s/R (4/3 at R = 0: the
  * Stokes value 1/(6 pi^{3/2} mu sigma)). f(R) = u(R)/u(0) falls as ~1.3/R: at
- * the Re_p = 20 of spec §3.6 the kernel Reynolds number is ~50 and the Stokes
+ * the Re_p = 20 of Izard 2014 §2.2.3 the kernel Reynolds number is ~50 and the Stokes
  * correction would overestimate the drag by 30 %. Tabulated on a log grid.
  */
 static double oseen_factor_exact(double R)

@@ -3,7 +3,7 @@
  * dimensionless groups alone (a pure function, no state, no I/O).
  *
  * Physics. The grain-scale time of a flow is the slowest of three (Izard
- * 2014 §4.1.3, digest §6.2; gf_groups.h):
+ * 2014 §4.1.3, (4.1), (4.12); gf_groups.h):
  *     T_v  = 18 eta_f / (drho g D)            viscous
  *     T_i  = sqrt(rho_f D / (2 drho g))       inertial
  *     T_ff = sqrt(2 rho_p D / (drho g))       free fall
@@ -12,7 +12,7 @@
  * The fluid can be dropped only when free fall dominates BOTH other times by
  * a wide margin and buoyancy (rho_f / rho_p = 5 / (3 r^2)) is negligible.
  *
- * Published boundaries (digest §6.8; Courrech du Pont et al., PRL 90, 2003):
+ * Published boundaries (Izard 2014 §4.1.4.2; Courrech du Pont et al., PRL 90, 2003):
  *   viscous | free fall: St ≈ 1 for r >= 4 (Izard 2014 §4.1.4.2, sharp),
  *                        St_c ≈ 10 (Courrech du Pont et al. 2003);
  *   inertial | free fall: r_c ≈ 4, "continuous, without a sharp threshold".

@@ -13,7 +13,7 @@
  * with the margin spec.fluid.cfl). Its numerical viscosity |u| h / 2 is
  * below the physical one wherever the cell Reynolds number |u| h / nu < 2,
  * which holds in the viscous and Stokes regimes this tier targets (collapse
- * Re_p < 2.5, spec §7.2); at Re_p ~ 20 with h ~ 2.5 D it is not, and the
+ * Re_p < 2.5, Izard 2014 §5.2); at Re_p ~ 20 with h ~ 2.5 D it is not, and the
  * sphere-scale flow is then over-damped (see docs/validation.md).
  */
 #include <string.h>

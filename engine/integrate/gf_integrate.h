@@ -7,7 +7,7 @@
  *     v(t+dt)   = v(t+dt/2) + (F(t+dt)/m + g) dt/2
  * Symplectic and second order for conservative forces (an elastic, frictionless
  * gas conserves energy to O(dt^2) without drift). Velocity-dependent forces
- * (digest Djouwe §1.8 [R] asks which velocity is used):
+ * (Djouwe Meffeja 2012 §2.4.5 does not say which velocity is used):
  *   - the normal dashpot and the lubrication force use the PREDICTED velocity
  *     v*(t+dt) = v(t+dt/2) + (F(t)/m + g) dt/2, an O(dt^2) estimate of
  *     v(t+dt) computed in the drift from the forces of the previous step.

@@ -461,7 +461,7 @@ static void prep_forces(prep *s)
         }
 }
 
-/* Symplectic Euler (digest §1.6); returns the largest displacement since the last rebuild. */
+/* Symplectic Euler (Izard 2014 (2.7), §2.1.2.2); returns the largest displacement since the last rebuild. */
 static double prep_integrate(prep *s)
 {
     double max_d2 = 0.0;

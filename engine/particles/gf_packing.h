@@ -1,6 +1,6 @@
 /*
  * gf_packing: preparation of a granular column or bed at a requested
- * packing fraction Phi_i (Izard 2014 §5.2, §5.5; digest §7.3).
+ * packing fraction Phi_i (Izard 2014 §5.2, §5.5).
  *
  * Protocol (deposition with a tuned preparation friction):
  *   1. Grains (radii from gf_psd) are placed on a jittered loose lattice
@@ -8,7 +8,7 @@
  *      for a deposit taller than the target height.
  *   2. They settle under gravity through a linear drag F = -m u / tau_prep
  *      (terminal speed g tau_prep = 2 sqrt(gD)), which plays the part of the
- *      viscous fluid the loose columns of the thesis settle in (§7.3) and keeps
+ *      viscous fluid the loose columns of the thesis settle in (Izard 2014 §5.2) and keeps
  *      impacts gentle, with a preparation inter-grain friction mu_prep, a low
  *      restitution 0.3 and rotations blocked (infinite rolling resistance).
  *      Frictionless grains pour dense (Phi = 0.637, random close packing);
@@ -47,7 +47,7 @@
  * phi_initial_local of the run's metadata):
  *   phi_global = sum_i V_i / (footprint x H)       (Rondon et al. 2011 estimate)
  *   phi_local  = sampled solid fraction of an interior control box, at
- *                margin m from the walls, the base and the top (§7.3: the
+ *                margin m from the walls, the base and the top (Izard 2014 §5.2: the
  *                thesis averages alpha over such a volume).
  *
  * Accuracy and cost (tests/scenes/test_packing.c, 16D x 8D x 3D column,

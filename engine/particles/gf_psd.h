@@ -4,8 +4,8 @@
  * The seeds give only the relative spread p of the radius about the mean R
  * (10 % in the Janssen silo, the dry chute, the dry collapse and the
  * avalanches; 5 % in the immersed collapse: Izard 2014 §2.1.3, §4.1.2.2,
- * §5.2) and not the shape (digest §1.9, erratum 17). The one shape
- * implemented is the digest's recommendation [I]: R_i uniform in
+ * §5.2) and not the shape, which the thesis leaves unspecified. The one shape
+ * implemented is the simplest: R_i uniform in
  * [R(1-p), R(1+p)]. Its purpose is only to prevent crystallisation; 10 % is
  * enough for that and small enough to avoid segregation (Izard §4.1.2.2).
  *

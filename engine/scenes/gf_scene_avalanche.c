@@ -5,16 +5,16 @@
  * the regimes).
  *
  * Axes: x downslope, y normal to the bed, z spanwise. The domain is
- * L x H x W (5D x 20D x 5D in the thesis, §6.3 of the digest), periodic in
- * x and z, with glued grains centred on y = 0 ("half-grains", §1.5; placed
+ * L x H x W (5D x 20D x 5D in Izard 2014 §4.1.2.2), periodic in
+ * x and z, with glued grains centred on y = 0 ("half-grains", Izard 2014 §4.1.2.2; placed
  * at random by gf_packing_rough_base, so the base roughness does not depend
  * on L and W) over a plane floor, and a plane lid at y = H (the fluid's free-slip top). The bed
  * (height h_bed, 7-8 D in the thesis) is prepared at theta = 0 by gf_packing
  * at the requested packing fraction, re-equilibrated with the run's
  * contacts, and at t = 0 start() tilts gravity to
  *     g = |g| (sin theta, -cos theta, 0)                       (§4.1.2.2).
- * The immersed variant of the gravity on the fluid ((4.5)-(4.6), digest §6.3
- * caution) is the coupling's business, not the scene's.
+ * The immersed variant of the gravity on the fluid (Izard 2014 (4.5)-(4.6),
+ * which may drop the downslope buoyancy) is the coupling's business, not the scene's.
  *
  * Diagnostics (docs/output.md, thesis (4.7)-(4.11)):
  *   grain_flow_rate   Q_g = (1/L) sum_i V_i u_i (m3/s), the discrete form of

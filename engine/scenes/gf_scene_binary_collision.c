@@ -2,8 +2,7 @@
  * Binary collision: two equal grains (or one grain and a plane wall) meet
  * with a chosen normal impact speed V and tangential ratio
  * Psi1 = (u_rel . t)/|u_rel . n| of the contact-point relative velocity
- * (Foerster, Louge, Chang & Allia, Phys. Fluids 1994; Izard 2014 §2.1.3.1,
- * digest §2.1). No gravity unless asked: the contact alone sets the outcome.
+ * (Foerster, Louge, Chang & Allia, Phys. Fluids 1994; Izard 2014 §2.1.3.1). No gravity unless asked: the contact alone sets the outcome.
  * Geometry: normal along x, tangent along y. Pair: grain 0 at
  * x = -(R + gap/2) moving +x, grain 1 mirrored (centre-of-mass frame, so
  * u_rel = (V, Psi1 V, 0) at approach). Wall: plane x = 0 (normal +x), one grain

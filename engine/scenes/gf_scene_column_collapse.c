@@ -7,7 +7,7 @@
  * transverse and periodic with width W (2-5 D in the thesis, Table 5.1).
  * A column of length R0 and height H0 = a R0 rests against the back wall
  * x = 0 and is held by a gate wall at x = R0 that start() removes at t = 0
- * (Izard §5.2: the column collapses towards +x only; digest §7.3 [D]).
+ * (Izard 2014 §5.2: the column collapses towards +x only).
  * The floor is a plane at y = 0, made rough (default) by glued grains
  * centred on it at random (gf_packing_rough_base; Izard §5.2 "fixed grains
  * on the floor for roughness"). The

@@ -42,8 +42,8 @@
  * row 6, measured), hence the tuned filling by default.
  * done(): mean kinetic energy per mobile grain below 1e-6 m g D (static).
  *
- * Janssen law with a free top (thesis (2.11)-(2.15), erratum 6: P_m in the
- * exponent): sigma(d) = rho_e g lambda (1 - exp(-d/lambda)) with
+ * Janssen law with a free top (Izard 2014 (2.11)-(2.15), where P is printed in the
+ * exponent but P_m is meant): sigma(d) = rho_e g lambda (1 - exp(-d/lambda)) with
  * lambda = S^2 / (f_p K 4 S) = S / (4 f_p K), d the depth below the top.
  * The vertical stress profile is gf_measure_silo_vertical_stress (weight of
  * the grains above a plane minus what the glued walls carry).

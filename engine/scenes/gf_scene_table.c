@@ -1,5 +1,5 @@
 /*
- * The scene registry: one row per scene (STYLE.md §9). A new scene is one
+ * The scene registry: one row per scene (docs/architecture.md). A new scene is one
  * file gf_scene_<name>.c defining `const gf_scene_desc gf_scene_<name>` and
  * TWO lines here: its extern declaration and its row, kept in the same order.
  */

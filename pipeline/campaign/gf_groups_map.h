@@ -2,7 +2,7 @@
  * From the dimensionless groups a campaign asks for to the physical values a
  * run needs, and back (what a run realises).
  *
- * The map (Izard 2014 §4.1.1, digest §6.1 [D]; Rondon et al. 2011 for a, Phi_i):
+ * The map (Izard 2014 §4.1.1; Rondon et al. 2011 for a, Phi_i):
  *
  *   D, rho_p          fixed by grains:
  *   r  -> rho_f     = 5 rho_p / (3 r^2)                         needs r > sqrt(5/3)

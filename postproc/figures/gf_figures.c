@@ -2,7 +2,7 @@
  * Campaign figures drawn with the SVG layer (gf_svg.h); see gf_figures.h.
  *
  * Regime diagram. The boundaries come from two sources that disagree by a
- * factor of ten in St (Izard 2014 §4.1.4.2, digest §6.8), so both are drawn:
+ * factor of ten in St (Izard 2014 §4.1.4.2), so both are drawn:
  *   Courrech du Pont et al., PRL 90 044301 (2003), single-grain experiments:
  *     St_c = 10 (viscous | free fall, for r >= 4), Re*_c = St/r = 2.5, i.e.
  *     r = St/2.5 (viscous | inertial, for r < 4), r_c = 4 (inertial | free

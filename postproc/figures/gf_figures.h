@@ -6,8 +6,8 @@
  * A figure is written to "<path>.tmp" and renamed on success, so a failed
  * post-processing never leaves a truncated SVG that looks complete.
  *
- * The reference lines drawn are the published ones (shared reference
- * published-laws.md and the Izard 2014 digest §6.8):
+ * The reference lines drawn are the published ones (Izard 2014 §4.1.4.2
+ * and the papers below):
  *   regime diagram (St, r), log-log:
  *     Courrech du Pont, Gondret, Perrin & Rabaud, PRL 90 (2003): St_c ≈ 10
  *       (viscous | free fall), r_c ≈ 4 (inertial | free fall),

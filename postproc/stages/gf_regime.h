@@ -1,7 +1,7 @@
 /*
  * Flow-regime label from a flow time scale T compared with the viscous,
  * inertial and free-fall times T_v, T_i, T_ff of gf_groups.h (Izard 2014
- * §4.1.4.2; digest §6.8, operational rule):
+ * §4.1.4.2, made operational):
  *   - the label is the scale T_x minimising d_x = |log10(T / T_x)|;
  *   - "transitional" if the best d_x > log10(2) = 0.301 decade (T is more
  *     than a factor 2 from every scale), or if the two best differ by less
@@ -16,8 +16,8 @@
  * The thesis classified by eye from the slopes of T/T_x against St. Its
  * points read as "≈ 1" sit up to a factor 2 from their scale (Table 4.2:
  * inertial points at T/T_i = 1.3-1.9, viscous at T/T_v = 1.0-1.95), and the
- * digest's validation bands for the map are a factor 2 as well (§8 rows 27
- * and 29), so the band is a factor 2. The digest's first suggestion, 0.2
+ * thesis' own scatter about its scales is a factor 2 as well
+ * (Fig. 4.7-4.10), so the band is a factor 2. A narrower band, 0.2
  * decade (a factor 1.58), labels 10 of those 19 unambiguous points
  * transitional (tests/post/test_post_regime.c prints both).
  */

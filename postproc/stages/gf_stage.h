@@ -1,5 +1,5 @@
 /*
- * Post-processing stages: one uniform signature, one table (STYLE §10).
+ * Post-processing stages: one uniform signature, one table (docs/architecture.md).
  *
  * A stage reads the netCDF files of one run directory (through gf_ncread.h,
  * names from docs/output.md only), writes its scalar results into the run's

@@ -1,6 +1,6 @@
 /*
  * Stage deposit: final heap of a column collapse and the front history
- * (Izard 2014 §5.3–5.5; digest §7.4), from the grains of particles.nc.
+ * (Izard 2014 §5.3–5.5), from the grains of particles.nc.
  *
  * Final frame -> gf_deposit_envelope (method in gf_deposit.h): R_inf from
  * the back wall, H_inf, (R_inf − R0)/R0 and H_inf/R0 with R0 the

@@ -1,6 +1,6 @@
 /*
  * Stage energy: horizontal kinetic energy per grain, E_cx(t) = (1/N_g)
- * Σ ½ m_i u_i² (Izard 2014 §5.3; digest §7.4, erratum 15: "per grain"),
+ * Σ ½ m_i u_i² (Izard 2014 §5.3, printed as a sum but described "per grain"),
  * written by the engine as diagnostics ecx_per_grain, scaled by m g D with m
  * the mean mobile-grain mass (ρ_p × mean of π d³/6 over the non-glued grains
  * of particles.nc; ρ_p π D³/6 from the attributes if particles.nc is absent).

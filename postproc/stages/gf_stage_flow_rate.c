@@ -1,6 +1,6 @@
 /*
  * Stage flow_rate: grain and fluid flow rates of an avalanche (Izard 2014
- * §4.1.3, eq. 4.11; digest §6.4): Q_g(t) = (1/L) ∫ α U dV and
+ * §4.1.3, eq. 4.11): Q_g(t) = (1/L) ∫ α U dV and
  * Q_f(t) = (1/L) ∫ (1 − α) U dV, written by the engine as diagnostics.nc
  * grain_flow_rate and fluid_flow_rate (m3 s-1).
  *

@@ -1,6 +1,6 @@
 /*
  * Stage pore_pressure: basal excess pore pressure P_b(t) (pressure minus
- * hydrostatic) at the gauges of probes.nc (Izard 2014 §5.5; digest §7.4–7.5;
+ * hydrostatic) at the gauges of probes.nc (Izard 2014 §5.3–5.5;
  * Rondon, Pouliquen & Aussillous 2011).
  *
  * Per station: the minimum and maximum with their times; the dominant

@@ -1,10 +1,10 @@
 /*
  * Stage profiles: x–z averaged grain (and fluid) profiles of an avalanche
- * over the steady window (Izard 2014 eqs. 4.7–4.8; digest §6.4).
+ * over the steady window (Izard 2014 eqs. 4.7–4.8).
  *
  * Slabs of thickness D (grain_diameter_m) from the plane y = 0, not
  * overlapping. Grains are counted whole in the slab holding their centre
- * (the coarse-graining of §1.10 would spread them; at slab width D the
+ * (the coarse-graining of Izard 2014 (2.16)-(2.20) would spread them; at slab width D the
  * difference is a smoothing over one D):
  *   ⟨U⟩_g(y_j) = Σ V_i u_i / Σ V_i      (solid-volume weighted, eq. 4.7)
  *   φ_g(y_j)   = Σ V_i / (L W D)        per frame, then averaged in time
@@ -16,7 +16,7 @@
  * full of grains; error of order D/L).
  * Fluid: ⟨U⟩_f(y_j) = Σ ε u_f / Σ ε over the cells of fields.nc
  * (fluid_fraction ε = 1 − α, u_fluid) in the same slabs and frames (eq. 4.7).
- * Mean particle Stokes number (Izard eq. 4.17; digest §6.1):
+ * Mean particle Stokes number (Izard 2014 eq. 4.17):
  *   St̄ = (ρ_p / (9 η_f)) (1/N_g) Σ_i |u_i| D_i over the mobile grains,
  * averaged over the same frames, and R̄e* = St̄ / r (§4.2: St̄_c ≈ 40,
  * R̄e*_c ≈ 10). NaN for a dry run.

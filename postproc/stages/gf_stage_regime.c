@@ -4,7 +4,7 @@
  * Reference scales T_v, T_i, T_ff, T_visq, T0 come from gf_groups_compute on
  * the run's attributes (never recomputed here). The flow time T and the rule:
  *
- * Avalanche (Izard 2014 §4.1.4.2, eq. 4.12; digest §6.2, §6.8):
+ * Avalanche (Izard 2014 §4.1.4.2, eq. 4.1, 4.12):
  *   T = V_g / Q̄_g, with Q̄_g the steady mean of diagnostics grain_flow_rate
  *   (same MSER-5 window as stage flow_rate) and V_g the solid volume of the
  *   mobile grains: the global attribute grain_volume_m3 if the engine writes
@@ -21,7 +21,7 @@
  *
  * Column collapse: Bougouin & Lacaze, PRF 3, 064305 (2018) classify immersed
  *   collapses from the collapse duration in units of T_ff, T_v and T_i
- *   (secondary source, published-laws.md: verify). Here the duration is the
+ *   (secondary source: verify). Here the duration is the
  *   time to rest t_rest (front within D/2 of its final position, from
  *   diagnostics front_position), and the per-diameter scales of gf_groups
  *   are carried over the column height H0: travel at the limit speed for the

@@ -1,5 +1,5 @@
 /*
- * The table of post-processing stages (STYLE §10): a new stage is one file
+ * The table of post-processing stages (docs/architecture.md): a new stage is one file
  * and one row here. Order matters only for the column order of the summary.
  */
 #include "stages/gf_stage.h"

@@ -1,6 +1,6 @@
 /*
  * Oblique collision of two equal acetate grains (Foerster et al., Phys.
- * Fluids 6, 1994; Izard 2014 §2.1.3.1; digest §2.1): mu_c = 0.25,
+ * Fluids 6, 1994; Izard 2014 §2.1.3.1): mu_c = 0.25,
  * eps_max = 0.87, k_t = 0.2 k_n, R = 1.5 mm, rho_p = 1319 kg/m3.
  * Psi1 = (u_rel . t)/|u_rel . n| before impact, Psi2 = (u_rel' . t)/|u_rel . n|
  * after, with u_rel the contact-point relative velocity (rotation included).
@@ -8,7 +8,7 @@
  *  - sliding branch (Psi1 >= 2.5): Psi2 = Psi1 - (7/2) mu_c (1 + eps), the
  *    rigid-body impulse result with I = (2/5) m R^2; with t along the initial
  *    slip the offset is positive Psi1 - Psi2 = 1.64 (eps = eps_max; 1.639 with
- *    the clipped eps = 0.873). Tolerance 0.1 (spec §8 row 3).
+ *    the clipped eps = 0.873). Tolerance 0.1 in Psi2.
  *  - sticking branch (Psi1 = 0.3, 0.6): the tangential spring reverses the
  *    slip, Psi2 < 0 (Foerster's partial-slip branch below the knee ~1.5).
  *  - the knee: the slope dPsi2/dPsi1 is ~1 on the sliding branch.
@@ -64,7 +64,7 @@ int main(void)
         p2[k] = psi2_of(sliding[k], &p1);
         printf("Psi1 %.2f -> Psi2 %.4f, offset Psi1 - Psi2 = %.4f (rigid-body %.4f)\n", p1, p2[k], p1 - p2[k],
                offset_rigid);
-        GF_CHECK_ABS(p1 - p2[k], offset_rigid, 0.1); /* spec §8 row 3 */
+        GF_CHECK_ABS(p1 - p2[k], offset_rigid, 0.1); /* 0.1 in Psi2 */
     }
     double slope = (p2[3] - p2[0]) / (sliding[3] - sliding[0]);
     printf("sliding-branch slope %.4f\n", slope);

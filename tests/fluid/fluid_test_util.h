@@ -1,6 +1,6 @@
 /*
  * A minimal grain integrator for the coupling tests: the sub-cycled loop of
- * gf_sim (spec §4.1) without contacts — per fluid step, M substeps of
+ * gf_sim (Izard 2014 §2.3.1) without contacts — per fluid step, M substeps of
  * symplectic Euler with gravity + held fluid force. Grains flagged
  * GF_P_GLUED, or with fixed = 1, keep their velocity.
  */

@@ -55,7 +55,7 @@ int main(void)
 {
     gf_ctx ctx = {0};
     coupled_loop L;
-    /* a sphere settling at Re ~ 20 (spec §3.6): fast enough for the CFL to bind */
+    /* a sphere settling at Re ~ 20 (Izard 2014 §2.2.3): fast enough for the CFL to bind */
     double D = 1e-3, rf = 1000, rp = 4000, mu = sqrt(rf * 3000 * 9.81 * 1e-9 / 800.0);
     make(&L, &ctx, D, rp, rf, mu, 16);
     double dt0 = gf_coupling_dt_max_s(L.c, L.p);

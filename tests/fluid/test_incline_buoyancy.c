@@ -1,5 +1,5 @@
 /*
- * Buoyancy on a periodic incline (spec §6.3 and §9.9: the seed's modified
+ * Buoyancy on a periodic incline (Izard 2014 (4.5)-(4.6): the seed's modified
  * gravity (4.6) may drop the downslope buoyancy). Set-up as an avalanche:
  * x downslope and periodic, y normal to the bed (no-slip floor with glued
  * grains, free-slip top), z periodic, gravity tilted by theta = 25 deg. The

@@ -7,7 +7,7 @@
  *          for the periodic images of the box (Hasimoto, JFM 5, 1959, simple
  *          cubic array): U/U_St = 1 - 1.7601 c^{1/3} + c, c = V_p/V_box, a
  *          1.4 % effect at 100 D spacing. Tolerance 3 % (issue #4).
- *  sn20:   Ar = 800, rho_p/rho_f = 4 (spec §3.6, Izard's validation case),
+ *  sn20:   Ar = 800, rho_p/rho_f = 4 (Izard 2014 §2.2.3, its validation case),
  *          Re_t = 20.3; Schiller–Naumann reference, tolerance 3 % (issue #4),
  *          box 24 x 24 x 160 cells so the sphere never meets its own wake.
  * Measured: the slip v - <u_f> once steady. The self-induced-velocity

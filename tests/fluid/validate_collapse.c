@@ -1,6 +1,6 @@
 /*
  * Immersed column collapse, dense vs loose (Rondon, Pouliquen & Aussillous,
- * PoF 23, 2011; Izard 2014 ch. 5, spec §7 and §8 rows 35-42), through the full
+ * PoF 23, 2011; Izard 2014 ch. 5), through the full
  * step loop with the unresolved tier. Run by tests/fluid/validate_fluid.sh,
  * which writes docs/validation.md; mode "check" is the ctest test
  * collapse_dense_loose (labels slow, open).
@@ -55,7 +55,7 @@
  * perturbation of that size moves the run-out (granular collapses amplify it).
  * "check" (PHI is the dense value, the loose one is 0.55): runs both (their
  * series one after the other, then the two summaries "dense" and "loose") and
- * asserts the issue's criteria with the spec §8 tolerances (rows 39-41):
+ * asserts the issue's criteria with the tolerances of docs/accuracy.md:
  * P_b at 13/16 R0 negative for dense and positive for loose (the dominant
  * peak of the 500 T_visq running mean), the dense column lags the loose one
  * by 1000 T_visq +-50 %, loose run-out +5 to +15 %, dense deposit a
@@ -204,7 +204,7 @@ static double mean_mobile_mass(const gf_particles *p, size_t *n_mob)
     return m / (double)*n_mob;
 }
 
-/* E_cx per grain (spec §7.4) and the largest grain Reynolds number |v| D rho_f / eta_f. */
+/* E_cx per grain (Izard 2014 §5.3) and the largest grain Reynolds number |v| D rho_f / eta_f. */
 static void kinetics(const gf_particles *p, size_t n_mob, double *ecx, double *re)
 {
     double e = 0.0, v2 = 0.0;
@@ -219,7 +219,7 @@ static void kinetics(const gf_particles *p, size_t n_mob, double *ecx, double *r
 
 /*
  * Basal excess pressure at x, averaged over the transverse cell layers (the thesis' transverse-averaged
- * field, spec §7.4): in a wide slab one layer would read one z position's fluctuation. NAN when dry.
+ * field, Izard 2014 §5.3): in a wide slab one layer would read one z position's fluctuation. NAN when dry.
  */
 static double basal_pressure(gf_sim *sim, double x)
 {
@@ -324,7 +324,7 @@ static void print_series_line(double t, double front, const double pb[N_GAUGE], 
 }
 
 /*
- * Mode "sediment", the thesis' loose protocol (spec §7.3: the grains settle inside the viscous fluid):
+ * Mode "sediment", the thesis' loose protocol (Izard 2014 §5.2: the grains settle inside the viscous fluid):
  * the prepared column, gate closed, is stretched vertically by SEDIMENT_STRETCH about the floor (solid
  * fraction ~0.37, no contact left), every grain at rest, and sediments through the fluid for
  * sediment_T_visq(); the gate is then removed. The column's height is what the sedimentation leaves
@@ -528,7 +528,7 @@ static int verdict(const char *what, int ok, const char *fmt, double a, double b
     return ok ? 0 : 1;
 }
 
-/* The criteria with the spec §8 tolerances (rows 39-41). */
+/* The criteria with the tolerances of docs/accuracy.md. */
 static int check_pair(const collapse_run *d, const collapse_run *l)
 {
     int fails = 0;

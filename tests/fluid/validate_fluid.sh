@@ -136,7 +136,7 @@ TXT
 block stability
 block mass
 echo
-echo 'Avalanche gravity (spec §6.3, §9.9): the form kept is the physical tank (fluid body force unmodified,'
+echo 'Avalanche gravity (Izard 2014 (4.5)-(4.6)): the form kept is the physical tank (fluid body force unmodified,'
 echo 'hydrostatic p_h = rho_f g.x, full buoyancy on every grain); test_incline_buoyancy:'
 block incline
 cat <<'TXT'
@@ -175,11 +175,11 @@ half-grains of the rough base).
 
 Command: \`validate_collapse $DENSE 20000 0 check column_length_over_D=48 seeds=5\` (the ctest
 test collapse_dense_loose, labels slow and open): five seeds (packing and rough base) of each column;
-the verdicts use the spec §8 tolerances (rows 39-41) on the seed ensemble (mean start, half
+the verdicts use the validation tolerances of docs/accuracy.md on the seed ensemble (mean start, half
 time, run-out and back height; the sign from the 500 T_visq running mean of the seeds' mean
 P_b at 13/16 R0). Seed 1 in the table, the ensemble and every seed below it.
 
-| quantity | dense (requested $DENSE), seed 1 | loose (requested $LOOSE), seed 1 | Izard 2014 (spec §8 rows 35-41) | Rondon et al. 2011 |
+| quantity | dense (requested $DENSE), seed 1 | loose (requested $LOOSE), seed 1 | Izard 2014 (§5.3-5.5) | Rondon et al. 2011 |
 | --- | --- | --- | --- | --- |
 TXT
 d=$(grep 'SUMMARY \[dense\]' "$TMP/collapse.txt" | head -1 || true)
@@ -204,7 +204,7 @@ for key in "phi_i" "start" "R_inf" "H_inf" "back height" "flank" "deposit area" 
     echo "| $key | $(field "$d" "$key") | $(field "$l" "$key") | $ref | $ron |"
 done
 echo
-echo 'Seed ensemble and verdicts (spec §8 tolerances):'
+echo 'Seed ensemble and verdicts (validation tolerances):'
 echo '```'
 grep '^ENSEMBLE\|^PASS\|^FAIL\|^NOTE\|criteria failed\|exit status' "$TMP/collapse.txt" || true
 echo '```'

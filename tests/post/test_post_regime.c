@@ -8,15 +8,15 @@
  *      T_i  = sqrt(ρ_f D) / sqrt(2 Δρ g sinθ) = 2.23607 / 111.526     = 2.00501e-2 s
  *      T_ff = sqrt(2 ρ_p D / (Δρ g sinθ))   = sqrt(25 / 6218.82)      = 6.34039e-2 s
  *    Tolerance 1e-5 relative (printed digits).
- * 2. The classifier on the seed's Table 4.2 (digest §6.7–6.8), fed the seed's
+ * 2. The classifier on the seed's Table 4.2 (Izard 2014 §4.1.4.2), fed the seed's
  *    own (St, r, T): D = 5 mm, θ = 25°, ρ_p/ρ from the table (r recomputed as
- *    sqrt(5 ρ_p / 3ρ), erratum 10), T from T (ms). Ranges are paired as
+ *    sqrt(5 ρ_p / 3ρ): the table prints r = 11.2 for ρ_p/ρ = 100, where 12.91 is meant), T from T (ms). Ranges are paired as
  *    (St_min, T_max) and (St_max, T_min): slower flows at lower St.
  *    Expected labels from the seed's boundaries: r >= 4: viscous for St < 1,
  *    free fall above; r < 4: viscous for St < r/4 (the line r = 4 St),
  *    inertial above. Ambiguous (reported, not asserted):
  *      - St within a factor 2 of the viscous boundary (the validation band,
- *        digest §8 #29): ρ_p/ρ = 16, St = 0.7 and 0.75;
+ *        factor 2 of Fig. 4.7-4.10): ρ_p/ρ = 16, St = 0.7 and 0.75;
  *      - 3.5 <= r <= 4.5 above the viscous boundary (inertial ↔ free fall is
  *        continuous, r_c ≈ 4 indicative): ρ_p/ρ = 7.5 St 79, 10 St 107;
  *      - pairing impossible: ρ_p/ρ = 2.7, St = 0.03 with T = 130 ms gives
@@ -29,7 +29,7 @@
  *    genuinely between scales: ρ_p/ρ = 7, St = 23 (T/T_i = 2.29 and
  *    T/T_ff = 0.434, equidistant in decades) and ρ_p/ρ = 10, St = 0.4
  *    (T_ff/T_v = 2 St = 0.8: the two scales themselves lie 0.1 decade
- *    apart). The count with the digest's first threshold, 0.2 decade, is
+ *    apart). The count with a narrower threshold, 0.2 decade, is
  *    printed beside it.
  * 3. Stage regime on a synthetic avalanche: N grains, constant Q_g chosen so
  *    that T = V_g/Q_g = T_i exactly (plus 1 % noise): label inertial,

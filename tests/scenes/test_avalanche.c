@@ -1,12 +1,12 @@
 /*
  * Dry granular flow on a rough periodic incline: mu(I) and the Bagnold
- * profile (Izard 2014 §2.1.3.3; digest §2.3, §8 rows 7-8).
+ * profile (Izard 2014 §2.1.3.3, (2.21)-(2.23)).
  *
  * Grains as the thesis' chute: R = 5 mm +- 10 %, rho_p = 2500, mu_c = 0.25,
  * eps = 0.5, on glued half-grains, prepared at theta = 0 and tilted at t = 0.
  * Unsteady run as the seed's: a bed 34 D deep (16 000 grains settled on its
  * 0.1 x 0.4 m footprint at Phi ~ 0.6) and the thesis' dry-run contact
- * t_c = 1e-4 s = 3.1e-3 sqrt(D/g) (t_c is not stated for the chute, errata 17;
+ * t_c = 1e-4 s = 3.1e-3 sqrt(D/g) (t_c is not stated for the chute;
  * the collapse uses it), run for 76 sqrt(D/g), until the bulk I reaches the
  * thesis' 0.25. What moves the fitted mu2 (mu1 within 0.29-0.36 throughout):
  *   bed 12 D, t_c 0.01, I <= 0.25 reached at t ~ 13:   mu2 0.616 (seed 21),
@@ -23,7 +23,7 @@
  * at I_bulk = 0.233 against ~0.22 at 12 D) with the thesis' t_c (at 25 deg
  * I_bulk rises from ~0.22 at t_c = 0.01 to 0.257).
  *
- * Stresses as the seed defines them (digest §1.10, Izard (2.16)-(2.20)):
+ * Stresses as the seed defines them (Izard 2014 (2.16)-(2.20)):
  * the full tensor sigma_G = sigma^p + sigma^k (contact virial with the
  * branch vector shared among the slabs it crosses, plus the kinetic stress
  * about the slab mean velocity; gf_sim_stress_tensor_slabs) on slabs
@@ -51,7 +51,7 @@
  *             arrests a 12 D bed: below h_stop.)
  *   length    (slow) theta = 25 deg, L = 5 D and 10 D after 400 sqrt(D/g),
  *             averaged over 100: time-averaged Q_g agree within 5 % (Izard
- *             §4.1.2.2 domain tests, row 25 style).
+ *             §4.1.2.2 domain tests, Table 4.1).
  * GF_TEST_TC overrides t_c sqrt(g/D), GF_TEST_SEED the packing seed, GF_TEST_EPS the restitution;
  * GF_TEST_BED the steady bed depth / D, GF_TEST_ANGLE runs one steady angle;
  * GF_TEST_VERBOSE prints the transient, GF_TEST_DEBUG the stress components.

@@ -1,18 +1,18 @@
 /*
  * Dry granular column collapse in a quasi-2D periodic slab (Izard 2014
- * §2.1.3.3, Fig. 2.12-2.13; digest §2.4 and §8 row 9).
+ * §2.1.3.3, Fig. 2.12-2.13).
  *
  * Set-up as the thesis' 3-D dry runs: R = 5 mm +- 10 %, rho_p = 2500,
  * eps = 0.5, mu_c = 1.0 grain-grain and grain-wall (Staron & Hinch 2005),
  * transverse periodic width 3 D (the thesis uses 24 R = 12 D; the transverse
- * direction "has no effect", §2.4), column length R0 = 16 D on a rough base,
+ * direction "has no effect", Izard 2014 §2.1.3.3), column length R0 = 16 D on a rough base,
  * Phi_i = 0.60, the thesis' contact duration t_c = 1e-4 s (t_c sqrt(g/D) =
  * 3.1e-3). The thesis notes that softening k_n does not alter dry dynamics
- * (§1.2), but here it does: at t_c sqrt(g/D) = 0.02 the columns of a >= 2
+ * (Izard 2014 §3.1.2.2), but here it does: at t_c sqrt(g/D) = 0.02 the columns of a >= 2
  * run out 4-10 % farther (lambda2 2.65 over 8 packing seeds against 2.46;
  * docs/validation-dem.md), the tall columns' impact overlaps reaching ~0.1 D.
  *
- * Claims, against the published planar laws (reference/published-laws.md):
+ * Claims, against the published planar laws (Lube et al. 2005; Lajeunesse et al. 2005):
  *   (R_inf - R0)/R0 = lambda1 a for a below the crossover a0 ~ 2-3, with
  *   lambda1 in [1.2, 1.8] (Lube et al. 2005 / Lajeunesse et al. 2005), and
  *   lambda2 a^(2/3) above it with lambda2 in [1.9, 2.3]. Each fitted

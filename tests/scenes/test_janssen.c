@@ -1,5 +1,5 @@
 /*
- * Janssen silo (Izard 2014 §2.1.3.2; digest §2.2, §8 rows 4-6).
+ * Janssen silo (Izard 2014 §2.1.3.2, (2.11)-(2.15)).
  *
  * Seed: a 0.1 x 0.1 x 5 m box with walls of glued grains, R = 5 mm +- 10 %,
  * rho_p = 1319, mu_c = 0.25, eps = 0.3, C_tot = 0.59; measured f_p K = 0.30

@@ -1,13 +1,12 @@
 /*
- * Packing preparation to a requested Phi_i (Izard 2014 §5.2, §7.3 of the
- * digest): a 16D x 8D x 3D column (the immersed collapse's case A footprint,
+ * Packing preparation to a requested Phi_i (Izard 2014 §5.2, §5.5): a 16D x 8D x 3D column (the immersed collapse's case A footprint,
  * walls at x = 0 and x = 16D, z periodic) prepared at Phi_i = 0.55 (Rondon's
  * loose column), 0.58 (Izard's loose case F) and 0.60 (dense cases A-E).
  *
  * Claim: the interior solid fraction (sampled over the control box 1.5D
  * inside the walls, the floor and the top) is within +-0.005 of the request,
  * the accuracy the brief asks for and the size of the thesis' own spread
- * (0.60 +- 0.002 plus the 0.7 % control-volume sensitivity, §7.3).
+ * (0.60 +- 0.002 plus the 0.7 % control-volume sensitivity, Izard 2014 §5.5).
  * Also: the trimmed top lies within one grain of H, and the global estimate
  * (solid volume / (R0 H0 W)) is below the interior one, as the walls and the
  * free top loosen the boundary layers (Izard §5.5: 2.5 % lower).
@@ -21,7 +20,7 @@
 static void check_target(double phi_target, unsigned seed)
 {
     gf_ctx ctx = {0};
-    const double D = 7.6e-3; /* Izard §5.2 (erratum 12) */
+    const double D = 7.6e-3; /* Izard 2014 §5.2 (D, not R, is 7.6 mm: Ar ~ 30) */
     gf_packing_spec sp = {.lo_m = {0, 0, 0}, .hi_m = {16 * D, 8 * D, 3 * D}, .periodic = {0, 0, 1},
                           .walls_x = 1, .phi_target = phi_target, .psd = {D / 2, 0.05},
                           .density_kg_m3 = 2500, .gravity_m_s2 = 9.81, .seed = seed};

@@ -10,7 +10,7 @@
 # neighbour search, force, integration, fluid and coupling), the wall and CPU
 # time of the whole process (preparation included, from /usr/bin/time), and
 # the cost ratio against the seed's resolved run of case C (798 grains, D/10
-# immersed boundary: 20 000 CPU hours on 40 cores, digest §7.5 and §8 row 43).
+# immersed boundary: 20 000 CPU hours on 40 cores, Izard 2014 §5.5).
 #
 # OpenMP threads wait passively (OMP_WAIT_POLICY=passive unless set): with
 # the default active wait, a machine shared with one other busy process made

@@ -3,7 +3,7 @@
  *
  * A case is one validation scene with a reference value (closed form,
  * conservation law, or the finest affordable run) and a tolerance taken from
- * the validation table (digest izard-immersed-dem §8). A setting is one
+ * the published validations (docs/accuracy.md). A setting is one
  * choice of the accuracy knobs; measuring it runs the scene through gf_sim
  * (no output files) and returns the observable, its error against the
  * reference, and the CPU time of the simulation calls (gf_sim_create +

@@ -4,8 +4,8 @@
  *
  *  restitution      binary_collision, clipped linear law, eps_max = 0.5:
  *                   restitution against the closed form of the clipped
- *                   oscillator (digest §1.2 [D]: 0.550), tolerance 1 %
- *                   (digest §8 row 1). The dashpot switches on inside a step
+ *                   oscillator (Schäfer et al. 1996: 0.550), tolerance 1 %
+ *                   (Izard 2014 (3.16)). The dashpot switches on inside a step
  *                   at a random phase; the error quoted is the WORST over
  *                   n onset phases (4 quick, 8 full), what a user may get.
  *  contact_duration binary_collision, unclipped law (attraction allowed),
@@ -552,7 +552,7 @@ static gf_status measure_settling(gf_ctx *ctx, const bench_knobs *k, int full, b
 
 static const bench_case cases[] = {
     {"restitution", "restitution of a normal collision, clipped law, eps_max 0.5 (1)",
-     "closed form of the clipped oscillator, 0.550 (digest §1.2)", "worst |e/e_closed - 1| over onset phases (1)",
+     "closed form of the clipped oscillator, 0.550 (Schaefer et al. 1996)", "worst |e/e_closed - 1| over onset phases (1)",
      0.01, BENCH_KNOB_DT, 0, always, measure_restitution, NULL, NULL, 0, 0, NULL, NULL, 0},
     {"contact_duration", "overlap duration / t_c, unclipped law, eps 0.87 (1)", "t_c exactly (Izard (3.17))",
      "worst |T/t_c - 1| over onset phases (1)", 0.03, BENCH_KNOB_DT, 0, always, measure_duration, NULL, NULL, 0, 0, NULL, NULL, 0},

@@ -221,7 +221,7 @@ static gf_status write_nc(gf_ctx *ctx, const char *path, const bench_point *pts,
     NC(put_text(ncid, NC_GLOBAL, "source", source));
     NC(put_text(ncid, NC_GLOBAL, "institution", "grainflow simulation framework"));
     NC(put_text(ncid, NC_GLOBAL, "references",
-                "Izard 2014 (digest izard-immersed-dem §1.2, §8); tolerances from the validation table"));
+                "Izard 2014 (3.13)-(3.17); tolerances from docs/accuracy.md"));
     NC(put_text(ncid, NC_GLOBAL, "comment",
                 "cpu_time (the cost used for the fronts) and wall_time are the best of repeated runs of "
                 "gf_sim_create + gf_sim_advance, one thread; recommended = cheapest setting within the case tolerance"));
