@@ -20,13 +20,13 @@ static int key_text(const gf_packing_spec *sp, char *buf, size_t n)
 {
     size_t n_obs = sp->obstacles ? sp->obstacles->n_local : 0;
     return snprintf(buf, n,
-                    "grainflow %s (%s) packing protocol %d compiled %s\n"
+                    "grainflow %s (%s) packing protocol %d\n"
                     "lo %.17g %.17g %.17g\nhi %.17g %.17g %.17g\nperiodic %d %d %d\nwalls %d %d setback %.17g\n"
                     "phi_target %.17g mu_natural %.17g free_pour %d relax %.17g %.17g %.17g\n"
                     "tolerance %.17g max_iterations %d margin %.17g\n"
                     "radius %.17g polydispersity %.17g density %.17g gravity %.17g\n"
                     "mu_obstacles %.17g obstacles %zu seed %" PRIu64 "\n",
-                    GF_VERSION, gf_build_revision(), GF_PACKING_PROTOCOL, gf_packing_build_stamp(), sp->lo_m[0], sp->lo_m[1], sp->lo_m[2],
+                    GF_VERSION, gf_build_revision(), GF_PACKING_PROTOCOL, sp->lo_m[0], sp->lo_m[1], sp->lo_m[2],
                     sp->hi_m[0], sp->hi_m[1], sp->hi_m[2], sp->periodic[0], sp->periodic[1], sp->periodic[2],
                     sp->walls_x, sp->walls_z, sp->wall_setback_m, sp->phi_target, sp->mu_natural, sp->free_pour,
                     sp->relax.mu, sp->relax.t_contact_s, sp->relax.restitution, sp->tolerance, sp->max_iterations,

@@ -11,9 +11,10 @@
  * What identifies a deposit: every field of gf_packing_spec written out as
  * text ("key", %.17g for reals), the obstacles' positions and radii, the
  * preparation protocol's version (GF_PACKING_PROTOCOL, raised whenever
- * gf_packing.c changes what it builds) and the build (GF_VERSION, the
- * source revision gf_build_revision(), and the time gf_packing.c was
- * compiled: an edit rebuilt without a new commit is another build too).
+ * gf_packing.c changes what it builds) and the source (GF_VERSION and the
+ * revision gf_build_revision(): the commit, and for uncommitted code a hash
+ * of its diff, so an edit is another source while a rebuild of the same
+ * source, e.g. a fresh build directory, keeps the deposits).
  * The file name is a 64-bit FNV-1a hash of all of it; on reading, the key
  * text and the obstacles are compared in full, so a hash collision is a
  * miss, never a wrong deposit. A file that cannot be read (cut short,

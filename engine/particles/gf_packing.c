@@ -41,11 +41,6 @@ typedef struct prep {
     size_t n_cells;
 } prep;
 
-const char *gf_packing_build_stamp(void)
-{
-    return __DATE__ " " __TIME__;
-}
-
 static void prep_free(prep *s)
 {
     free(s->x), free(s->v), free(s->w), free(s->f), free(s->t);

@@ -128,11 +128,6 @@ gf_status gf_packing_build(gf_ctx *ctx, const gf_packing_spec *spec, gf_particle
 gf_status gf_packing_deposit(gf_ctx *ctx, const gf_packing_spec *spec, double mu_prep, gf_particles *out,
                              double *phi_local);
 
-/* When this file was compiled: part of the key of the deposits a campaign
- * shares (io/gf_packing_cache.h), so that an edited preparation, rebuilt
- * without a new commit or configure, never reads an older build's deposits. */
-const char *gf_packing_build_stamp(void);
-
 /* Rough base (Izard 2014 §1.5, §4.1.2.2): glued grains of radii drawn from
  * psd with their centres on the plane y = y_m ("half-grains"), placed by
  * random sequential adsorption over x in [x0, x1), z in [z0, z1) (touching

@@ -45,17 +45,17 @@ foreach(cmd run campaign check demo post bench)
   expect(0 "" ${cmd} --help)
 endforeach()
 expect(0 "" --version)
-if(NOT last_out MATCHES "^grainflow [0-9]+\\.[0-9]+\\.[0-9]+ \\(([0-9a-z]+(-dirty)?)\\)")
+if(NOT last_out MATCHES "^grainflow [0-9]+\\.[0-9]+\\.[0-9]+ \\(([0-9a-z]+(-dirty\\.[0-9a-f]+)?)\\)")
   message(SEND_ERROR "--version printed '${last_out}'")
 endif()
 # the revision is the source tree's at build time, not at configure time: in a
-# git checkout it is HEAD's short hash ("-dirty" with uncommitted edits to
+# git checkout it is HEAD's short hash ("-dirty.<diff hash>" with uncommitted edits to
 # tracked files), whatever commit the build directory was configured at
 set(printed_rev "${CMAKE_MATCH_1}")
 execute_process(COMMAND git rev-parse --short=7 HEAD WORKING_DIRECTORY ${SRC}
                 OUTPUT_VARIABLE head OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET RESULT_VARIABLE git_rc)
 if(git_rc EQUAL 0 AND NOT head STREQUAL "")
-  string(REGEX REPLACE "-dirty$" "" printed_hash "${printed_rev}")
+  string(REGEX REPLACE "-dirty\\.[0-9a-f]+$" "" printed_hash "${printed_rev}")
   if(NOT printed_hash STREQUAL head)
     message(SEND_ERROR "--version names revision '${printed_rev}', the source tree is at ${head}")
   else()
