@@ -420,15 +420,15 @@ static gf_status create_inner(gf_sim *s, const gf_run_spec *spec, const gf_sim_o
         return GF_FAIL(s->ctx, GF_ERR_CONFIG, "contact.skin_over_D: must be > 0 (got %g)", s->spec.contact.skin_over_D);
     s->skin_m = s->spec.contact.skin_over_D * s->spec.grains.diameter_m;
     /* only the blocked linear loop scans a near list (gf_sim_near.c) */
-    const int blocked = s->law->kernel == gf_contact_linear && !s->opt.generic_pair_loop;
-    s->near.skin_m = (s->opt.near_skin < 0.0 || !blocked) ? 0.0
-                     : (s->opt.near_skin == 0.0 ? GF_SIM_NEAR_SKIN_DEFAULT : fmin(s->opt.near_skin, 1.0)) * s->skin_m;
+    const int blocked = s->law->kernel == gf_contact_linear && !s->opt.tuning.generic_pair_loop;
+    s->near.skin_m = (s->opt.tuning.near_skin < 0.0 || !blocked) ? 0.0
+                     : (s->opt.tuning.near_skin == 0.0 ? GF_SIM_NEAR_SKIN_DEFAULT : fmin(s->opt.tuning.near_skin, 1.0)) * s->skin_m;
     if (!(s->spec.contact.sleep_speed_nd >= 0.0 && s->spec.contact.sleep_speed_nd <= 0.05))
         return GF_FAIL(s->ctx, GF_ERR_CONFIG,
                        "contact.sleep_speed_nd: must be in [0, 0.05] (got %g; above 0.05 a grain at the top of a "
                        "hop could be taken for one at rest)", s->spec.contact.sleep_speed_nd);
     s->n_threads = pick_threads(opt);
-    s->sort_every = s->opt.sort_every == 0 ? GF_SIM_SORT_EVERY_DEFAULT : (s->opt.sort_every < 0 ? 0 : s->opt.sort_every);
+    s->sort_every = s->opt.tuning.sort_every == 0 ? GF_SIM_SORT_EVERY_DEFAULT : (s->opt.tuning.sort_every < 0 ? 0 : s->opt.tuning.sort_every);
     s->store_layout = -1;
     s->gravity_m_s2[1] = -s->spec.gravity_m_s2; /* y is vertical (docs/output.md) unless the scene says */
     gf_rng_seed(&s->rng, s->spec.seed);

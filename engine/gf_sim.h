@@ -19,6 +19,7 @@
 #include "core/gf_status.h"
 #include "core/gf_timer.h"
 #include "gf_run_spec.h"
+#include "gf_sim_tuning.h"
 #include "particles/gf_particles.h"
 
 typedef struct gf_sim gf_sim;
@@ -32,34 +33,13 @@ typedef struct gf_sim_options {
     void (*progress)(void *user, double t_s, double t_end_s, double steps_per_s);
     void *progress_user;
     volatile int *interrupt;    /* non-zero: stop at the next step, checkpoint, return GF_ERR_INTERRUPTED */
-    int keep_all_work;          /* 1: skip nothing (gf_sim_skips; benchmarks measure what each skip saves) */
-    /* Spatial sort of the particle store (engine/gf_sim_sort.c): every
-     * sort_every-th neighbour-list rebuild reorders the grains by the Morton
-     * index of their cell, so that neighbours are close in memory (ids, and so
-     * outputs, are unchanged). 0: the default, every 20 rebuilds from 2048
-     * grains on (smaller stores fit in the caches: never); > 0: every that
-     * many rebuilds, any grain count; < 0: never. The results depend on it at
-     * round-off (summation order): a restart must use the same value. */
-    int sort_every;
     /* Directory where scenes keep the deposits of their packing preparation
      * for the other runs of a campaign (io/gf_packing_cache.h); the deposit
      * read back is the one the run would build. NULL: build every time. */
     const char *preparation_dir;
-    /* Steps per call of gf_sim_advance in gf_sim_run. 0: adaptive, about 0.1 s of
-     * wall time each (progress, interrupts). The outputs do not depend on it:
-     * output, checkpoint and done() instants are steps of the clock
-     * (gf_sim_run.c); > 0 fixes it (tests/pipeline/test_run_chunking.c). */
-    int chunk_steps;
-    /* 1: the linear law (with or without lubrication) runs in the scalar pair
-     * loop (engine/gf_sim_forces.c) instead of the blocked, vectorised one
-     * (gf_sim_pairs.c), which must give the same bits (tests/engine/test_pair_loops.c). */
-    int generic_pair_loop;
-    /* Near list (engine/gf_sim_near.c): the blocked pair loop scans the
-     * neighbour pairs within this fraction of the skin of contact, rebuilt
-     * when a grain has moved half of it. 0: the default
-     * (GF_SIM_NEAR_SKIN_DEFAULT); < 0: scan the whole list. The results do
-     * not depend on it (bitwise). */
-    double near_skin;
+    /* Performance knobs, for benchmarks and the tests that compare the fast
+     * paths with the plain ones (engine/gf_sim_tuning.h); zero: the defaults. */
+    gf_sim_tuning tuning;
 } gf_sim_options;
 /* Default near skin, a fraction of contact.skin_over_D (docs/benchmarks.md, "Near list"). */
 #define GF_SIM_NEAR_SKIN_DEFAULT 0.05
@@ -84,7 +64,7 @@ void gf_sim_destroy(gf_sim **sim);
 gf_status gf_sim_run(gf_sim *sim);
 /* Advances n DEM steps (fluid steps interleaved as the scene needs), no output. */
 gf_status gf_sim_advance(gf_sim *sim, long n_steps);
-/* Sorts the particle store by space now (gf_sim_options.sort_every), whatever
+/* Sorts the particle store by space now (gf_sim_tuning.sort_every), whatever
  * the schedule and the grain count: for drivers holding a state written by a
  * build without the sort, or in insertion order. Rebuilds the list. */
 gf_status gf_sim_sort(gf_sim *sim);

@@ -576,7 +576,7 @@ static void run_chunk(gf_sim *s, int c, double *const store[6], size_t n, unsign
     open_chunk(s, c, store, n);
     if (s->law->kernel == gf_contact_linear && (s->skips & GF_SKIP_TANGENTIAL))
         pair_rows_linear_normal(s, i0, i1, store, a);
-    else if (s->law->kernel == gf_contact_linear && s->opt.generic_pair_loop)
+    else if (s->law->kernel == gf_contact_linear && s->opt.tuning.generic_pair_loop)
         pair_rows_linear(s, i0, i1, store, a);
     else if (s->law->kernel == gf_contact_linear) {
         if (s->near.use && !s->near.valid)

@@ -254,7 +254,7 @@ void gf_sim_sleep_wake_all(gf_sim *s);
 /* Skips (gf_sim_skips.c). Decided from the spec and the scene before build()
  * (gf_sim_decide_skips) and dropped when a scene adds what defeats one (a
  * frictional wall: gf_sim_skips_wall_added); nothing is decided when
- * gf_sim_options.keep_all_work is set. */
+ * gf_sim_tuning.keep_all_work is set. */
 gf_status gf_sim_decide_skips(gf_sim *s);
 void gf_sim_skips_wall_added(gf_sim *s, double friction);
 /* Brenner lubrication from spec.fluid (roughness, cut-off, viscosity). gf_sim.c. */

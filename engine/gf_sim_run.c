@@ -212,7 +212,7 @@ static gf_status run_loop(gf_sim *s, run_out *o, int resumed)
     double ck_dt = s->spec.output.checkpoint_interval_nd * t_grain;
     double next_out = out_dt > 0.0 ? s->t_s + out_dt : INFINITY, next_ck = ck_dt > 0.0 ? s->t_s + ck_dt : INFINITY;
     double wall0 = gf_wtime(), last_progress = wall0;
-    long chunk = s->opt.chunk_steps > 0 ? s->opt.chunk_steps : 16, steps_at_progress = s->step;
+    long chunk = s->opt.tuning.chunk_steps > 0 ? s->opt.tuning.chunk_steps : 16, steps_at_progress = s->step;
     if (resumed) { /* the records up to now are in the continued files */
         next_out = next_instant(out_dt, s->t_s, s->dt_s);
         next_ck = next_instant(ck_dt, s->t_s, s->dt_s);
@@ -243,7 +243,7 @@ static gf_status run_loop(gf_sim *s, run_out *o, int resumed)
         double w1 = gf_wtime(), took = w1 - w0;
         /* ~0.1 s per chunk; grown only when a whole chunk ran (a chunk cut short by
          * frequent output instants must not double without bound and overflow) */
-        if (s->opt.chunk_steps <= 0) { /* > 0: fixed by the caller */
+        if (s->opt.tuning.chunk_steps <= 0) { /* > 0: fixed by the caller */
             if (took < 0.05 && n == chunk)
                 chunk *= 2;
             else if (took > 0.2 && chunk > 1)

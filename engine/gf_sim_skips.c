@@ -2,7 +2,7 @@
  * Skipping the work a run does not need (issue #6), decided once at
  * gf_sim_create from the spec and the scene, recorded (gf_sim_skips, the
  * `skipped_work` attribute of every output file) and measured side by side
- * with the skip off (gf_sim_options.keep_all_work; workflows/bench/skips.sh,
+ * with the skip off (gf_sim_tuning.keep_all_work; workflows/bench/skips.sh,
  * docs/benchmarks.md).
  *
  *  - Tangential (GF_SKIP_TANGENTIAL), when mu_c = 0 between grains and on
@@ -39,11 +39,11 @@ gf_status gf_sim_decide_skips(gf_sim *s)
 {
     s->skips = 0;
     if (!s->immersed && wants_lubrication(s)) {
-        if (s->opt.keep_all_work)
+        if (s->opt.tuning.keep_all_work)
             return gf_sim_setup_lubrication(s);
         s->skips |= GF_SKIP_LUBRICATION;
     }
-    if (!s->opt.keep_all_work && s->cp.mu_grain == 0.0) /* walls: gf_sim_skips_wall_added */
+    if (!s->opt.tuning.keep_all_work && s->cp.mu_grain == 0.0) /* walls: gf_sim_skips_wall_added */
         s->skips |= GF_SKIP_TANGENTIAL;
     return GF_OK;
 }

@@ -1,5 +1,5 @@
 /*
- * Spatial ordering of the particle store (gf_sim_options.sort_every).
+ * Spatial ordering of the particle store (gf_sim_tuning.sort_every).
  *
  * At every sort_every-th neighbour-list rebuild (gf_sim_rebuild, after the
  * periodic wrap and before the list is built) the grains are reordered by the
@@ -210,7 +210,7 @@ int gf_sim_sort_layout(const gf_sim *s)
 
 int gf_sim_sorts(const gf_sim *s)
 {
-    return s->sort_every > 0 && (s->p->n_local >= GF_SIM_SORT_MIN_GRAINS || s->opt.sort_every > 0);
+    return s->sort_every > 0 && (s->p->n_local >= GF_SIM_SORT_MIN_GRAINS || s->opt.tuning.sort_every > 0);
 }
 
 gf_status gf_sim_sort(gf_sim *s)

@@ -6,7 +6,7 @@
  * bytes in every position, velocity and spin (memcmp). Checked with 1 and 2 threads (each against a
  * reference with the same thread count: the per-thread force sums are
  * ordered, so a fixed thread count is deterministic). Also with the spatial
- * sort of the store at every third rebuild (gf_sim_options.sort_every): the
+ * sort of the store at every third rebuild (gf_sim_tuning.sort_every): the
  * restart sorts at the same rebuilds, and the sorted run follows the unsorted
  * one grain by grain (by id) to round-off, i.e. ids, history and per-grain
  * data moved together.

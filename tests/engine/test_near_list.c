@@ -5,7 +5,7 @@
  * lubrication) range before the next near build, so the run must be
  * bitwise the one that scans the whole list.
  *
- * Claim: from the same start, near skin off (gf_sim_options.near_skin < 0),
+ * Claim: from the same start, near skin off (gf_sim_tuning.near_skin < 0),
  * the default (a quarter of the skin) and a thin one (2 % of the skin:
  * a near build every few steps of a flow) leave bitwise identical
  * positions, velocities and spins, and the near list was used (near builds
@@ -26,7 +26,7 @@
 static gf_sim *make(gf_ctx *ctx, const gf_run_spec *spec, int threads, double near_skin)
 {
     gf_sim *s = NULL;
-    GF_CHECK_OK(gf_sim_create(ctx, spec, &(gf_sim_options){.n_threads = threads, .near_skin = near_skin}, &s), ctx);
+    GF_CHECK_OK(gf_sim_create(ctx, spec, &(gf_sim_options){.n_threads = threads, .tuning.near_skin = near_skin}, &s), ctx);
     return s;
 }
 

@@ -4,7 +4,7 @@
  * it, scatter in list order) gives the bits of the scalar loop
  * (engine/gf_sim_forces.c) it replaces: same expressions, same sums.
  *
- * Claim: from the same start, the two loops (gf_sim_options.generic_pair_loop
+ * Claim: from the same start, the two loops (gf_sim_tuning.generic_pair_loop
  * 0 and 1) leave bitwise identical positions, velocities and spins
  *   - in a frictional settled bed of 1200 grains, 1 and 2 threads, 2000 steps
  *     from an unsettled stack (contacts made and broken, Coulomb slip);
@@ -25,7 +25,7 @@
 static gf_sim *make(gf_ctx *ctx, const gf_run_spec *spec, int threads, int generic)
 {
     gf_sim *s = NULL;
-    GF_CHECK_OK(gf_sim_create(ctx, spec, &(gf_sim_options){.n_threads = threads, .generic_pair_loop = generic}, &s), ctx);
+    GF_CHECK_OK(gf_sim_create(ctx, spec, &(gf_sim_options){.n_threads = threads, .tuning.generic_pair_loop = generic}, &s), ctx);
     return s;
 }
 

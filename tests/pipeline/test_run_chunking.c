@@ -46,7 +46,7 @@ static void run_into(const char *dir, int chunk_steps, long *steps)
     GF_CHECK_OK(gf_run_spec_set_param(&ctx, &spec, "aspect_ratio", 1.0), &ctx);
     GF_CHECK_OK(gf_run_spec_set_param(&ctx, &spec, "settle_time_nd", 1.0), &ctx);
     GF_CHECK_OK(gf_run_spec_set_param(&ctx, &spec, "rest_energy", 1e-3), &ctx);
-    gf_sim_options opt = {.output_dir = dir, .n_threads = 1, .chunk_steps = chunk_steps};
+    gf_sim_options opt = {.output_dir = dir, .n_threads = 1, .tuning.chunk_steps = chunk_steps};
     gf_sim *sim = NULL;
     GF_CHECK_OK(gf_sim_create(&ctx, &spec, &opt, &sim), &ctx);
     if (sim) {

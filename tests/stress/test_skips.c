@@ -35,7 +35,7 @@ static gf_run_spec bed(gf_ctx *ctx, double mu, double mu_wall)
 
 static gf_sim *make(gf_ctx *ctx, const gf_run_spec *s, int keep_all)
 {
-    gf_sim_options o = {.n_threads = 1, .keep_all_work = keep_all};
+    gf_sim_options o = {.n_threads = 1, .tuning.keep_all_work = keep_all};
     gf_sim *sim = NULL;
     GF_CHECK_OK(gf_sim_create(ctx, s, &o, &sim), ctx);
     return sim;

@@ -98,14 +98,14 @@ static inline gf_status gf_test_sim_restart(gf_ctx *ctx, const gf_run_spec *spec
     return gf_sim_create(ctx, spec, &opt, out);
 }
 
-/* The same with a sort period (gf_sim_options.sort_every) and an optional
+/* The same with a sort period (gf_sim_tuning.sort_every) and an optional
  * checkpoint to continue from (NULL: fresh start). */
 static inline gf_status gf_test_sim_sorted(gf_ctx *ctx, const gf_run_spec *spec, int threads, int sort_every,
                                            const char *restart_path, gf_sim **out)
 {
     gf_sim_options opt;
     memset(&opt, 0, sizeof opt);
-    opt.n_threads = threads, opt.sort_every = sort_every, opt.restart_path = restart_path;
+    opt.n_threads = threads, opt.tuning.sort_every = sort_every, opt.restart_path = restart_path;
     return gf_sim_create(ctx, spec, &opt, out);
 }
 

@@ -25,13 +25,13 @@
  * (glued grains included), --n is ignored. --bed keeps the settled bed as the
  * checkpoint PREFIX_<N>.h5 and reuses it when it exists (settling 1e5 grains
  * costs far more than timing them; the same file also lets two builds be
- * timed on the same state). --sort-every K sets gf_sim_options.sort_every
+ * timed on the same state). --sort-every K sets gf_sim_tuning.sort_every
  * (0: the engine's default, -1: never sort). --sort-bed PREFIX loads the bed,
  * sorts its store by space (gf_sim_sort), writes it as PREFIX_<N>.h5 and
  * times nothing: a bed kept by a build without the sort, made comparable.
  * A bed sorted for one thread layout is re-sorted into another's when a run
  * with that layout loads it (gf_sim_checkpoint.c), unless --sort-every -1.
- * --near-skin F sets gf_sim_options.near_skin (the near list's skin as a
+ * --near-skin F sets gf_sim_tuning.near_skin (the near list's skin as a
  * fraction of the neighbour skin; 0 the default, < 0 no near list); each line
  * then also reports the list and near-list builds and pairs per grain.
  */
@@ -57,7 +57,7 @@ typedef struct bench_args {
     int collapse; /* --scene column_collapse: the dry collapse at a = 1 instead of the bed */
     const char *bed; /* reuse (or keep) the settled bed: PATH_<N>.h5 */
     int sort_every;
-    double near_skin; /* gf_sim_options.near_skin */
+    double near_skin; /* gf_sim_tuning.near_skin */
     const char *sort_bed;
 } bench_args;
 
@@ -221,8 +221,8 @@ int main(int argc, char **argv)
         spec_for(&ctx, &again, &a, a.n[k], 0.0); /* no second settling: the checkpoint holds the bed */
         double rate1 = 0.0;
         for (int q = 0; q < a.n_threads; ++q) {
-            gf_sim_options o = {.n_threads = a.threads[q], .restart_path = ck, .sort_every = a.sort_every,
-                                 .near_skin = a.near_skin};
+            gf_sim_options o = {.n_threads = a.threads[q], .restart_path = ck, .tuning.sort_every = a.sort_every,
+                                 .tuning.near_skin = a.near_skin};
             if (gf_sim_create(&ctx, &again, &o, &sim) != GF_OK) {
                 fprintf(stderr, "gf-bench-dem: %s\n", ctx.last_msg);
                 return 1;

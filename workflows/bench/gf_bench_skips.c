@@ -7,7 +7,7 @@
  * repeats per side), the observable is the mean over the repeats (and seeds).
  *
  *   tangential   mu_c = 0: the elastic gas (1000 grains, phi 0.30, eps 1) and a
- *                frictionless settled bed; off = gf_sim_options.keep_all_work.
+ *                frictionless settled bed; off = gf_sim_tuning.keep_all_work.
  *                Observable: largest kinetic-energy excursion over 8 sqrt(D/g)
  *                (energy stored in the springs included) / bed height, and the largest
  *                position difference between the two runs (0: bitwise).
@@ -97,7 +97,7 @@ static void frictionless_spec(gf_run_spec *s, const char *scene, double D, doubl
 /* Creates the run with the skips on (or all work kept) and starts the CPU clock. */
 static int create_timed(gf_ctx *ctx, const gf_run_spec *s, int on, gf_sim **sim, double *c0)
 {
-    gf_sim_options o = {.n_threads = 1, .keep_all_work = !on};
+    gf_sim_options o = {.n_threads = 1, .tuning.keep_all_work = !on};
     *c0 = cpu_s();
     return gf_sim_create(ctx, s, &o, sim) == GF_OK;
 }
@@ -180,7 +180,7 @@ static int run_collapse(collapse_kind kind, int on, unsigned seed, result *r)
     if (kind == COLLAPSE_LUB) { /* glass beads in air: fluid: auto picks the dry tier */
         snprintf(s.fluid.model, sizeof s.fluid.model, "auto");
         s.fluid.density_kg_m3 = 1.2, s.fluid.viscosity_Pa_s = 1.8e-5, s.fluid.lubrication = 1;
-        o.keep_all_work = !on;
+        o.tuning.keep_all_work = !on;
     } else if (kind == COLLAPSE_OUTPUT) {
         snprintf(dir, sizeof dir, "/tmp/gf_bench_skips_%d", (int)getpid());
         char cmd[128];
