@@ -661,13 +661,13 @@ static gf_status check_run_limits(gf_sim *s, double d2_since_build)
                        "overlap %.3g D at t = %g s exceeds the soft-sphere limit %.2g D: contacts too soft for the "
                        "impact speed (lower contact.t_contact_nd)",
                        s->max_overlap_m / D, s->t_s, GF_MAX_OVERLAP_OVER_D);
-    if (strcmp(s->spec.contact.law, "hertz") == 0 && s->cp.delta_ref_m > 0.0) {
-        double stiffening = sqrt(sqrt(s->max_overlap_m / s->cp.delta_ref_m));
-        if (s->dt_s > t_c / (5.0 * fmax(1.0, stiffening)))
+    if (s->law->frequency_factor) {
+        const double f = fmax(1.0, s->law->frequency_factor(&s->cp, s->max_overlap_m));
+        if (s->dt_s > t_c / (5.0 * f))
             return GF_FAIL(s->ctx, GF_ERR_NUMERIC,
-                           "dt = %.3g s exceeds the stability limit t_c/5 of the current Hertz stiffness at t = %g s "
+                           "dt = %.3g s exceeds the stability limit t_c/5 of the current %s stiffness at t = %g s "
                            "(overlap %.3g D stiffens the contact %.2gx): lower contact.dt_over_tc",
-                           s->dt_s, s->t_s, s->max_overlap_m / D, stiffening * stiffening);
+                           s->dt_s, s->law->name, s->t_s, s->max_overlap_m / D, f * f);
     }
     return GF_OK;
 }

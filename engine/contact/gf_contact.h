@@ -75,17 +75,35 @@ typedef struct gf_contact_geom {
 typedef void gf_contact_kernel(const gf_contact_params *p, const gf_contact_geom *g, double dt_s, double *hist,
                                double *f_n_out, double f_t_out[3]);
 
+/* A contact law: one file (its kernel and its row) plus one entry in the
+ * registry (gf_contact_table.c), which is the only list of laws: the YAML
+ * schema, the error messages and the step loop read it. What differs between
+ * laws is asked of the row's hooks; a NULL hook is the linear law's answer. */
 typedef struct gf_contact_info {
-    const char *name;
+    const char *name;        /* spec.contact.law */
     gf_contact_kernel *kernel;
     int n_history;           /* doubles per contact */
     const char *doc;
+    /* Law-specific parameters, after the shared ones (k_n, zeta, ...) are set
+     * from the spec. NULL: none. */
+    void (*derive)(const gf_run_spec *spec, gf_contact_params *cp);
+    /* Ratio of the contact's oscillation frequency at overlap delta to the
+     * frequency pi/t_c of the stiffness k_n, for the step's stability limit
+     * t_c/5 (engine/gf_sim.c). NULL: 1 at every overlap. */
+    double (*frequency_factor)(const gf_contact_params *cp, double overlap_m);
+    /* Elastic energy stored at overlap delta (normal) and in the tangential
+     * spring xi (|xi|^2 given) at that overlap, for energy audits. */
+    double (*normal_energy)(const gf_contact_params *cp, double overlap_m);
+    double (*tangential_energy)(const gf_contact_params *cp, double overlap_m, double xi2_m2);
 } gf_contact_info;
 
 /* Row of the table for law (spec.contact.law), NULL when unknown. */
 const gf_contact_info *gf_contact_find(const char *law);
-/* All rows, *n set to their count. */
-const gf_contact_info *gf_contact_all(int *n);
+/* All rows (pointers into the laws' files), *n set to their count. */
+const gf_contact_info *const *gf_contact_all(int *n);
+/* The laws' names, NULL-terminated, in the registry's order (the schema's
+ * allowed values). Not for concurrent first calls: read at configuration. */
+const char *const *gf_contact_law_names(void);
 
 /* Derives the law parameters from the run spec: t_c = t_contact_nd sqrt(D/g),
  * mean pair of diameter D and density rho_p. Errors (GF_ERR_CONFIG) name the
@@ -105,7 +123,11 @@ void gf_contact_clipped_restitution(double eps_max, double *eps_eff, double *dur
 void gf_contact_tangential(const gf_contact_geom *g, double k_t_N_m, double f_n_N, double dt_s, double *hist,
                            double f_t_out[3]);
 
-/* Kernels (rows of the table). */
+/* The registered laws (rows of the table). */
+extern const gf_contact_info gf_contact_law_linear;
+extern const gf_contact_info gf_contact_law_hertz;
+
+/* Kernels, also called directly by the fast pair loops (gf_contact_kernels.h). */
 void gf_contact_linear(const gf_contact_params *p, const gf_contact_geom *g, double dt_s, double *hist,
                        double *f_n_out, double f_t_out[3]);
 void gf_contact_hertz(const gf_contact_params *p, const gf_contact_geom *g, double dt_s, double *hist,

@@ -14,3 +14,25 @@ void gf_contact_linear(const gf_contact_params *p, const gf_contact_geom *g, dou
 {
     gf_contact_linear_inline(p, g, dt_s, hist, f_n_out, f_t_out);
 }
+
+/* Potential of the spring, 1/2 k_n delta^2 (Izard 2014 (2.4)). */
+static double linear_normal_energy(const gf_contact_params *p, double overlap_m)
+{
+    return 0.5 * p->k_n_N_m * overlap_m * overlap_m;
+}
+
+/* 1/2 k_t |xi|^2: after a Coulomb slip xi holds the capped spring (2.5), so
+ * this is the energy the spring can give back. */
+static double linear_tangential_energy(const gf_contact_params *p, double overlap_m, double xi2_m2)
+{
+    return 0.5 * p->kt_over_kn * p->k_n_N_m * xi2_m2;
+}
+
+const gf_contact_info gf_contact_law_linear = {
+    .name = "linear",
+    .kernel = gf_contact_linear,
+    .n_history = GF_CONTACT_HISTORY,
+    .doc = "spring-dashpot, clipped, vector tangential spring (Izard 2014)",
+    .normal_energy = linear_normal_energy,
+    .tangential_energy = linear_tangential_energy,
+};

@@ -7,26 +7,47 @@
 #include "contact/gf_contact.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
-static const gf_contact_info gf_contact_table[] = {
-    /* name      kernel              history               what */
-    {"linear", gf_contact_linear, GF_CONTACT_HISTORY, "spring-dashpot, clipped, vector tangential spring (Izard 2014)"},
-    {"hertz", gf_contact_hertz, GF_CONTACT_HISTORY, "Hertz-Mindlin, delta^1/4 damping (Tsuji 1992)"},
+/* The registry: one row per law, defined in the law's own file. */
+static const gf_contact_info *const gf_contact_table[] = {
+    &gf_contact_law_linear,
+    &gf_contact_law_hertz,
 };
+enum { N_LAWS = sizeof gf_contact_table / sizeof gf_contact_table[0] };
 
 const gf_contact_info *gf_contact_find(const char *law)
 {
-    for (size_t i = 0; i < sizeof gf_contact_table / sizeof gf_contact_table[0]; ++i)
-        if (strcmp(gf_contact_table[i].name, law) == 0)
-            return &gf_contact_table[i];
+    for (size_t i = 0; i < N_LAWS; ++i)
+        if (law && strcmp(gf_contact_table[i]->name, law) == 0)
+            return gf_contact_table[i];
     return NULL;
 }
 
-const gf_contact_info *gf_contact_all(int *n)
+const gf_contact_info *const *gf_contact_all(int *n)
 {
-    *n = (int)(sizeof gf_contact_table / sizeof gf_contact_table[0]);
+    *n = N_LAWS;
     return gf_contact_table;
+}
+
+const char *const *gf_contact_law_names(void)
+{
+    static const char *names[N_LAWS + 1];
+    for (size_t i = 0; i < N_LAWS; ++i)
+        names[i] = gf_contact_table[i]->name;
+    names[N_LAWS] = NULL;
+    return names;
+}
+
+/* "linear, hertz": the known laws, for error messages. */
+static const char *known_laws(char *buf, size_t n)
+{
+    size_t len = 0;
+    buf[0] = '\0';
+    for (size_t i = 0; i < N_LAWS && len < n; ++i)
+        len += (size_t)snprintf(buf + len, n - len, "%s%s", i ? ", " : "", gf_contact_table[i]->name);
+    return buf;
 }
 
 double gf_contact_damping_ratio(double eps)
@@ -39,8 +60,11 @@ gf_status gf_contact_params_from_spec(gf_ctx *ctx, const gf_run_spec *spec, gf_c
 {
     const gf_contact_spec *c = &spec->contact;
     double eps = c->restitution;
-    if (!gf_contact_find(c->law))
-        return GF_FAIL(ctx, GF_ERR_CONFIG, "contact.law: unknown law '%s' (known: linear, hertz)", c->law);
+    const gf_contact_info *law = gf_contact_find(c->law);
+    char known[256];
+    if (!law)
+        return GF_FAIL(ctx, GF_ERR_CONFIG, "contact.law: unknown law '%s' (known: %s)", c->law,
+                       known_laws(known, sizeof known));
     if (!(eps > 0.0 && eps <= 1.0))
         return GF_FAIL(ctx, GF_ERR_CONFIG, "contact.restitution: must be in (0, 1] (got %g)", eps);
     if (!(c->t_contact_nd > 0.0))
@@ -67,9 +91,8 @@ gf_status gf_contact_params_from_spec(gf_ctx *ctx, const gf_run_spec *spec, gf_c
                                .allow_attraction = c->allow_attraction,
                                .t_contact_s = t_c,
                                .m_eff_mean_kg = m_eff};
-    /* Hertz reference overlap: peak overlap of the mean pair hit at sqrt(gD)
-     * under the undamped linear law, V sqrt(m* / k_n). */
-    out->delta_ref_m = sqrt(spec->gravity_m_s2 * D) * sqrt(m_eff / k_n);
+    if (law->derive)
+        law->derive(spec, out);
     return GF_OK;
 }
 

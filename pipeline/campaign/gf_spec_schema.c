@@ -15,26 +15,29 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "contact/gf_contact.h"
 #include "scenes/gf_scene.h"
 
-static const char *const contact_laws[] = {"linear", "hertz", NULL};
 static const char *const fluid_models[] = {"none", "unresolved", "resolved", "auto", NULL};
 static const char *const drag_laws[] = {"di_felice", "beetstra", "tenneti", NULL};
 
 #define D(sec, k, field, lo, hi, open, unit, doc) \
-    {sec, k, GF_FIELD_DOUBLE, offsetof(gf_run_spec, field), 0, lo, hi, open, unit, NULL, doc}
-#define B(sec, k, field, doc) {sec, k, GF_FIELD_BOOL, offsetof(gf_run_spec, field), 0, 0, 1, 0, "", NULL, doc}
+    {sec, k, GF_FIELD_DOUBLE, offsetof(gf_run_spec, field), 0, lo, hi, open, unit, NULL, doc, NULL}
+#define B(sec, k, field, doc) {sec, k, GF_FIELD_BOOL, offsetof(gf_run_spec, field), 0, 0, 1, 0, "", NULL, doc, NULL}
 #define N(sec, k, field, choices, doc) \
-    {sec, k, GF_FIELD_NAME, offsetof(gf_run_spec, field), GF_NAME_LEN, 0, 0, 0, "", choices, doc}
+    {sec, k, GF_FIELD_NAME, offsetof(gf_run_spec, field), GF_NAME_LEN, 0, 0, 0, "", choices, doc, NULL}
+/* A name whose allowed values are a registry's (the registry is the only list). */
+#define R(sec, k, field, registry, doc) \
+    {sec, k, GF_FIELD_NAME, offsetof(gf_run_spec, field), GF_NAME_LEN, 0, 0, 0, "", NULL, doc, registry}
 
 static const gf_spec_field fields[] = {
-    {"", "seed", GF_FIELD_U64, offsetof(gf_run_spec, seed), 0, 0, 0, 0, "", NULL, "RNG seed (packing, radii)"},
+    {"", "seed", GF_FIELD_U64, offsetof(gf_run_spec, seed), 0, 0, 0, 0, "", NULL, "RNG seed (packing, radii)", NULL},
     D("", "end_time", end_time_nd, 0, 1e7, 0, "1", "end time in sqrt(D/g); 0: the scene's default"),
     D("", "gravity", gravity_m_s2, 0, 1e3, 1, "m s-2", "|g|"),
     D("grains", "diameter_m", grains.diameter_m, 0, 1.0, 1, "m", "mean grain diameter D"),
     D("grains", "polydispersity", grains.polydispersity, 0, 0.5, 0, "1", "radii uniform in R(1 -+ p)"),
     D("grains", "density_kg_m3", grains.density_kg_m3, 0, 1e5, 1, "kg m-3", "grain density rho_p"),
-    N("contact", "law", contact.law, contact_laws, "normal force law"),
+    R("contact", "law", contact.law, gf_contact_law_names, "normal force law"),
     D("contact", "t_contact_nd", contact.t_contact_nd, 0, 1.0, 1, "1", "contact duration t_c sqrt(g/D)"),
     D("contact", "restitution", contact.restitution, 0, 1.0, 1, "1", "dry normal restitution eps_max"),
     D("contact", "friction", contact.friction, 0, 10.0, 0, "1", "grain-grain Coulomb friction mu_c"),
@@ -141,7 +144,8 @@ static gf_status read_field(gf_ctx *ctx, const gf_cfg_doc *doc, const gf_spec_fi
     case GF_FIELD_U64:
         return gf_cfg_to_u64(ctx, doc, node, (uint64_t *)base);
     case GF_FIELD_NAME:
-        return gf_cfg_to_name(ctx, doc, node, f->choices, base, f->size);
+        return gf_cfg_to_name(ctx, doc, node, f->registry_choices ? f->registry_choices() : f->choices, base,
+                              f->size);
     }
     return GF_OK;
 }

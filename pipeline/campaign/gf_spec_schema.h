@@ -43,6 +43,9 @@ typedef struct gf_spec_field {
     const char *unit;             /* udunits, "1" dimensionless, "" for names/flags */
     const char *const *choices;   /* names: NULL-terminated allowed values, or NULL */
     const char *doc;
+    /* names kept by a registry (contact laws): its list, read at each use, in
+     * place of choices; NULL otherwise. */
+    const char *const *(*registry_choices)(void);
 } gf_spec_field;
 
 /* The table, *n set to its length. */
