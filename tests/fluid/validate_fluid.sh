@@ -150,13 +150,13 @@ cat <<TXT
 
 ## Immersed column collapse, dense vs loose (a = 0.5)
 
-Scene column_collapse, R0 = 48 D, H0 = 24 D, W = 3 D, the seed's grains and fluid
+Scene column_collapse, R0 = 48 D, H0 = 24 D, W = 3 D, the thesis' grains and fluid
 (D = 7.6 mm, rho_p/rho_f = 8, eta_f = 1 Pa s, Ar ~ 30), closure di_felice, cells of 2 D
 (kernel sigma 2 D), lubrication off in the main runs (on in a variant below). The thesis'
 column is R0 = 16 D (variant below): at that size the pore pressure drains before the
 column flows and the fast tier shows little of the feedback (docs/notes/validation-collapse.md,
 "Column size"). Times in T_visq = eta_f/(drho g H0); P_b is the basal excess pore pressure at
-x = 13/16 R0 (the seed's x = 13 D for R0 = 16 D), scaled by drho g H0; the other gauges sit under
+x = 13/16 R0 (the thesis' x = 13 D for R0 = 16 D), scaled by drho g H0; the other gauges sit under
 the column at 12/16, 11/16, 10/16, 8/16 and 4/16 R0 (the table shows 8/16); every gauge is the
 mean over the transverse cell layers. "start": the front reaches R0 (1 + 1/32) (D/2 at the
 thesis' R0; the front moves by bins of D, so the first bin edge at or beyond it); "half
