@@ -17,7 +17,7 @@
  *     most 0.6 times the 64-byte cache lines they occupy in Morton order
  *     (measured: 7 against 13 lines, 30 against 86);
  *   - the sort reorders without losing a grain (ids a permutation).
- * Measured figures on the 1e4 benchmark bed: docs/benchmarks.md, "Two cores:
+ * Measured figures on the 1e4 benchmark bed: docs/notes/benchmarks.md, "Two cores:
  * the cut between the chunks".
  *
  * A store sorted on one thread and continued from its checkpoint on two is

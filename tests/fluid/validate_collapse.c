@@ -23,7 +23,7 @@
  *   (trapezoid when the back keeps >= 90 % of H0), flank angle, the heap's cross-section over
  *   R0 H0 (= Phi_i / Phi_deposit with Phi_i the solid volume / R0 H0 W; mass conservation), the
  *   Phi_deposit it gives and the steepest straight-flanked triangle no higher than H0 that could
- *   hold it (docs/validation-collapse.md, "What mass conservation allows"), basal excess pore pressure
+ *   hold it (docs/notes/validation-collapse.md, "What mass conservation allows"), basal excess pore pressure
  *   at x = 13/16 R0 (the seed's x = 13 D): dominant extremum (Pa and
  *   / drho g H0) and its time, the extrema of its running mean over 500
  *   T_visq, then the extrema and their times at 12/16, 11/16, 10/16, 8/16 and
@@ -83,7 +83,7 @@ enum { N_GAUGE = 6, MAX_REC = 4096, WALL_GATE = 2, N_SMOOTH = 10, MAX_SEEDS = 16
  * (x_f - R0)/R0) */
 #define START_OVER_R0 (1.0 / 32.0)
 /* The edge's advance (x_e - R0)/R0 at which the lag between the columns is also printed: the start's, then
- * farther along the front curves (docs/validation-collapse.md, "Where the start is read") */
+ * farther along the front curves (docs/notes/validation-collapse.md, "Where the start is read") */
 enum { N_LEVEL = 4 };
 static const double EDGE_LEVEL[N_LEVEL] = {START_OVER_R0, 1.0 / 16.0, 1.0 / 8.0, 1.0 / 4.0};
 /* x / R0: the seed's x = 13 D first (the check reads gauge 0), then towards the back wall, to locate where
@@ -476,7 +476,7 @@ static double pb_smoothed_dominant(const collapse_run *r)
 
 /* The steepest straight flank of a triangle against the back wall, no higher than H0, whose
  * cross-section is area R0 H0: tan = H0 / (2 area R0 H0 / H0) = a / (2 area) (mass conservation;
- * docs/validation-collapse.md, "What mass conservation allows"). */
+ * docs/notes/validation-collapse.md, "What mass conservation allows"). */
 static double triangle_bound_deg(double area_over_column)
 {
     return atan(aspect / (2.0 * area_over_column)) * 180.0 / M_PI;

@@ -33,7 +33,7 @@ run scene "$T/test_settling_scene"
 DENSE=0.60
 LOOSE=0.55
 if [ "$2" != "--no-collapse" ] && [ -x "$T/validate_collapse" ]; then
-    # one thread per run (the numbers of docs/validation-collapse.md; a collapse is chaotic, so the
+    # one thread per run (the numbers of docs/notes/validation-collapse.md; a collapse is chaotic, so the
     # summation order of another thread count gives other runs), the long check beside the rest
     VC="env OMP_NUM_THREADS=1 nice $T/validate_collapse"
     run collapse $VC $DENSE 20000 0 check column_length_over_D=48 seeds=5 &
@@ -88,7 +88,7 @@ block viscous
 cat <<'TXT'
 
 Complete fluid step (advection, implicit viscosity, projection) against exact solutions,
-dt = C h^2 (test_fluid_order; docs/benchmarks.md "Fluid: convergence in cell size"):
+dt = C h^2 (test_fluid_order; docs/notes/benchmarks.md "Fluid: convergence in cell size"):
 order 2 where advection vanishes (Poiseuille start-up, accepted 1.8-2.2), order 1 of the
 upwind advection on the Taylor-Green vortex at Re 10 (accepted 0.75-1.25):
 TXT
@@ -136,7 +136,7 @@ TXT
 block stability
 block mass
 echo
-echo 'Avalanche gravity (Izard 2014 (4.5)-(4.6)): the form kept is the physical tank (fluid body force unmodified,'
+echo 'Avalanche gravity (Izard 2014 §4.1.2.2, (4.6)): the form kept is the physical tank (fluid body force unmodified,'
 echo 'hydrostatic p_h = rho_f g.x, full buoyancy on every grain); test_incline_buoyancy:'
 block incline
 cat <<'TXT'
@@ -150,13 +150,13 @@ cat <<TXT
 
 ## Immersed column collapse, dense vs loose (a = 0.5)
 
-Scene column_collapse, R0 = 48 D, H0 = 24 D, W = 3 D, the seed's grains and fluid
+Scene column_collapse, R0 = 48 D, H0 = 24 D, W = 3 D, the thesis' grains and fluid
 (D = 7.6 mm, rho_p/rho_f = 8, eta_f = 1 Pa s, Ar ~ 30), closure di_felice, cells of 2 D
 (kernel sigma 2 D), lubrication off in the main runs (on in a variant below). The thesis'
 column is R0 = 16 D (variant below): at that size the pore pressure drains before the
-column flows and the fast tier shows little of the feedback (docs/validation-collapse.md,
+column flows and the fast tier shows little of the feedback (docs/notes/validation-collapse.md,
 "Column size"). Times in T_visq = eta_f/(drho g H0); P_b is the basal excess pore pressure at
-x = 13/16 R0 (the seed's x = 13 D for R0 = 16 D), scaled by drho g H0; the other gauges sit under
+x = 13/16 R0 (the thesis' x = 13 D for R0 = 16 D), scaled by drho g H0; the other gauges sit under
 the column at 12/16, 11/16, 10/16, 8/16 and 4/16 R0 (the table shows 8/16); every gauge is the
 mean over the transverse cell layers. "start": the front reaches R0 (1 + 1/32) (D/2 at the
 thesis' R0; the front moves by bins of D, so the first bin edge at or beyond it); "half
@@ -175,11 +175,11 @@ half-grains of the rough base).
 
 Command: \`validate_collapse $DENSE 20000 0 check column_length_over_D=48 seeds=5\` (the ctest
 test collapse_dense_loose, labels slow and open): five seeds (packing and rough base) of each column;
-the verdicts use the validation tolerances of docs/accuracy.md on the seed ensemble (mean start, half
+the verdicts use the tolerances of rows 39-41 (docs/accuracy.md) on the seed ensemble (mean start, half
 time, run-out and back height; the sign from the 500 T_visq running mean of the seeds' mean
 P_b at 13/16 R0). Seed 1 in the table, the ensemble and every seed below it.
 
-| quantity | dense (requested $DENSE), seed 1 | loose (requested $LOOSE), seed 1 | Izard 2014 (§5.3-5.5) | Rondon et al. 2011 |
+| quantity | dense (requested $DENSE), seed 1 | loose (requested $LOOSE), seed 1 | Izard 2014 (ch. 5, Table 5.1) | Rondon et al. 2011 |
 | --- | --- | --- | --- | --- |
 TXT
 d=$(grep 'SUMMARY \[dense\]' "$TMP/collapse.txt" | head -1 || true)
@@ -193,7 +193,7 @@ for key in "phi_i" "start" "R_inf" "H_inf" "back height" "flank" "deposit area" 
         H_inf) ref="C: 8D/16D = 0.5 (dense keeps H0)"; ron="-" ;;
         "back height") ref="dense trapezoid, loose (0.58) triangle"; ron="trapezoid / triangle" ;;
         flank) ref="~26 deg, both columns"; ron="-" ;;
-        "deposit area") ref="(a 26 deg triangle of apex H0 holds 0.513 R0 H0: docs/validation-collapse.md)"; ron="-" ;;
+        "deposit area") ref="(a 26 deg triangle of apex H0 holds 0.513 R0 H0: docs/notes/validation-collapse.md)"; ron="-" ;;
         "Pb extremum") ref="dense < 0, loose > 0, after ~1000 T_visq, gone by ~15000"; ron="dense < 0, loose > 0" ;;
         "Pb mean over") ref="(the same, read on the 500 T_visq running mean)"; ron="-" ;;
         "Pb at 8/16") ref="under-pressure inside the dense column, over-pressure in the loose one"; ron="same" ;;
@@ -204,7 +204,7 @@ for key in "phi_i" "start" "R_inf" "H_inf" "back height" "flank" "deposit area" 
     echo "| $key | $(field "$d" "$key") | $(field "$l" "$key") | $ref | $ron |"
 done
 echo
-echo 'Seed ensemble and verdicts (validation tolerances):'
+echo 'Seed ensemble and verdicts (tolerances of rows 39-41, docs/accuracy.md):'
 echo '```'
 grep '^ENSEMBLE\|^PASS\|^FAIL\|^NOTE\|criteria failed\|exit status' "$TMP/collapse.txt" || true
 echo '```'
@@ -269,10 +269,10 @@ cat <<'TXT'
 
 - The dense viscous avalanche of the fast tier (regime map, docs/postprocessing.md) creeps
   about 10x slower than mu(I_v) predicts; measurements and what was ruled out:
-  docs/validation-avalanche.md.
+  docs/notes/validation-avalanche.md.
 - Dense against loose collapse: column size, the thesis' loose protocol, the Beetstra
   closure, denser columns, widths, cells of 1 D and seed ensembles, with what each says:
-  docs/validation-collapse.md.
+  docs/notes/validation-collapse.md.
 - Column size: a column that contracts or dilates by dphi must expel or draw in dphi/phi of its
   height in fluid through its pores; at Darcy's flux under the buoyant-weight gradient this
   takes ~ (dphi/phi^2) (H0/D)^2 / alpha T_visq (permeability alpha D^2, alpha ~ 1.7e-3 at

@@ -27,7 +27,7 @@
  * 0.6, 0.6 and 1.2 D²); and the same
  * over R0 H0 = 128 D² in the stage's row. Heap C, the 26° triangle of
  * H0 = 8 D, holds 0.51 R0 H0: half the grains of a column of a = 0.5 (what
- * mass conservation allows, docs/validation-collapse.md).
+ * mass conservation allows, docs/notes/validation-collapse.md).
  * Front history (heap A): frames x_i(t) = x_i f(t), f = (R0 + (R − R0) S(t))/R,
  * S = (1 + tanh((t − t_c)/τ))/2, so the front grain (centre x_f) moves with
  * maximum speed x_f (R − R0)/(2 τ R); the time to rest (front within D/2 of

@@ -10,7 +10,7 @@
  * 3.1e-3). The thesis notes that softening k_n does not alter dry dynamics
  * (Izard 2014 §3.1.2.2), but here it does: at t_c sqrt(g/D) = 0.02 the columns of a >= 2
  * run out 4-10 % farther (lambda2 2.65 over 8 packing seeds against 2.46;
- * docs/validation-dem.md), the tall columns' impact overlaps reaching ~0.1 D.
+ * docs/notes/validation-dem.md), the tall columns' impact overlaps reaching ~0.1 D.
  *
  * Claims, against the published planar laws (Lube et al. 2005; Lajeunesse et al. 2005):
  *   (R_inf - R0)/R0 = lambda1 a for a below the crossover a0 ~ 2-3, with

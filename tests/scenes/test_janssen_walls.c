@@ -1,6 +1,6 @@
 /*
  * The Janssen silo's glued walls hold its column (Izard 2014 §2.1.3.2: "walls made of glued grains, so that
- * the wall friction is under control"; docs/validation-dem.md, row 6, "The wall").
+ * the wall friction is under control"; docs/notes/validation-dem.md, row 6, "The wall").
  *
  * The frictionless planes behind the glued grains are a safety net only: a grain that leans on them meets
  * a wall without friction, and one that ends behind the glued layer has left the column. A random layer

@@ -15,7 +15,7 @@
  *     included);
  *   - a surface grain woken by hand and thrown into the deposit at
  *     1 sqrt(gD) wakes the sleeping grains it hits.
- * The wall time of both runs is printed (speed-up for docs/benchmarks.md).
+ * The wall time of both runs is printed (speed-up for docs/notes/benchmarks.md).
  */
 #include <stdint.h>
 #include <stdlib.h>
@@ -110,7 +110,7 @@ int main(void)
      * therefore cannot be held to 5 % (at dt/t_c = 0.020 it differs by two
      * bins, +9.5 %); the claim is on the mean of two runs bracketing the
      * default step, dt/t_c = 0.019 and 0.021, each with sleep off and on
-     * (the mean over 0.019, 0.020, 0.021 differs by +3.1 %, docs/benchmarks.md). */
+     * (the mean over 0.019, 0.020, 0.021 differs by +3.1 %, docs/notes/benchmarks.md). */
     const double dts[2] = {0.019, 0.021};
     double r_off = 0, h_off = 0, r_on = 0, h_on = 0, w_off = 0, w_on = 0;
     for (int k = 0; k < 2; ++k) {

@@ -14,12 +14,12 @@
  *     Smaller targets are not tested here: the scene prepares its packing
  *     with contacts of t_c = 0.02 sqrt(D/g) and friction locks up to
  *     ~0.006 D of those overlaps in, whatever the run's stiffness (measured:
- *     0.0058-0.0063 D at x = 0.005, docs/benchmarks.md);
+ *     0.0058-0.0063 D at x = 0.005, docs/notes/benchmarks.md);
  *   - the time step the rule derives for x = 0.01 and a = 1 is larger than
  *     the default one (t_contact_nd = 1e-2): the rule lets a run take larger
  *     steps where its pressure allows.
  * The largest overlap / (p D / k_n) (the force-chain factor C_f the rule
- * assumes) is printed for docs/benchmarks.md.
+ * assumes) is printed for docs/notes/benchmarks.md.
  */
 #include <stdlib.h>
 

@@ -32,7 +32,7 @@
  * bed liquefied). With lubrication the claims do not hold (ctest labels
  * slow;open): the bed creeps in bursts (the fastest grain grows
  * exponentially, ~0.05 per sqrt(D/g), from 1e-4 to ~4e-3 sqrt(gD), the bed
- * sinks by ~1e-5 D, then falls quiet, and again; docs/benchmarks.md). The
+ * sinks by ~1e-5 D, then falls quiet, and again; docs/notes/benchmarks.md). The
  * bursts need the lubrication (without it the same bed relaxes to 1e-11
  * sqrt(gD)) and its large viscosity (none in water); a smaller damping cap
  * (0.1 instead of 0.25 m* / dt) did not remove them, so they are not the

@@ -73,7 +73,7 @@ static void spec_for(gf_ctx *ctx, gf_run_spec *s, const bench_args *a, long n, d
     s->contact.wall_friction = a->friction;
     s->contact.t_contact_nd = 1e-2;
     s->contact.dt_over_tc = 0.02;
-    if (a->collapse) { /* R0 = 16 D, a = 1, W = 3 D, rough base (docs/benchmarks.md, sleeping grains) */
+    if (a->collapse) { /* R0 = 16 D, a = 1, W = 3 D, rough base (docs/notes/benchmarks.md, sleeping grains) */
         gf_run_spec_set_param(ctx, s, "aspect_ratio", 1.0);
         gf_run_spec_set_param(ctx, s, "column_length_over_D", 16.0);
         gf_run_spec_set_param(ctx, s, "width_over_D", 3.0);

@@ -29,7 +29,7 @@
  *   gf-bench-skips [--case NAME]... [--repeat R]      (default: all, R = 2)
  * A case runs R x (its seeds) off/on pairs; the cost of a side is the sum over
  * the seeds of one repeat, best repeat; the observables are means over all.
- * Prints one markdown row per case (docs/benchmarks.md).
+ * Prints one markdown row per case (docs/notes/benchmarks.md).
  */
 #include <math.h>
 #include <stdio.h>

@@ -9,7 +9,7 @@
  *
  * Why the DEM benchmarks need it: with two threads the grains near the
  * boundary between the two chunks of the store are read by one core and
- * written by the other at every step (docs/benchmarks.md, "Two cores"), so
+ * written by the other at every step (docs/notes/benchmarks.md, "Two cores"), so
  * the parallel efficiency of a small bed depends on this latency as much as
  * on the code. On bare metal two cores of one CCX exchange a line in a few
  * tens of ns; a virtual machine may place its two vCPUs much farther apart,

@@ -1,6 +1,6 @@
 /*
  * What the machine's memory system alone does to a pair loop as the store
- * grows from 1e4 to 1e5 grains (docs/benchmarks.md, "Single core at 1e5:
+ * grows from 1e4 to 1e5 grains (docs/notes/benchmarks.md, "Single core at 1e5:
  * the memory system").
  *
  * The engine runs ~2x slower per particle-step on the 1e5 bed than on the

@@ -5,7 +5,7 @@
 # On a virtual machine the two cores need not run at the same speed: one may
 # share its physical core with another tenant. Measured here with `taskset`,
 # single-thread runs of the same build on cpu0 and cpu1 differed by up to a
-# third, in phases of minutes (docs/benchmarks.md). The speed-up of two
+# third, in phases of minutes (docs/notes/benchmarks.md). The speed-up of two
 # threads over "one thread" then depends on which core the one thread got.
 # This script times, in each round and back to back:
 #   R0: one thread pinned to cpu0, R1: one thread pinned to cpu1,

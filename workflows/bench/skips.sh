@@ -2,10 +2,10 @@
 # Side-by-side measurement of the skips of issue #6 (engine/gf_sim_skips.c)
 # and of the pressure-based contact stiffness (engine/gf_stiffness_rule.h):
 # speed-up (process CPU time, best of the repeats, off/on pairs run back to
-# back) and the change in each scene's observable. Results: docs/benchmarks.md.
+# back) and the change in each scene's observable. Results: docs/notes/benchmarks.md.
 #
 # usage: workflows/bench/skips.sh [BUILD_DIR] [REPEAT] [CASE...]
-# docs/benchmarks.md: `skips.sh build 3 tangential_gas tangential_bed output`
+# docs/notes/benchmarks.md: `skips.sh build 3 tangential_gas tangential_bed output`
 # and `skips.sh build 1 lubrication stiffness` (4 seeds each, ~4 CPU min).
 #        (defaults: build, 2, every case: tangential_gas tangential_bed
 #         lubrication output stiffness)

@@ -12,7 +12,7 @@
  * sigma(d) = rho_e g lambda (1 - exp(-d/lambda)) (thesis (2.11)-(2.15)).
  * The plateau is a mean over ~11 slabs; the fit's lambda is set by the few
  * slabs where the profile bends, and the profile bends more sharply than the
- * exponential (docs/validation-dem.md, "Janssen (row 6)"), so it is the
+ * exponential (docs/notes/validation-dem.md, "Janssen (row 6)"), so it is the
  * noisier of the two.
  *
  * Reference: the finest affordable setting (dt = t_c/100, t_c sqrt(g/D) =
@@ -25,7 +25,7 @@
  * collapse_runout), compared with the same mean at the finest setting, whose
  * seed scatter is printed. Three seeds resolve differences of ~17 % only
  * (2 sd of a difference of two means); ~9 would resolve the tolerance
- * (docs/benchmarks.md, "Janssen column").
+ * (docs/notes/benchmarks.md, "Janssen column").
  * Tolerance 10 %: the seed quotes its plateau at +-20 % (700 Pa) and f_p K at
  * +-20 % (0.30 +- 0.06); a numerical setting may add half of that band.
  */
@@ -85,7 +85,7 @@ static gf_status janssen_spec(gf_ctx *ctx, const bench_knobs *k, unsigned seed, 
     s->contact.dt_over_tc = k->dt_over_tc;
     s->contact.t_contact_nd = k->t_contact_nd;
     s->contact.skin_over_D = k->skin_over_D;
-    /* the square-lattice walls the case was measured with (docs/benchmarks.md, "Janssen column") */
+    /* the square-lattice walls the case was measured with (docs/notes/benchmarks.md, "Janssen column") */
     GF_TRY(gf_run_spec_set_param(ctx, s, "random_walls", 0.0));
     GF_TRY(gf_run_spec_set_param(ctx, s, "side_over_D", JAN_SIDE_OVER_D));
     return gf_run_spec_set_param(ctx, s, "fill_height_over_D", JAN_FILL_OVER_D);
