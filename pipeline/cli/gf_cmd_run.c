@@ -91,7 +91,8 @@ int gf_cmd_run(int argc, char **argv)
                            .campaign = c->name,
                            .progress = on_progress,
                            .progress_user = &ps,
-                           .interrupt = gf_cli_catch_signals()};
+                           .interrupt = gf_cli_catch_signals(),
+                           .lock_what = "run"};
     gf_run_result res;
     gf_status st = gf_run_execute(&ctx, spec, &eo, &res);
     if (ps.tty)
@@ -99,6 +100,9 @@ int gf_cmd_run(int argc, char **argv)
     int code = GF_EXIT_OK;
     if (st != GF_OK) {
         gf_cli_print_error(&ctx);
+        code = GF_EXIT_RUN_FAILED;
+    } else if (res.held) {
+        fprintf(stderr, "run %s not started: %s\n", spec->run_id, res.message);
         code = GF_EXIT_RUN_FAILED;
     } else if (res.status != GF_OK) {
         fprintf(stderr, "run %s failed: %s\n", spec->run_id, res.message);
