@@ -29,7 +29,6 @@ const gf_post_col gf_summary_identity_cols[] = {
      "ok, failed (the run), corrupt (done, but its files fail their manifest), error (post-processing), "
      "incomplete (no status file, or being written)"},
     {"error", 1, "", "per-run messages"},
-    {"notes", 1, "", "results left empty and why (a stage whose input the run did not write)"},
     {"fluid_model", 1, "", "fluid tier that ran"},
     {"realised_St", 0, "1", "Stokes number realised by the physical values"},
     {"realised_r", 0, "1", "density ratio realised by the physical values"},
@@ -39,6 +38,7 @@ const gf_post_col gf_summary_identity_cols[] = {
     {"H0_m", 0, "m", "initial column height H0"},
     {"stages", 1, "", "post-processing stages that produced results (name@version)"},
     {"run_dir", 1, "", "run directory"},
+    {"notes", 1, "", "results left empty and why (a stage whose input the run did not write)"},
     {NULL, 0, NULL, NULL}};
 
 /* Text of an identity column held in the row's fixed fields. */
