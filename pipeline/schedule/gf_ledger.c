@@ -94,8 +94,12 @@ void gf_ledger_lock_path(const char *run_dir, char *buf, size_t n)
 void gf_ledger_clear(const char *run_dir)
 {
     char path[4200];
-    snprintf(path, sizeof path, "%s/status", run_dir);
-    remove(path);
+    /* "failed: interrupted ...; checkpoint written" stays: a continuation
+     * killed in turn can still continue from the same checkpoint */
+    if (gf_ledger_state(run_dir, NULL, 0) == GF_RUN_DONE) {
+        snprintf(path, sizeof path, "%s/status", run_dir);
+        remove(path);
+    }
     snprintf(path, sizeof path, "%s/manifest", run_dir);
     remove(path);
 }

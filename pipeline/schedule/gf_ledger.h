@@ -45,8 +45,9 @@ gf_run_state gf_ledger_state(const char *run_dir, char *reason, size_t n);
 gf_run_state gf_ledger_verified_state(const char *run_dir, char *reason, size_t n);
 /* <run_dir>/.lock into buf. */
 void gf_ledger_lock_path(const char *run_dir, char *buf, size_t n);
-/* Removes the status and the manifest: a run that starts again is unfinished
- * until it ends, whatever its directory said before. */
+/* Removes the manifest and a done status: a run that starts again is
+ * unfinished until it ends, whatever its directory said before (a failed
+ * status stays, for gf_ledger_can_continue). */
 void gf_ledger_clear(const char *run_dir);
 /* 1 when the run in run_dir can continue from its checkpoint instead of
  * starting again: its status says it was interrupted after writing

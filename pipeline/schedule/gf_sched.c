@@ -203,12 +203,12 @@ static void report_finished(display *d, const gf_campaign *c, int index, const c
     gf_sched_describe(&c->runs[index], what, sizeof what);
     format_duration(wall_s, wall, sizeof wall);
     continued_text(&c->runs[index].spec, continued_from_s, cont, sizeof cont);
+    const int seen = d->done + d->failed + d->held + d->elsewhere;
     if (state == GF_RUN_DONE)
-        printf("[%d/%d] %s done    %s  (%s%s)\n", d->done + d->failed + d->held + d->elsewhere, d->total, c->runs[index].spec.run_id, what,
-               wall, cont);
+        printf("[%d/%d] %s done    %s  (%s%s)\n", seen, d->total, c->runs[index].spec.run_id, what, wall, cont);
     else
-        printf("[%d/%d] %s failed: %s  (%s, %s%s)\n", d->done + d->failed + d->held + d->elsewhere, d->total, c->runs[index].spec.run_id,
-               reason, what, wall, cont);
+        printf("[%d/%d] %s failed: %s  (%s, %s%s)\n", seen, d->total, c->runs[index].spec.run_id, reason, what, wall,
+               cont);
     fflush(stdout);
 }
 
@@ -266,8 +266,13 @@ static void record_lost_worker(const char *dir, int wstatus)
     gf_lock *lock = NULL;
     gf_lock_holder other;
     gf_ledger_lock_path(dir, lock_path, sizeof lock_path);
-    if (gf_ledger_mkdirs(&tmp, dir) == GF_OK && gf_lock_take(&tmp, lock_path, "campaign", 0.0, &lock, &other, NULL) == GF_OK &&
-        lock && gf_ledger_state(dir, NULL, 0) == GF_RUN_NEW)
+    if (gf_ledger_mkdirs(&tmp, dir) != GF_OK ||
+        gf_lock_take(&tmp, lock_path, "campaign", 0.0, &lock, &other, NULL) != GF_OK || !lock)
+        return;
+    /* an earlier failure's reason is replaced, but not a checkpoint the run can still continue from */
+    char reason[600];
+    gf_run_state state = gf_ledger_state(dir, reason, sizeof reason);
+    if (state == GF_RUN_NEW || (state == GF_RUN_FAILED && !strstr(reason, "checkpoint written")))
         gf_ledger_set_failed(&tmp, dir, why);
     gf_lock_release(&lock);
 }
