@@ -7,9 +7,13 @@
  * 2. Per run: identity from the status file and the first readable run file
  *    (diagnostics.nc, particles.nc, probes.nc, fields.nc): run_id, scene,
  *    fluid_model and the groups asked for and realised (docs/output.md).
- *    A failed run ("failed: reason") is marked and not analysed; a corrupt
- *    file or a stage failure is recorded in the row's error column with the
- *    stage's name, and the other stages and runs go on.
+ *    A failed run ("failed: reason") is marked and not analysed; a done run
+ *    whose files do not match its manifest is marked corrupt (and still
+ *    analysed as far as its files allow); a run another process holds is
+ *    marked incomplete and left alone; a corrupt file or a stage failure is
+ *    recorded in the row's error column with the stage's name, a stage whose
+ *    input the run did not write in its notes, and the other stages and runs
+ *    go on.
  * 3. Stages: every stage of the table, or opt->stage alone, each writing its
  *    scalars into the row and its series into <run>/post_<stage>.nc.
  *    With n_jobs > 1, runs are processed by forked workers (netCDF-C is not
@@ -17,7 +21,9 @@
  *    so the rows do not depend on n_jobs.
  * 4. summary.nc / summary.csv (gf_summary.h), then the SVG files of figures/: the
  *    diagrams from summary.nc alone, the time series from the per-run
- *    post_deposit.nc and probes.nc.
+ *    post_deposit.nc and probes.nc; all under the campaign's .summary.lock.
+ * gf_post_tree finds the campaign directories below a directory that holds
+ * no run, and post-processes each.
  */
 #include "gf_post.h"
 
