@@ -7,9 +7,13 @@
  * 2. Per run: identity from the status file and the first readable run file
  *    (diagnostics.nc, particles.nc, probes.nc, fields.nc): run_id, scene,
  *    fluid_model and the groups asked for and realised (docs/output.md).
- *    A failed run ("failed: reason") is marked and not analysed; a corrupt
- *    file or a stage failure is recorded in the row's error column with the
- *    stage's name, and the other stages and runs go on.
+ *    A failed run ("failed: reason") is marked and not analysed; a done run
+ *    whose files do not match its manifest is marked corrupt (and still
+ *    analysed as far as its files allow); a run another process holds is
+ *    marked incomplete and left alone; a corrupt file or a stage failure is
+ *    recorded in the row's error column with the stage's name, a stage whose
+ *    input the run did not write in its notes, and the other stages and runs
+ *    go on.
  * 3. Stages: every stage of the table, or opt->stage alone, each writing its
  *    scalars into the row and its series into <run>/post_<stage>.nc.
  *    With n_jobs > 1, runs are processed by forked workers (netCDF-C is not
@@ -17,16 +21,20 @@
  *    so the rows do not depend on n_jobs.
  * 4. summary.nc / summary.csv (gf_summary.h), then the SVG files of figures/: the
  *    diagrams from summary.nc alone, the time series from the per-run
- *    post_deposit.nc and probes.nc.
+ *    post_deposit.nc and probes.nc; all under the campaign's .summary.lock.
+ * gf_post_tree finds the campaign directories below a directory that holds
+ * no run, and post-processes each.
  */
 #include "gf_post.h"
 
 #include <dirent.h>
 #include <errno.h>
 #include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/prctl.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -34,6 +42,8 @@
 #include "figures/gf_figures.h"
 #include "gf_ncread.h"
 #include "gf_summary.h"
+#include "rundir/gf_lock.h"
+#include "rundir/gf_manifest.h"
 #include "stages/gf_stage.h"
 #include "stages/gf_stage_util.h"
 
@@ -122,8 +132,14 @@ static void read_status(gf_post_row *row)
         line[0] = '\0';
     fclose(f);
     line[strcspn(line, "\r\n")] = '\0';
-    if (strncmp(line, "done", 4) == 0)
+    if (strncmp(line, "done", 4) == 0) {
+        char why[600], msg[700];
+        if (!gf_manifest_verify(row->run_dir, why, sizeof why)) {
+            snprintf(msg, sizeof msg, "marked done, but %s", why);
+            gf_post_row_add_error(row, "corrupt", msg);
+        }
         return;
+    }
     if (strncmp(line, "failed", 6) == 0) {
         const char *why = line + 6;
         while (*why == ':' || *why == ' ')
@@ -219,7 +235,16 @@ static void stage_name_add(gf_post_row *row, const gf_stage_info *s)
     snprintf(row->stages + len, sizeof row->stages - len, "%s%s@%d", len ? "," : "", s->name, s->version);
 }
 
-/* Everything for one run, into *row. */
+static void add_note(gf_post_row *row, const char *msg)
+{
+    size_t len = strlen(row->notes);
+    if (len + 3 < sizeof row->notes)
+        snprintf(row->notes + len, sizeof row->notes - len, "%s%.300s", len ? "; " : "", msg);
+}
+
+/* Everything for one run, into *row. The stages write post_<stage>.nc into
+ * the run directory, so they run under its lock; a run another process is
+ * writing is reported as such and left alone. */
 static void post_run(const char *run_dir, const gf_stage_info *only, gf_post_row *row)
 {
     gf_post_row_init(row, run_dir);
@@ -227,6 +252,17 @@ static void post_run(const char *run_dir, const gf_stage_info *only, gf_post_row
     read_identity(row);
     if (strcmp(row->status, "failed") == 0)
         return;
+    char lock_path[1200], who[300], msg[400];
+    gf_lock *lock = NULL;
+    gf_lock_holder holder;
+    snprintf(lock_path, sizeof lock_path, "%s/.lock", run_dir);
+    gf_ctx lc = {0};
+    if (gf_lock_take(&lc, lock_path, "post", 0.0, &lock, &holder, NULL) == GF_OK && !lock) {
+        gf_lock_describe(&holder, who, sizeof who);
+        snprintf(msg, sizeof msg, "being written by %s", who);
+        gf_post_row_add_error(row, "incomplete", msg);
+        return;
+    }
     gf_stage_in in = {run_dir, row->scene};
     gf_stage_opts opts = {1};
     gf_stage_out out = {row};
@@ -236,14 +272,16 @@ static void post_run(const char *run_dir, const gf_stage_info *only, gf_post_row
             continue;
         gf_ctx c = {0};
         gf_status st = si->fn(&c, &in, &opts, &out);
-        if (st == GF_OK) {
+        char line[700];
+        snprintf(line, sizeof line, "stage %s: %s", si->name, c.last_msg[0] ? c.last_msg : gf_status_str(st));
+        if (st == GF_OK)
             stage_name_add(row, si);
-        } else if (st != GF_ERR_UNSUPPORTED) {
-            char msg[700];
-            snprintf(msg, sizeof msg, "stage %s: %s", si->name, c.last_msg[0] ? c.last_msg : gf_status_str(st));
-            gf_post_row_add_error(row, "error", msg);
-        }
+        else if (st == GF_ERR_UNSUPPORTED && c.last_msg[0]) /* an input the run did not write */
+            add_note(row, line);
+        else if (st != GF_ERR_UNSUPPORTED)
+            gf_post_row_add_error(row, "error", line);
     }
+    gf_lock_release(&lock);
 }
 
 static int write_all(int fd, const void *buf, size_t n)
@@ -292,8 +330,13 @@ static void post_parallel(char **runs, int n, const gf_stage_info *only, int n_j
             fds[j] = -1;
             if (pipe(pfd) != 0)
                 continue;
+            const pid_t parent = getpid();
             pid_t pid = fork();
             if (pid == 0) {
+                /* no post worker outlives post (it would hold a run's lock) */
+                prctl(PR_SET_PDEATHSIG, SIGKILL);
+                if (getppid() != parent)
+                    _exit(1);
                 close(pfd[0]);
                 gf_post_row *row = malloc(sizeof *row);
                 int rc = 1;
@@ -460,11 +503,58 @@ done:
     return st;
 }
 
-gf_status gf_post_campaign(gf_ctx *ctx, const char *campaign_dir, const gf_post_options *opt)
+/* Counts the rows of a summary by status into *rep. */
+static void count_rows(const gf_post_row *rows, int n, gf_post_report *rep)
+{
+    rep->n_runs += n;
+    for (int i = 0; i < n; ++i) {
+        const char *st = rows[i].status;
+        if (!strcmp(st, "ok"))
+            ++rep->n_ok;
+        else if (!strcmp(st, "failed"))
+            ++rep->n_failed;
+        else if (!strcmp(st, "corrupt"))
+            ++rep->n_corrupt;
+        else if (!strcmp(st, "incomplete"))
+            ++rep->n_incomplete;
+        else
+            ++rep->n_error;
+    }
+}
+
+/* Takes the lock of the campaign's summary and figures, waiting for another
+ * post to finish with them. */
+static gf_status lock_summary(gf_ctx *ctx, const char *dir, int quiet, gf_lock **lock)
+{
+    char path[1100], who[300];
+    gf_lock_holder holder;
+    snprintf(path, sizeof path, "%s/.summary.lock", dir);
+    GF_TRY(gf_lock_take(ctx, path, "post", 0.0, lock, &holder, NULL));
+    if (*lock)
+        return GF_OK;
+    gf_lock_describe(&holder, who, sizeof who);
+    if (!quiet)
+        fprintf(stderr, "grainflow post: %s: summary being written by %s; waiting\n", dir, who);
+    const double wait_s = 600.0;
+    GF_TRY(gf_lock_take(ctx, path, "post", wait_s, lock, &holder, NULL));
+    if (!*lock) {
+        gf_lock_describe(&holder, who, sizeof who);
+        return GF_FAIL(ctx, GF_ERR_IO, "post: %s: summary still held by %s after %.0f s; not written", dir, who,
+                       wait_s);
+    }
+    return GF_OK;
+}
+
+gf_status gf_post_campaign_report(gf_ctx *ctx, const char *campaign_dir, const gf_post_options *opt,
+                                  gf_post_report *rep)
 {
     gf_post_options defaults = {NULL, 1, 1, 0};
+    gf_post_report scratch;
     if (!opt)
         opt = &defaults;
+    if (!rep)
+        rep = &scratch;
+    memset(rep, 0, sizeof *rep);
     if (!campaign_dir)
         return GF_FAIL(ctx, GF_ERR_ARG, "post: no campaign directory");
     const gf_stage_info *only = NULL;
@@ -482,13 +572,18 @@ gf_status gf_post_campaign(gf_ctx *ctx, const char *campaign_dir, const gf_post_
     char **runs = NULL;
     int n = 0;
     GF_TRY(find_runs(ctx, campaign_dir, &runs, &n));
+    gf_lock *lock = NULL;
+    gf_status st = lock_summary(ctx, campaign_dir, opt->quiet, &lock);
     /* a single run directory writes its summary next to its files */
-    gf_post_row *rows = calloc((size_t)n + 1, sizeof *rows);
-    if (!rows) {
+    gf_post_row *rows = st == GF_OK ? calloc((size_t)n + 1, sizeof *rows) : NULL;
+    if (st == GF_OK && !rows)
+        st = GF_FAIL(ctx, GF_ERR_NOMEM, "post: out of memory");
+    if (st != GF_OK) {
         for (int i = 0; i < n; ++i)
             free(runs[i]);
         free(runs);
-        return GF_FAIL(ctx, GF_ERR_NOMEM, "post: out of memory");
+        gf_lock_release(&lock);
+        return st;
     }
     int jobs = opt->n_jobs > 1 ? opt->n_jobs : 1;
     if (jobs > 64)
@@ -506,7 +601,8 @@ gf_status gf_post_campaign(gf_ctx *ctx, const char *campaign_dir, const gf_post_
             fprintf(stderr, "grainflow post: run %s (%s): %s: %s\n", rows[i].run_id, rows[i].run_dir, rows[i].status,
                     rows[i].error);
     }
-    gf_status st = gf_summary_write(ctx, campaign_dir, rows, n);
+    count_rows(rows, n, rep);
+    st = gf_summary_write(ctx, campaign_dir, rows, n);
     if (st == GF_OK && opt->figures) {
         char p[1100];
         snprintf(p, sizeof p, "%s/summary.nc", campaign_dir);
@@ -517,6 +613,7 @@ gf_status gf_post_campaign(gf_ctx *ctx, const char *campaign_dir, const gf_post_
             st = write_figures(ctx, campaign_dir, back, nb);
         free(back);
     }
+    gf_lock_release(&lock);
     if (!opt->quiet)
         fprintf(stderr, "grainflow post: %d run(s) summarised in %s/summary.{nc,csv}, %d marked\n", n, campaign_dir,
                 n_bad);
@@ -524,5 +621,103 @@ gf_status gf_post_campaign(gf_ctx *ctx, const char *campaign_dir, const gf_post_
         free(runs[i]);
     free(runs);
     free(rows);
+    return st;
+}
+
+gf_status gf_post_campaign(gf_ctx *ctx, const char *campaign_dir, const gf_post_options *opt)
+{
+    return gf_post_campaign_report(ctx, campaign_dir, opt, NULL);
+}
+
+/* Campaign directories (holding run directories) below dir, depth first, in
+ * name order, at most max_depth levels down; appended to *list. */
+static void find_campaigns(const char *dir, int max_depth, char ***list, int *n, int *cap)
+{
+    if (max_depth < 0)
+        return;
+    DIR *d = opendir(dir);
+    if (!d)
+        return;
+    char **names = NULL;
+    int nn = 0, nc = 0, has_run = 0;
+    struct dirent *e;
+    while ((e = readdir(d))) {
+        char p[1200];
+        struct stat sb;
+        if (e->d_name[0] == '.' || !strcmp(e->d_name, "figures") || !strcmp(e->d_name, "preparations"))
+            continue;
+        snprintf(p, sizeof p, "%s/%s", dir, e->d_name);
+        if (stat(p, &sb) != 0 || !S_ISDIR(sb.st_mode))
+            continue;
+        if (is_run_dir(p)) {
+            has_run = 1;
+            continue;
+        }
+        if (nn == nc) {
+            nc = nc ? 2 * nc : 8;
+            char **grown = realloc(names, (size_t)nc * sizeof *names);
+            if (!grown)
+                break;
+            names = grown;
+        }
+        names[nn++] = strdup(p);
+    }
+    closedir(d);
+    if (has_run) {
+        if (*n == *cap) {
+            *cap = *cap ? 2 * *cap : 8;
+            char **grown = realloc(*list, (size_t)*cap * sizeof **list);
+            if (grown)
+                *list = grown;
+        }
+        if (*n < *cap)
+            (*list)[(*n)++] = strdup(dir);
+    } else {
+        if (nn)
+            qsort(names, (size_t)nn, sizeof *names, cmp_str);
+        for (int i = 0; i < nn; ++i)
+            if (names[i])
+                find_campaigns(names[i], max_depth - 1, list, n, cap);
+    }
+    for (int i = 0; i < nn; ++i)
+        free(names[i]);
+    free(names);
+}
+
+gf_status gf_post_tree(gf_ctx *ctx, const char *dir, const gf_post_options *opt, gf_post_report *rep)
+{
+    gf_post_report one;
+    memset(rep, 0, sizeof *rep);
+    char **list = NULL;
+    int n = 0, cap = 0;
+    if (is_run_dir(dir)) {
+        rep->n_campaigns = 1;
+        return gf_post_campaign_report(ctx, dir, opt, rep);
+    }
+    find_campaigns(dir, 4, &list, &n, &cap);
+    if (n == 0) {
+        free(list);
+        return GF_FAIL(ctx, GF_ERR_IO, "post: no run directory in or below %s (a run directory holds status, "
+                       "run.yaml or the run's .nc files)", dir);
+    }
+    if (!(n == 1 && strcmp(list[0], dir) == 0) && !(opt && opt->quiet))
+        fprintf(stderr, "grainflow post: %s holds %d campaign(s) below it%s\n", dir, n, n ? ":" : "");
+    gf_status st = GF_OK;
+    for (int i = 0; i < n; ++i) {
+        if (!(n == 1 && strcmp(list[i], dir) == 0) && !(opt && opt->quiet))
+            fprintf(stderr, "  %s\n", list[i]);
+        gf_status s1 = gf_post_campaign_report(ctx, list[i], opt, &one);
+        if (s1 != GF_OK && st == GF_OK)
+            st = s1;
+        rep->n_campaigns += 1;
+        rep->n_runs += one.n_runs;
+        rep->n_ok += one.n_ok;
+        rep->n_failed += one.n_failed;
+        rep->n_corrupt += one.n_corrupt;
+        rep->n_incomplete += one.n_incomplete;
+        rep->n_error += one.n_error;
+        free(list[i]);
+    }
+    free(list);
     return st;
 }

@@ -25,7 +25,9 @@ const gf_post_col gf_summary_identity_cols[] = {
     {"r", 0, "1", "density ratio r = sqrt(5 rho_p / 3 rho_f) asked for by the campaign"},
     {"a", 0, "1", "column aspect ratio H0/R0 asked for by the campaign"},
     {"Phi_i", 0, "1", "initial packing fraction asked for by the campaign"},
-    {"status", 1, "", "ok, failed (the run), error (post-processing), incomplete (no status file)"},
+    {"status", 1, "",
+     "ok, failed (the run), corrupt (done, but its files fail their manifest), error (post-processing), "
+     "incomplete (no status file, or being written)"},
     {"error", 1, "", "per-run messages"},
     {"fluid_model", 1, "", "fluid tier that ran"},
     {"realised_St", 0, "1", "Stokes number realised by the physical values"},
@@ -36,6 +38,7 @@ const gf_post_col gf_summary_identity_cols[] = {
     {"H0_m", 0, "m", "initial column height H0"},
     {"stages", 1, "", "post-processing stages that produced results (name@version)"},
     {"run_dir", 1, "", "run directory"},
+    {"notes", 1, "", "results left empty and why (a stage whose input the run did not write)"},
     {NULL, 0, NULL, NULL}};
 
 /* Text of an identity column held in the row's fixed fields. */
@@ -45,6 +48,7 @@ static const char *ident_text(const gf_post_row *row, const char *name)
     if (strcmp(name, "scene") == 0) return row->scene;
     if (strcmp(name, "status") == 0) return row->status;
     if (strcmp(name, "error") == 0) return row->error;
+    if (strcmp(name, "notes") == 0) return row->notes;
     if (strcmp(name, "fluid_model") == 0) return row->fluid_model;
     if (strcmp(name, "stages") == 0) return row->stages;
     if (strcmp(name, "run_dir") == 0) return row->run_dir;
@@ -246,6 +250,7 @@ gf_status gf_summary_read(gf_ctx *ctx, const char *path, gf_post_row **rows_out,
                 else if (strcmp(cols[c]->name, "scene") == 0) snprintf(row->scene, sizeof row->scene, "%s", v);
                 else if (strcmp(cols[c]->name, "status") == 0) snprintf(row->status, sizeof row->status, "%s", v);
                 else if (strcmp(cols[c]->name, "error") == 0) snprintf(row->error, sizeof row->error, "%s", v);
+                else if (strcmp(cols[c]->name, "notes") == 0) snprintf(row->notes, sizeof row->notes, "%s", v);
                 else if (strcmp(cols[c]->name, "fluid_model") == 0)
                     snprintf(row->fluid_model, sizeof row->fluid_model, "%s", v);
                 else if (strcmp(cols[c]->name, "stages") == 0) snprintf(row->stages, sizeof row->stages, "%s", v);

@@ -2,7 +2,7 @@
 # Installs grainflow's build and test dependencies from Debian packages.
 # Runs apt-get only when something is missing (root, or sudo when available).
 set -euo pipefail
-pkgs=(build-essential cmake pkg-config git libyaml-dev libnetcdf-dev netcdf-bin libhdf5-dev
+pkgs=(build-essential cmake pkg-config git libyaml-dev libnetcdf-dev netcdf-bin libhdf5-dev zlib1g-dev
       libfftw3-dev libudunits2-dev libopenmpi-dev openmpi-bin python3 python3-netcdf4 python3-xarray)
 missing=()
 for p in "${pkgs[@]}"; do

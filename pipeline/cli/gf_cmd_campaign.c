@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "cli/gf_cli.h"
+#include "cli/gf_cli_verdict.h"
 #include "gf_post.h"
 #include "schedule/gf_comm.h"
 #include "schedule/gf_ledger.h"
@@ -39,7 +40,13 @@ static const char campaign_help[] =
     "      --set KEY=VALUE  override a configuration value in every run, e.g. --set end_time=5\n"
     "  -q, --quiet          no per-run lines\n"
     "\n"
-    "exit status: 0 all runs done, 1 a run failed or interrupted, 2 usage/configuration error\n";
+    "Each run directory has one writer at a time (a lock file): a run another\n"
+    "process holds is skipped with its holder named. Done runs are checked against\n"
+    "their manifest (sizes, CRC-32) by --resume, --dry-run and post; one that fails\n"
+    "is run again under --resume (docs/integrity.md).\n"
+    "\n"
+    "exit status: 0 all runs done, 1 a run failed, was left to another process or\n"
+    "the campaign was interrupted, or post-processing marked a run; 2 usage/configuration error\n";
 
 static const char demo_help[] =
     "usage: grainflow demo [options]\n"
@@ -81,11 +88,15 @@ static void dry_run(const gf_campaign *c, const char *out_dir)
     for (int i = 0; i < c->n_runs; ++i) {
         char dir[4200], what[200], reason[520];
         gf_ledger_run_dir(out_dir, c->name, c->runs[i].spec.run_id, dir, sizeof dir);
-        gf_run_state st = gf_ledger_state(dir, reason, sizeof reason);
+        gf_run_state st = gf_ledger_verified_state(dir, reason, sizeof reason);
         gf_sched_describe(&c->runs[i], what, sizeof what);
+        const int why = st == GF_RUN_FAILED || st == GF_RUN_CORRUPT;
         printf("%4d  %s  %-7s %s%s%s\n", i, c->runs[i].spec.run_id,
-               st == GF_RUN_DONE ? "done" : st == GF_RUN_FAILED ? "failed" : "new", what,
-               st == GF_RUN_FAILED ? "  -- " : "", st == GF_RUN_FAILED ? reason : "");
+               st == GF_RUN_DONE      ? "done"
+               : st == GF_RUN_FAILED  ? "failed"
+               : st == GF_RUN_CORRUPT ? "corrupt"
+                                      : "new",
+               what, why ? "  -- " : "", why ? reason : "");
     }
 }
 
@@ -216,23 +227,35 @@ int gf_cli_campaign_common(const char *cmd, int argc, char **argv, const char *e
         gf_cli_print_error(&ctx);
         code = GF_EXIT_RUN_FAILED;
     }
-    if (counts.n_failed > 0)
+    if (counts.n_failed > 0 || counts.n_held > 0)
         code = GF_EXIT_RUN_FAILED;
-    if (gf_comm_rank() == 0)
+    if (gf_comm_rank() == 0) {
         printf("campaign %s: %d done, %d failed, %d skipped (already done) in %.1f s\n", c->name, counts.n_done,
                counts.n_failed, counts.n_skipped, gf_wtime() - t0);
+        if (counts.n_rerun > 0)
+            printf("campaign %s: %d run(s) marked done failed their manifest check and were run again\n", c->name,
+                   counts.n_rerun);
+        if (counts.n_held > 0)
+            printf("campaign %s: %d run(s) left to another process that holds them (above); `--resume` after it "
+                   "ends completes the campaign\n",
+                   c->name, counts.n_held);
+    }
     gf_comm_barrier();
     if (!no_post && st != GF_ERR_INTERRUPTED && gf_comm_rank() == 0) {
         char dir[4200];
         snprintf(dir, sizeof dir, "%s/%s", out_dir, c->name);
         gf_post_options po = {.stage = NULL, .n_jobs = n_jobs, .figures = 1, .quiet = quiet};
+        gf_post_report rep;
         gf_ctx pctx = {.log_level = GF_LOG_WARN};
         fflush(stdout);
-        if (gf_post_campaign(&pctx, dir, &po) != GF_OK) {
+        if (gf_post_campaign_report(&pctx, dir, &po, &rep) != GF_OK) {
             fprintf(stderr, "grainflow %s: post-processing failed: %s\n", cmd, pctx.last_msg);
             code = GF_EXIT_RUN_FAILED;
-        } else if (!quiet) {
-            printf("summary: %s/summary.csv, %s/summary.nc\n", dir, dir);
+        } else {
+            if (gf_cli_post_verdict(cmd, &rep))
+                code = GF_EXIT_RUN_FAILED;
+            if (!quiet)
+                printf("summary: %s/summary.csv, %s/summary.nc\n", dir, dir);
         }
     }
     gf_campaign_destroy(&c);

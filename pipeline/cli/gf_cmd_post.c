@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 
 #include "cli/gf_cli.h"
+#include "cli/gf_cli_verdict.h"
 #include "gf_post.h"
 
 static const char help[] =
@@ -13,6 +14,10 @@ static const char help[] =
     "directory, or one run directory), then writes DIR/summary.csv, DIR/summary.nc\n"
     "(one row per run, failed runs included) and DIR/figures/*.svg. Reads only the\n"
     "netCDF files, so runs made elsewhere or by another version are treated alike.\n"
+    "A DIR holding no run (e.g. the -o directory of campaigns) is searched for the\n"
+    "campaigns below it, each summarised in its own directory. A run marked done\n"
+    "is verified against its manifest first (sizes, CRC-32): one that fails is\n"
+    "'corrupt' in the summary.\n"
     "\n"
     "options:\n"
     "      --stage NAME   run only this stage\n"
@@ -20,7 +25,9 @@ static const char help[] =
     "      --no-figures   skip the SVG figures\n"
     "  -q, --quiet        no per-run lines\n"
     "\n"
-    "exit status: 0 success, 1 post-processing failed, 2 usage error\n";
+    "exit status: 0 every run ok; 1 a run failed, corrupt, incomplete or its\n"
+    "post-processing failed (the summary is still written, with the reasons), or no\n"
+    "run found; 2 usage error\n";
 
 int gf_cmd_post(int argc, char **argv)
 {
@@ -56,10 +63,11 @@ int gf_cmd_post(int argc, char **argv)
         return gf_cli_usage_error("post", "%s: not a directory", dir);
     gf_ctx ctx = {.log_level = GF_LOG_WARN};
     gf_post_options po = {.stage = stage, .n_jobs = n_jobs, .figures = figures, .quiet = quiet};
-    gf_status st = gf_post_campaign(&ctx, dir, &po);
+    gf_post_report rep;
+    gf_status st = gf_post_tree(&ctx, dir, &po, &rep);
     if (st != GF_OK) {
         gf_cli_print_error(&ctx);
         return st == GF_ERR_CONFIG || st == GF_ERR_ARG ? GF_EXIT_USAGE : GF_EXIT_RUN_FAILED;
     }
-    return GF_EXIT_OK;
+    return gf_cli_post_verdict("post", &rep) ? GF_EXIT_RUN_FAILED : GF_EXIT_OK;
 }

@@ -16,14 +16,18 @@ static const char help[] =
     "Runs the one run SCENE.yaml describes into DIR/<name>/<run-id>/ (run.yaml,\n"
     "particles.nc, diagnostics.nc, probes.nc, fields.nc, status). A run.yaml\n"
     "written by an earlier run reproduces it exactly (same run id). A file with a\n"
-    "grid or variants is a campaign: use grainflow campaign.\n"
+    "grid or variants is a campaign: use grainflow campaign. A run directory that\n"
+    "another process is writing (its .lock is held) is left alone, naming the\n"
+    "holder; `done` is written after the run's files are reopened and listed with\n"
+    "their sizes and CRC-32 in its manifest (docs/integrity.md).\n"
     "\n"
     "options:\n"
     "  -o, --output DIR     output directory (default: runs)\n"
     "      --set KEY=VALUE  override a value, e.g. --set scene.aspect_ratio=2 --set fluid.model=none\n"
     "  -q, --quiet          no progress line\n"
     "\n"
-    "exit status: 0 done, 1 the run failed, 2 usage/configuration error\n";
+    "exit status: 0 done, 1 the run failed or its directory is held by another process,\n"
+    "2 usage/configuration error\n";
 
 typedef struct progress_state {
     int tty;
@@ -91,7 +95,8 @@ int gf_cmd_run(int argc, char **argv)
                            .campaign = c->name,
                            .progress = on_progress,
                            .progress_user = &ps,
-                           .interrupt = gf_cli_catch_signals()};
+                           .interrupt = gf_cli_catch_signals(),
+                           .lock_what = "run"};
     gf_run_result res;
     gf_status st = gf_run_execute(&ctx, spec, &eo, &res);
     if (ps.tty)
@@ -99,6 +104,9 @@ int gf_cmd_run(int argc, char **argv)
     int code = GF_EXIT_OK;
     if (st != GF_OK) {
         gf_cli_print_error(&ctx);
+        code = GF_EXIT_RUN_FAILED;
+    } else if (res.held) {
+        fprintf(stderr, "run %s not started: %s\n", spec->run_id, res.message);
         code = GF_EXIT_RUN_FAILED;
     } else if (res.status != GF_OK) {
         fprintf(stderr, "run %s failed: %s\n", spec->run_id, res.message);

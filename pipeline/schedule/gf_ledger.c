@@ -10,6 +10,7 @@
 
 #include "campaign/gf_spec_text.h"
 #include "core/gf_build_info.h"
+#include "rundir/gf_manifest.h"
 
 gf_status gf_ledger_mkdirs(gf_ctx *ctx, const char *path)
 {
@@ -77,6 +78,32 @@ gf_run_state gf_ledger_state(const char *run_dir, char *reason, size_t n)
     return GF_RUN_FAILED;
 }
 
+gf_run_state gf_ledger_verified_state(const char *run_dir, char *reason, size_t n)
+{
+    gf_run_state st = gf_ledger_state(run_dir, reason, n);
+    if (st == GF_RUN_DONE && !gf_manifest_verify(run_dir, reason, n))
+        return GF_RUN_CORRUPT;
+    return st;
+}
+
+void gf_ledger_lock_path(const char *run_dir, char *buf, size_t n)
+{
+    snprintf(buf, n, "%s/.lock", run_dir);
+}
+
+void gf_ledger_clear(const char *run_dir)
+{
+    char path[4200];
+    /* "failed: interrupted ...; checkpoint written" stays: a continuation
+     * killed in turn can still continue from the same checkpoint */
+    if (gf_ledger_state(run_dir, NULL, 0) == GF_RUN_DONE) {
+        snprintf(path, sizeof path, "%s/status", run_dir);
+        remove(path);
+    }
+    snprintf(path, sizeof path, "%s/manifest", run_dir);
+    remove(path);
+}
+
 int gf_ledger_can_continue(const char *run_dir, const char *yaml, size_t len)
 {
     char reason[600], path[4200];
@@ -102,6 +129,7 @@ int gf_ledger_can_continue(const char *run_dir, const char *yaml, size_t len)
 gf_status gf_ledger_set_done(gf_ctx *ctx, const char *run_dir)
 {
     char path[4200];
+    GF_TRY(gf_manifest_write(ctx, run_dir));
     snprintf(path, sizeof path, "%s/status", run_dir);
     return gf_ledger_write_atomic(ctx, path, "done\n", 5);
 }

@@ -7,6 +7,8 @@
 
 #include "core/gf_timer.h"
 #include "gf_sim.h"
+#include "rundir/gf_lock.h"
+#include "rundir/gf_manifest.h"
 #include "schedule/gf_ledger.h"
 
 /* <campaign dir>/preparations for run_dir = <campaign dir>/<run id>: the
@@ -22,6 +24,36 @@ static void preparation_dir(const char *run_dir, char *buf, size_t n)
     snprintf(buf, n, "%.*s/preparations", (int)(slash - run_dir), run_dir);
 }
 
+/* Takes the run directory's lock. *lock NULL and res->held set when another
+ * process holds it; a lock left by a holder that died is taken over, saying so. */
+static gf_status lock_run(gf_ctx *ctx, const gf_run_spec *spec, const gf_run_exec_opts *opt, gf_run_result *res,
+                          gf_lock **lock)
+{
+    char path[4200], who[300];
+    gf_lock_holder holder;
+    int stale = 0;
+    gf_ledger_lock_path(opt->run_dir, path, sizeof path);
+    GF_TRY(gf_lock_take(ctx, path, opt->lock_what ? opt->lock_what : "run", 0.0, lock, &holder, &stale));
+    gf_lock_describe(&holder, who, sizeof who);
+    if (!*lock) {
+        res->held = 1;
+        snprintf(res->message, sizeof res->message, "run directory held by %s: left to it", who);
+    } else if (stale) {
+        gf_log(ctx, GF_LOG_WARN, "run %s: took over the lock of %s, which ended without releasing it", spec->run_id,
+               who);
+    }
+    return GF_OK;
+}
+
+/* A run another process finished since keep_done_since (verified). */
+static int done_meanwhile(const gf_run_exec_opts *opt)
+{
+    if (!opt->keep_done || gf_ledger_state(opt->run_dir, NULL, 0) != GF_RUN_DONE ||
+        gf_manifest_time(opt->run_dir) < opt->keep_done_since)
+        return 0;
+    return gf_ledger_verified_state(opt->run_dir, NULL, 0) == GF_RUN_DONE;
+}
+
 gf_status gf_run_execute(gf_ctx *ctx, const gf_run_spec *spec, const gf_run_exec_opts *opt, gf_run_result *res)
 {
     memset(res, 0, sizeof *res);
@@ -29,18 +61,31 @@ gf_status gf_run_execute(gf_ctx *ctx, const gf_run_spec *spec, const gf_run_exec
     size_t yaml_len = 0;
     char checkpoint[4200], preparations[4200] = "";
     int cont = 0;
+    gf_lock *lock = NULL;
     if (opt->run_dir) {
         GF_TRY(gf_ledger_mkdirs(ctx, opt->run_dir));
+        GF_TRY(lock_run(ctx, spec, opt, res, &lock));
+        if (!lock)
+            return GF_OK;
+        if (done_meanwhile(opt)) {
+            res->already_done = 1;
+            gf_lock_release(&lock);
+            return GF_OK;
+        }
         yaml = gf_ledger_run_yaml(spec, opt->campaign ? opt->campaign : "run", &yaml_len);
-        if (!yaml)
+        if (!yaml) {
+            gf_lock_release(&lock);
             return GF_FAIL(ctx, GF_ERR_NOMEM, "out of memory");
+        }
         cont = opt->resume && gf_ledger_can_continue(opt->run_dir, yaml, yaml_len);
+        gf_ledger_clear(opt->run_dir);
         snprintf(checkpoint, sizeof checkpoint, "%s/checkpoint.h5", opt->run_dir);
         preparation_dir(opt->run_dir, preparations, sizeof preparations);
         char path[4200];
         snprintf(path, sizeof path, "%s/run.yaml", opt->run_dir);
         gf_status st = gf_ledger_write_atomic(ctx, path, yaml, yaml_len);
         if (st != GF_OK) {
+            gf_lock_release(&lock);
             free(yaml);
             return st;
         }
@@ -76,5 +121,14 @@ gf_status gf_run_execute(gf_ctx *ctx, const gf_run_spec *spec, const gf_run_exec
                  run_ctx.last_msg[0] ? run_ctx.last_msg : "no message");
     if (!opt->run_dir)
         return GF_OK;
-    return st == GF_OK ? gf_ledger_set_done(ctx, opt->run_dir) : gf_ledger_set_failed(ctx, opt->run_dir, res->message);
+    if (st == GF_OK) {
+        gf_ctx check = {0};
+        if (gf_ledger_set_done(&check, opt->run_dir) != GF_OK) { /* a file that does not read back: not done */
+            res->status = GF_ERR_IO;
+            snprintf(res->message, sizeof res->message, "output check failed: %s", check.last_msg);
+        }
+    }
+    gf_status rs = res->status == GF_OK ? GF_OK : gf_ledger_set_failed(ctx, opt->run_dir, res->message);
+    gf_lock_release(&lock);
+    return rs;
 }

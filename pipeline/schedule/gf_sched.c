@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/mman.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -17,6 +18,8 @@
 #include "schedule/gf_comm.h"
 #include "schedule/gf_ledger.h"
 #include "schedule/gf_run_exec.h"
+#include "rundir/gf_lock.h"
+#include "rundir/gf_manifest.h"
 
 void gf_sched_describe(const gf_campaign_run *r, char *buf, size_t n)
 {
@@ -75,8 +78,13 @@ void gf_sched_progress_text(const gf_progress *p, char *buf, size_t n)
 
 /* --- shared progress table between the pool and its workers --- */
 
+/* What a worker did with its run, beyond its status file. */
+enum { OUTCOME_RAN = 0, OUTCOME_HELD, OUTCOME_DONE_ELSEWHERE };
+
 typedef struct slot {
     volatile int run;           /* run index, -1: free */
+    volatile int outcome;       /* OUTCOME_*, written by the worker */
+    char message[640];          /* the holder, for OUTCOME_HELD */
     gf_progress progress;       /* written by the worker, read by the parent (a torn read only blurs one frame) */
     pid_t pid;
     volatile double continued_from_s; /* written by the worker before it exits: > 0 when it continued a checkpoint */
@@ -97,13 +105,22 @@ static void child_on_signal(int sig)
 
 /* The worker process: one run, then _exit (the child must not return into
  * the caller's stack, nor run its atexit handlers or flush its stdio twice). */
-static void worker(const gf_campaign *c, int index, const char *run_dir, int n_threads, int resume, slot *s)
+static void worker(const gf_campaign *c, int index, const char *run_dir, int n_threads, const gf_sched_opts *opt,
+                   double started, pid_t parent, slot *s)
 {
     struct sigaction sa = {0};
     sa.sa_handler = child_on_signal;
     sigemptyset(&sa.sa_mask);
     sigaction(SIGINT, &sa, NULL);
     sigaction(SIGTERM, &sa, NULL);
+    /* A worker never outlives the pool: its parent's end sends it SIGTERM (it
+     * stops at its next step and checkpoints). A parent that died before the
+     * request was registered shows as a changed parent id. */
+    prctl(PR_SET_PDEATHSIG, SIGTERM);
+    if (getppid() != parent)
+        _exit(1);
+    char what[GF_NAME_LEN + 16];
+    snprintf(what, sizeof what, "campaign %s", c->name);
     gf_ctx ctx = {.log_level = GF_LOG_WARN};
     gf_run_exec_opts eo = {.run_dir = run_dir,
                            .campaign = c->name,
@@ -111,10 +128,15 @@ static void worker(const gf_campaign *c, int index, const char *run_dir, int n_t
                            .progress = on_progress,
                            .progress_user = s,
                            .interrupt = &child_interrupt,
-                           .resume = resume};
+                           .resume = opt->resume,
+                           .lock_what = what,
+                           .keep_done = 1,
+                           .keep_done_since = opt->resume ? 0.0 : started};
     gf_run_result res;
     gf_status st = gf_run_execute(&ctx, &c->runs[index].spec, &eo, &res);
     s->continued_from_s = res.continued_from_s;
+    s->outcome = res.held ? OUTCOME_HELD : res.already_done ? OUTCOME_DONE_ELSEWHERE : OUTCOME_RAN;
+    snprintf(s->message, sizeof s->message, "%s", res.held ? res.message : "");
     if (st != GF_OK)
         fprintf(stderr, "grainflow: %s\n", gf_ctx_message(&ctx));
     fflush(stderr);
@@ -124,6 +146,8 @@ static void worker(const gf_campaign *c, int index, const char *run_dir, int n_t
 typedef struct display {
     int tty, quiet, drawn;      /* drawn: lines of the live block on screen */
     int done, failed, total;
+    int held, elsewhere;        /* left to another process; found done by another process */
+    int *held_runs;             /* indices of the runs left to another process (held of them) */
 } display;
 
 static void clear_block(display *d)
@@ -143,6 +167,27 @@ static void continued_text(const gf_run_spec *spec, double t_s, char *buf, size_
                  t_s / sqrt(spec->grains.diameter_m / spec->gravity_m_s2));
 }
 
+/* A run this process did not run: another holds it, or finished it meanwhile. */
+static void report_not_run(display *d, const gf_campaign *c, int index, int outcome, const char *message)
+{
+    char what[200];
+    if (outcome == OUTCOME_HELD)
+        d->held_runs[d->held++] = index;
+    else
+        ++d->elsewhere;
+    if (d->quiet && outcome != OUTCOME_HELD)
+        return;
+    clear_block(d);
+    gf_sched_describe(&c->runs[index], what, sizeof what);
+    if (outcome == OUTCOME_HELD)
+        printf("[%d/%d] %s skipped: %s  (%s)\n", d->done + d->failed + d->held + d->elsewhere, d->total,
+               c->runs[index].spec.run_id, message, what);
+    else
+        printf("[%d/%d] %s done by another process since this campaign started  (%s)\n",
+               d->done + d->failed + d->held + d->elsewhere, d->total, c->runs[index].spec.run_id, what);
+    fflush(stdout);
+}
+
 static void report_finished(display *d, const gf_campaign *c, int index, const char *dir, double wall_s,
                             double continued_from_s)
 {
@@ -158,12 +203,12 @@ static void report_finished(display *d, const gf_campaign *c, int index, const c
     gf_sched_describe(&c->runs[index], what, sizeof what);
     format_duration(wall_s, wall, sizeof wall);
     continued_text(&c->runs[index].spec, continued_from_s, cont, sizeof cont);
+    const int seen = d->done + d->failed + d->held + d->elsewhere;
     if (state == GF_RUN_DONE)
-        printf("[%d/%d] %s done    %s  (%s%s)\n", d->done + d->failed, d->total, c->runs[index].spec.run_id, what,
-               wall, cont);
+        printf("[%d/%d] %s done    %s  (%s%s)\n", seen, d->total, c->runs[index].spec.run_id, what, wall, cont);
     else
-        printf("[%d/%d] %s failed: %s  (%s, %s%s)\n", d->done + d->failed, d->total, c->runs[index].spec.run_id,
-               reason, what, wall, cont);
+        printf("[%d/%d] %s failed: %s  (%s, %s%s)\n", seen, d->total, c->runs[index].spec.run_id, reason, what, wall,
+               cont);
     fflush(stdout);
 }
 
@@ -189,9 +234,53 @@ static void draw_block(display *d, const gf_campaign *c, const slot *slots, int 
     fflush(stdout);
 }
 
-static gf_status run_pool(gf_ctx *ctx, const gf_campaign *c, const gf_sched_opts *opt, const int *todo, int n_todo,
-                          display *d)
+/* Runs left to another process that it finished (verified) by the end of
+ * this campaign count as done elsewhere, not as held. Under MPI each rank
+ * rechecks its own before the counts are summed. */
+static void recheck_held(const gf_campaign *c, const gf_sched_opts *opt, double started, display *d)
 {
+    int kept = 0;
+    for (int k = 0; d->held_runs && k < d->held; ++k) {
+        char dir[4200];
+        const int index = d->held_runs[k];
+        gf_ledger_run_dir(opt->out_dir, c->name, c->runs[index].spec.run_id, dir, sizeof dir);
+        if (gf_ledger_state(dir, NULL, 0) == GF_RUN_DONE && gf_manifest_time(dir) >= started &&
+            gf_ledger_verified_state(dir, NULL, 0) == GF_RUN_DONE)
+            ++d->elsewhere;
+        else
+            d->held_runs[kept++] = index;
+    }
+    d->held = kept;
+}
+
+/* Records why a worker ended without a status, unless another process holds
+ * the run by now (then its directory is not ours to write). */
+static void record_lost_worker(const char *dir, int wstatus)
+{
+    char why[128], lock_path[4300];
+    if (WIFSIGNALED(wstatus))
+        snprintf(why, sizeof why, "worker killed by signal %d (%s)", WTERMSIG(wstatus), strsignal(WTERMSIG(wstatus)));
+    else
+        snprintf(why, sizeof why, "worker exited with code %d before recording a status", WEXITSTATUS(wstatus));
+    gf_ctx tmp = {0};
+    gf_lock *lock = NULL;
+    gf_lock_holder other;
+    gf_ledger_lock_path(dir, lock_path, sizeof lock_path);
+    if (gf_ledger_mkdirs(&tmp, dir) != GF_OK ||
+        gf_lock_take(&tmp, lock_path, "campaign", 0.0, &lock, &other, NULL) != GF_OK || !lock)
+        return;
+    /* an earlier failure's reason is replaced, but not a checkpoint the run can still continue from */
+    char reason[600];
+    gf_run_state state = gf_ledger_state(dir, reason, sizeof reason);
+    if (state == GF_RUN_NEW || (state == GF_RUN_FAILED && !strstr(reason, "checkpoint written")))
+        gf_ledger_set_failed(&tmp, dir, why);
+    gf_lock_release(&lock);
+}
+
+static gf_status run_pool(gf_ctx *ctx, const gf_campaign *c, const gf_sched_opts *opt, const int *todo, int n_todo,
+                          double started, display *d)
+{
+    const pid_t self = getpid();
     int n_jobs = opt->n_jobs > 0 ? opt->n_jobs : 1;
     if (n_jobs > n_todo)
         n_jobs = n_todo > 0 ? n_todo : 1;
@@ -220,7 +309,7 @@ static gf_status run_pool(gf_ctx *ctx, const gf_campaign *c, const gf_sched_opts
             slots[i] = (slot){.run = index, .progress = {.started_s = gf_wtime()}};
             pid_t pid = fork();
             if (pid == 0)
-                worker(c, index, dir, n_threads, opt->resume, &slots[i]);
+                worker(c, index, dir, n_threads, opt, started, self, &slots[i]);
             if (pid < 0) {
                 st = GF_FAIL(ctx, GF_ERR_IO, "worker pool: fork failed: %s", strerror(errno));
                 slots[i].run = -1;
@@ -249,19 +338,14 @@ static gf_status run_pool(gf_ctx *ctx, const gf_campaign *c, const gf_sched_opts
                 char dir[4200];
                 const int index = slots[i].run;
                 gf_ledger_run_dir(opt->out_dir, c->name, c->runs[index].spec.run_id, dir, sizeof dir);
-                if (WIFSIGNALED(wstatus) || gf_ledger_state(dir, NULL, 0) == GF_RUN_NEW) {
-                    char why[128];
-                    if (WIFSIGNALED(wstatus))
-                        snprintf(why, sizeof why, "worker killed by signal %d (%s)", WTERMSIG(wstatus),
-                                 strsignal(WTERMSIG(wstatus)));
-                    else
-                        snprintf(why, sizeof why, "worker exited with code %d before recording a status",
-                                 WEXITSTATUS(wstatus));
-                    gf_ctx tmp = {0};
-                    if (gf_ledger_mkdirs(&tmp, dir) == GF_OK)
-                        gf_ledger_set_failed(&tmp, dir, why);
+                if (!WIFSIGNALED(wstatus) && slots[i].outcome != OUTCOME_RAN) {
+                    report_not_run(d, c, index, slots[i].outcome, slots[i].message);
+                } else {
+                    if (WIFSIGNALED(wstatus) || gf_ledger_state(dir, NULL, 0) == GF_RUN_NEW)
+                        record_lost_worker(dir, wstatus);
+                    report_finished(d, c, index, dir, gf_wtime() - slots[i].progress.started_s,
+                                    slots[i].continued_from_s);
                 }
-                report_finished(d, c, index, dir, gf_wtime() - slots[i].progress.started_s, slots[i].continued_from_s);
                 slots[i].run = -1;
                 --running;
             }
@@ -276,13 +360,16 @@ static gf_status run_pool(gf_ctx *ctx, const gf_campaign *c, const gf_sched_opts
     }
     clear_block(d);
     munmap(slots, (size_t)n_jobs * sizeof *slots);
+    recheck_held(c, opt, started, d);
     return st;
 }
 
 /* Under MPI: run i on rank i mod K, in this process; one line per run. */
 static gf_status run_farm(gf_ctx *ctx, const gf_campaign *c, const gf_sched_opts *opt, const int *todo, int n_todo,
-                          display *d)
+                          double started, display *d)
 {
+    char lock_what[GF_NAME_LEN + 32];
+    snprintf(lock_what, sizeof lock_what, "campaign %s, MPI rank %d", c->name, gf_comm_rank());
     const int rank = gf_comm_rank(), size = gf_comm_size();
     gf_status st = GF_OK;
     for (int k = rank; k < n_todo; k += size) {
@@ -293,11 +380,27 @@ static gf_status run_farm(gf_ctx *ctx, const gf_campaign *c, const gf_sched_opts
         const int index = todo[k];
         char dir[4200], what[200];
         gf_ledger_run_dir(opt->out_dir, c->name, c->runs[index].spec.run_id, dir, sizeof dir);
-        gf_run_exec_opts eo = {.run_dir = dir, .campaign = c->name, .interrupt = opt->interrupt, .resume = opt->resume};
+        gf_run_exec_opts eo = {.run_dir = dir,
+                               .campaign = c->name,
+                               .interrupt = opt->interrupt,
+                               .resume = opt->resume,
+                               .lock_what = lock_what,
+                               .keep_done = 1,
+                               .keep_done_since = opt->resume ? 0.0 : started};
         gf_run_result res;
         gf_status est = gf_run_execute(ctx, &c->runs[index].spec, &eo, &res);
         if (est != GF_OK)
             gf_log(ctx, GF_LOG_WARN, "rank %d: %s", rank, gf_ctx_message(ctx));
+        if (est == GF_OK && (res.held || res.already_done)) {
+            if (res.held)
+                d->held_runs[d->held++] = index;
+            else
+                ++d->elsewhere;
+            printf("[rank %d] %s %s\n", rank, c->runs[index].spec.run_id,
+                   res.held ? res.message : "done by another process since this campaign started");
+            fflush(stdout);
+            continue;
+        }
         if (res.status == GF_OK && est == GF_OK)
             ++d->done;
         else
@@ -311,8 +414,11 @@ static gf_status run_farm(gf_ctx *ctx, const gf_campaign *c, const gf_sched_opts
                    res.status == GF_OK ? "" : what, res.status == GF_OK ? "" : ", ", res.wall_s, cont);
         fflush(stdout);
     }
+    recheck_held(c, opt, started, d);
     d->done = (int)gf_comm_sum(d->done);
     d->failed = (int)gf_comm_sum(d->failed);
+    d->held = (int)gf_comm_sum(d->held);
+    d->elsewhere = (int)gf_comm_sum(d->elsewhere);
     int interrupted = (int)gf_comm_sum(st == GF_ERR_INTERRUPTED);
     return interrupted ? GF_ERR_INTERRUPTED : GF_OK;
 }
@@ -325,27 +431,44 @@ gf_status gf_sched_run(gf_ctx *ctx, const gf_campaign *c, const gf_sched_opts *o
     if (!todo)
         return GF_FAIL(ctx, GF_ERR_NOMEM, "out of memory");
     int n_todo = 0;
+    const double started = (double)time(NULL);
     for (int k = 0; k < n_sel; ++k) {
         const int index = opt->selected ? opt->selected[k] : k;
-        char dir[4200];
+        char dir[4200], reason[600];
         gf_ledger_run_dir(opt->out_dir, c->name, c->runs[index].spec.run_id, dir, sizeof dir);
-        if (opt->resume && gf_ledger_state(dir, NULL, 0) == GF_RUN_DONE)
+        gf_run_state state = opt->resume ? gf_ledger_verified_state(dir, reason, sizeof reason) : GF_RUN_NEW;
+        if (state == GF_RUN_DONE) {
             ++counts->n_skipped;
-        else
-            todo[n_todo++] = index;
+            continue;
+        }
+        if (state == GF_RUN_CORRUPT) {
+            ++counts->n_rerun;
+            if (gf_comm_rank() == 0) {
+                printf("run %s: marked done, but %s: running it again\n", c->runs[index].spec.run_id, reason);
+                fflush(stdout);
+            }
+        }
+        todo[n_todo++] = index;
     }
     counts->n_total = n_sel;
     char cdir[4200];
     snprintf(cdir, sizeof cdir, "%s/%s", opt->out_dir, c->name);
     gf_status st = gf_ledger_mkdirs(ctx, cdir);
-    display d = {.tty = opt->tty && gf_comm_size() == 1, .quiet = opt->quiet, .total = n_todo};
+    display d = {.tty = opt->tty && gf_comm_size() == 1, .quiet = opt->quiet, .total = n_todo,
+                 .held_runs = malloc((size_t)(n_todo > 0 ? n_todo : 1) * sizeof(int))};
+    if (!d.held_runs)
+        st = GF_FAIL(ctx, GF_ERR_NOMEM, "out of memory");
     if (st == GF_OK)
-        st = gf_comm_size() > 1 ? run_farm(ctx, c, opt, todo, n_todo, &d) : run_pool(ctx, c, opt, todo, n_todo, &d);
+        st = gf_comm_size() > 1 ? run_farm(ctx, c, opt, todo, n_todo, started, &d)
+                                : run_pool(ctx, c, opt, todo, n_todo, started, &d);
+    free(d.held_runs);
     counts->n_done = d.done;
     counts->n_failed = d.failed;
+    counts->n_held = d.held;
+    counts->n_skipped += d.elsewhere;
     free(todo);
     if (st == GF_ERR_INTERRUPTED)
         return GF_FAIL(ctx, GF_ERR_INTERRUPTED, "campaign %s interrupted: %d done, %d failed, %d not started",
-                       c->name, d.done, d.failed, n_todo - d.done - d.failed);
+                       c->name, d.done, d.failed, n_todo - d.done - d.failed - d.held - d.elsewhere);
     return st;
 }

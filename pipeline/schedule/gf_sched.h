@@ -13,8 +13,15 @@
  * interleaves the grid so that the cheap and the dear corners spread over the
  * ranks. Forking inside an MPI process is avoided (not all transports allow it).
  *
- * In both, runs whose status is done are skipped with resume, and a failed
- * run is recorded in its status file while the campaign goes on.
+ * In both, runs whose status is done are skipped with resume once their files
+ * pass their manifest (a run that fails it is run again, saying so), and a
+ * failed run is recorded in its status file while the campaign goes on. Each
+ * run takes its directory's lock (gf_run_exec.h): a run another process holds
+ * is left to it and reported with its holder, and a run another process
+ * finished since this campaign started is not run again, so two campaigns on
+ * one directory share its runs. Workers die with the pool: each asks for
+ * SIGTERM when its parent ends (prctl PR_SET_PDEATHSIG), which makes it stop
+ * and checkpoint like an interrupt.
  */
 #ifndef GF_SCHED_H
 #define GF_SCHED_H
@@ -34,6 +41,8 @@ typedef struct gf_sched_opts {
 
 typedef struct gf_sched_counts {
     int n_total, n_done, n_failed, n_skipped;
+    int n_held;        /* left to another process that holds the run directory */
+    int n_rerun;       /* marked done but failing their manifest, run again (resume) */
 } gf_sched_counts;
 
 /* Runs the selected runs of c. Returns GF_OK when every run was attempted

@@ -66,7 +66,7 @@ void gf_post_row_add_error(gf_post_row *row, const char *status, const char *msg
     size_t len = strlen(row->error);
     if (len + 3 < sizeof row->error)
         snprintf(row->error + len, sizeof row->error - len, "%s%s", len ? "; " : "", msg);
-    /* a failed run stays "failed"; otherwise the latest status wins */
-    if (strcmp(row->status, "failed") != 0 && status)
+    /* a failed or corrupt run stays so; otherwise the latest status wins */
+    if (strcmp(row->status, "failed") != 0 && strcmp(row->status, "corrupt") != 0 && status)
         snprintf(row->status, sizeof row->status, "%s", status);
 }

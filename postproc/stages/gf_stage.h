@@ -11,7 +11,9 @@
  *
  * Return codes: GF_OK (results in the row); GF_ERR_UNSUPPORTED when the stage
  * does not apply to this run (e.g. no probes in a dry run: no message, the
- * row is left as is); any other code is a per-run failure whose message
+ * row is left as is), or with a message when an input it needs was not
+ * written (output.particles: false): the message goes to the row's notes and
+ * the run stays ok; any other code is a per-run failure whose message
  * (ctx) the caller copies into the row's error column.
  */
 #ifndef GF_STAGE_H
@@ -37,8 +39,10 @@ typedef struct gf_post_row {
     char run_id[64];
     char scene[GF_ROW_TEXT_LEN];
     char fluid_model[GF_ROW_TEXT_LEN];
-    char status[24];      /* "ok", "failed" (the run), "error" (a stage), "incomplete" (no status file) */
+    char status[24];      /* "ok", "failed" (the run), "corrupt" (a done run failing its manifest), "error" (a
+                             stage), "incomplete" (no status file, or being written) */
     char error[640];      /* per-run messages, "; "-separated */
+    char notes[320];      /* results left empty and why (a stage's input not written), "; "-separated */
     char stages[256];     /* "name@version" of each stage that produced results */
     int n_fields;
     gf_post_field fields[GF_ROW_MAX_FIELDS];

@@ -27,6 +27,8 @@ gf_status gf_stage_open(gf_ctx *ctx, const gf_stage_in *in, const char *name, gf
 {
     char p[1024];
     gf_stage_path(in, name, p, sizeof p);
+    if (!gf_ncr_exists(p)) /* e.g. output.particles: false; a file the run listed and lost fails its manifest first */
+        return GF_FAIL(ctx, GF_ERR_UNSUPPORTED, "not computed: %s was not written by this run", name);
     return gf_ncr_open(ctx, p, f);
 }
 

@@ -16,6 +16,9 @@
 /* "<run_dir>/<name>" into buf. */
 void gf_stage_path(const gf_stage_in *in, const char *name, char *buf, size_t size);
 int gf_stage_has_file(const gf_stage_in *in, const char *name);
+/* Opens <run>/name. An absent file is GF_ERR_UNSUPPORTED with a message (the
+ * run did not write it: the stage's columns stay empty, the reason in the
+ * row's notes); a file that does not read is GF_ERR_IO. */
 gf_status gf_stage_open(gf_ctx *ctx, const gf_stage_in *in, const char *name, gf_ncr *f);
 /* Non-zero when the run is the scene named (in->scene). */
 int gf_stage_is_scene(const gf_stage_in *in, const char *scene);

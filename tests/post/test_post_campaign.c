@@ -5,11 +5,12 @@
  *   b_avalanche  avalanche, done: particles, diagnostics (grain_flow_rate,
  *                fluid_flow_rate, ecx_per_grain)
  *   c_failed     status "failed: ..." (no analysis, reason in the row)
- *   d_corrupt    diagnostics.nc truncated to 40 % of its bytes
+ *   d_corrupt    marked done, diagnostics.nc truncated to 40 % of its bytes
  *   e_missing    collapse whose diagnostics.nc lacks ecx_per_grain
  * Expected: every run has a row; a and b have status ok and their results;
- * c is "failed" with the reason; d and e are "error" with a message naming
- * the file (and the variable for e), while their other stages still ran
+ * c is "failed" with the reason; d is "corrupt" (a done run whose file does
+ * not open) and e "error", each with a message naming the file (and the
+ * variable for e), while their other stages still ran
  * (d's deposit from particles.nc; e's deposit and regime). The rows do not
  * depend on n_jobs (stages are pure): summary.csv is byte-identical with 1
  * and 2 workers. --stage energy runs one stage only. summary.nc is read by
@@ -220,7 +221,7 @@ int main(void)
         gf_test_check(strstr(csv, needed[k]) != NULL, __FILE__, __LINE__, "summary.csv header lacks %s", needed[k]);
     if (csv) {
         const char *runs[] = {"a_collapse", "b_avalanche", "c_failed", "d_corrupt", "e_missing"};
-        const char *status[] = {"ok", "ok", "failed", "error", "error"};
+        const char *status[] = {"ok", "ok", "failed", "corrupt", "error"};
         for (int k = 0; k < 5; ++k) {
             csv_field(csv, runs[k], "status", v, sizeof v);
             gf_test_check(strcmp(v, status[k]) == 0, __FILE__, __LINE__, "%s: status '%s', expected '%s'", runs[k],
