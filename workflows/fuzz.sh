@@ -25,7 +25,7 @@ fuzz() { # fuzz BINARY SECONDS WORKDIR
   # -timeout: an input that takes 10 s to read is a bug; -max_len: configurations are small files
   (cd "$work" && "$bin" -max_total_time="$secs" -max_len=4096 -timeout=10 -rss_limit_mb=2048 \
       -artifact_prefix="$work/artifacts/" -print_final_stats=1 "$work/grown" "${seeds[@]}" 2>&1) \
-    | tee "$work/fuzz.log" | grep -E "^#[0-9]+ +(INITED|DONE)|^stat::|ERROR|SUMMARY|crash-|leak-|timeout-" || true
+    | tee "$work/fuzz.log" | grep -E "^#[0-9]+[[:space:]]+(INITED|DONE)|^stat::|ERROR|SUMMARY|crash-|leak-|timeout-" || true
   if ls "$work/artifacts" | grep -q .; then
     echo "fuzz: inputs that fail are in $work/artifacts:" >&2
     ls "$work/artifacts" >&2
