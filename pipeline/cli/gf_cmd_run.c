@@ -134,7 +134,7 @@ int gf_cmd_run(int argc, char **argv)
     char dir[4200];
     gf_ledger_run_dir(out_dir, c->name, spec->run_id, dir, sizeof dir);
     progress_state ps = {.tty = gf_cli_is_tty() && !quiet, .run_id = spec->run_id,
-                         .progress = {.started_s = gf_wtime()}};
+                         .progress = {.started_s = gf_wtime(), .dt_s = gf_run_spec_dt_s(spec)}};
     gf_run_exec_opts eo = {.run_dir = dir,
                            .campaign = c->name,
                            .progress = on_progress,
