@@ -181,7 +181,7 @@ static void print_campaign_cost(const char *file, const gf_campaign *c, const gf
            c->name, c->n_runs, total->n_grains, total->steps, cpu, may_stop_early ? " (at most: runs stop at rest)" : "",
            out);
     if (total->cpu_s > GF_COST_WARN_CPU_S)
-        fprintf(stderr, "%s: warning: campaign %s needs about %s of CPU (%.2g h; --jobs N divides the wall time)\n",
+        fprintf(stderr, "%s: warning: campaign %s needs about %s of CPU (%.3g h; --jobs N divides the wall time)\n",
                 file, c->name, cpu, total->cpu_s / 3600.0);
     if (total->output_bytes > GF_COST_WARN_BYTES)
         fprintf(stderr, "%s: warning: campaign %s writes about %s\n", file, c->name, out);
