@@ -79,7 +79,7 @@ for cmd in "${commands[@]}"; do
     words+=(--index 0)
   fi
   start=$(date +%s)
-  (cd "$work" && timeout 600 "${words[@]}") >"$work/out.txt" 2>&1
+  (cd "$work" && timeout 600 bash -c "${words[*]}") >"$work/out.txt" 2>&1 # as a shell would: globs expand
   rc=$?
   took=$(($(date +%s) - start))
   if [ $rc = 0 ]; then
