@@ -11,7 +11,8 @@
 #
 # A crash, sanitizer report or leak stops the fuzzer with a non-zero status and
 # leaves the input as crash-* / leak-* in the working directory; the script
-# exits non-zero. Needs clang and libclang-rt-14-dev (Debian), not in deps.sh:
+# exits non-zero. tests/pipeline/fuzz_cfg.dict lists the schema's keys and words
+# (regenerate by hand when the schema grows). Needs clang and libclang-rt-14-dev (Debian), not in deps.sh:
 # the default build and test suite do not.
 set -euo pipefail
 src="$(cd "$(dirname "$0")/.." && pwd)"
@@ -24,7 +25,7 @@ fuzz() { # fuzz BINARY SECONDS WORKDIR
   cp -r "$corpus/." "$work/grown/" 2>/dev/null || true
   # -timeout: an input that takes 10 s to read is a bug; -max_len: configurations are small files
   (cd "$work" && "$bin" -max_total_time="$secs" -max_len=4096 -timeout=10 -rss_limit_mb=2048 \
-      -artifact_prefix="$work/artifacts/" -print_final_stats=1 "$work/grown" "${seeds[@]}" 2>&1) \
+      -artifact_prefix="$work/artifacts/" -print_final_stats=1 -dict="$src/tests/pipeline/fuzz_cfg.dict" "$work/grown" "${seeds[@]}" 2>&1) \
     | tee "$work/fuzz.log" | grep -E "^#[0-9]+[[:space:]]+(INITED|DONE)|^stat::|ERROR|SUMMARY|crash-|leak-|timeout-" || true
   if ls "$work/artifacts" | grep -q .; then
     echo "fuzz: inputs that fail are in $work/artifacts:" >&2
