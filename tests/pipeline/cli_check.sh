@@ -25,6 +25,11 @@ n_head=$(grep -c '^# .*: campaign .*, scene ' out.txt)
   ok "check with one invalid file: exit 2, file:line:col, the others checked" ||
   fail "check with one invalid file: exit $rc; $(cat err.txt)"
 
+# a scene key the grid overrides is said, at the key
+"$g" check "$src/configs/column_collapse_dry.yaml" --brief --set scene.aspect_ratio=2 >out.txt 2>err.txt
+grep -q -- '--set scene.aspect_ratio=2: warning: scene.aspect_ratio is overridden by the group a that 4 of the 4 runs set' err.txt &&
+  ok "scene.aspect_ratio under a grid over a: warned" || fail "no override warning: $(cat err.txt)"
+
 # the cost: grains, steps, CPU, output per run and campaign; steps = end_time sqrt(D/g) / dt
 "$g" check "$src/tests/pipeline/data/phi_loose_column.yaml" >out.txt 2>err.txt
 grep -q '^# cost: [0-9]* grains, [0-9.e+]* steps, CPU [0-9:]*, output [0-9.]* [kMG]*B' out.txt &&
