@@ -101,14 +101,25 @@ static void print_run(const gf_campaign *c, const gf_campaign_run *r)
     printf("\n");
 }
 
+/* "%.*g" of x, or "?" when the scene gives no estimate (NaN). */
+static const char *count_text(double x, int digits, char *buf, size_t n)
+{
+    if (isnan(x))
+        snprintf(buf, n, "?");
+    else
+        snprintf(buf, n, "%.*g", digits, x);
+    return buf;
+}
+
 /* "404 grains, 1e+05 steps, CPU 0:05, output 1.2 MB" (figures "?" when the scene gives no estimate). */
 static void cost_text(const gf_run_cost *k, char *buf, size_t n)
 {
-    char cpu[32], out[32];
+    char cpu[32], out[32], grains[32], steps[32];
     gf_cost_format_time(k->cpu_s, cpu, sizeof cpu);
     gf_cost_format_bytes(k->output_bytes, out, sizeof out);
-    snprintf(buf, n, "%.0f grains, %.3g steps, CPU %s%s, output %s%s", k->n_grains, k->steps, cpu,
-             k->immersed ? " (DEM + fluid)" : "", out, k->may_stop_early ? " (at most: stops at rest)" : "");
+    snprintf(buf, n, "%s grains, %s steps, CPU %s%s, output %s%s", count_text(round(k->n_grains), 9, grains, sizeof grains),
+             count_text(k->steps, 3, steps, sizeof steps), cpu, k->immersed ? " (DEM + fluid)" : "", out,
+             k->may_stop_early ? " (at most: stops at rest)" : "");
 }
 
 /* The warnings a run's cost calls for, on stderr, naming the run. */
@@ -174,12 +185,13 @@ static void warn_realised_packing(const char *file, const char *out_dir, const g
 /* The campaign's sums, and a warning when they pass the thresholds. */
 static void print_campaign_cost(const char *file, const gf_campaign *c, const gf_run_cost *total, int may_stop_early)
 {
-    char cpu[32], out[32];
+    char cpu[32], out[32], grains[32], steps[32];
     gf_cost_format_time(total->cpu_s, cpu, sizeof cpu);
     gf_cost_format_bytes(total->output_bytes, out, sizeof out);
-    printf("# cost of campaign %s: %d runs, %.0f grains, %.3g steps in all; CPU %s on one core%s, output %s\n",
-           c->name, c->n_runs, total->n_grains, total->steps, cpu, may_stop_early ? " (at most: runs stop at rest)" : "",
-           out);
+    printf("# cost of campaign %s: %d runs, %s grains, %s steps in all; CPU %s on one core%s, output %s\n", c->name,
+           c->n_runs, count_text(round(total->n_grains), 9, grains, sizeof grains),
+           count_text(total->steps, 3, steps, sizeof steps), cpu,
+           may_stop_early ? " (at most: runs stop at rest)" : "", out);
     if (total->cpu_s > GF_COST_WARN_CPU_S)
         fprintf(stderr, "%s: warning: campaign %s needs about %s of CPU (%.3g h; --jobs N divides the wall time)\n",
                 file, c->name, cpu, total->cpu_s / 3600.0);
