@@ -291,6 +291,25 @@ static gf_status continue_outputs(gf_sim *s, run_out *o)
     return GF_OK;
 }
 
+/* The packing the run starts from is measured at t = 0, after the scene has
+ * re-equilibrated the prepared deposit with the run's own contacts; that can
+ * move it past the tolerance the preparation met (a loose frictional deposit
+ * compacts: gf_packing.h, step 3). Said on stderr, naming the run, whenever
+ * the realised Phi_i is further from the one asked than phi_tolerance. */
+static void warn_packing(const gf_sim *s, double phi_local)
+{
+    const double asked = isnan(s->spec.phi_initial) ? gf_run_spec_param(&s->spec, "phi_target", NAN)
+                                                    : s->spec.phi_initial;
+    const double tol = gf_run_spec_param(&s->spec, "phi_tolerance", NAN);
+    if (isnan(asked) || isnan(tol) || isnan(phi_local) || gf_run_spec_param(&s->spec, "free_pour", 0.0) > 0.5)
+        return;
+    if (fabs(phi_local - asked) > tol)
+        gf_log(s->ctx, GF_LOG_WARN,
+               "warning: run %s starts at Phi_i = %.4f (interior, at t = 0), %.4f from the %.4g asked: more than "
+               "phi_tolerance = %.4g",
+               s->spec.run_id, phi_local, phi_local - asked, asked, tol);
+}
+
 gf_status gf_sim_run(gf_sim *s)
 {
     run_out o;
@@ -300,8 +319,10 @@ gf_status gf_sim_run(gf_sim *s)
     if (s->opt.output_dir) {
         double R0_m, H0_m, incline_deg, phi_measured = NAN, phi_local = NAN;
         scene_geometry(s, &R0_m, &H0_m, &incline_deg);
-        if (s->scene->initial_packing && s->step == 0)
+        if (s->scene->initial_packing && s->step == 0) {
             GF_TRY(s->scene->initial_packing(s, &phi_measured, &phi_local));
+            warn_packing(s, phi_local);
+        }
         char skipped[256];
         gf_sim_skips(s, skipped, sizeof skipped);
         gf_nc_meta meta = {

@@ -51,6 +51,10 @@ typedef struct gf_scene_desc {
      * column_height_m attributes; scenes derive them from their own
      * parameters. May be NULL (not a column). */
     void (*column_geometry)(const gf_run_spec *spec, double *length_m, double *height_m);
+    /* Grains the scene will hold, glued ones included, from the resolved spec
+     * without building anything (the packing fraction asked times the volume
+     * it fills): the cost that `grainflow check` prints. May be NULL. */
+    double (*grain_count)(const gf_run_spec *spec);
 } gf_scene_desc;
 
 /* NULL when unknown. */

@@ -144,6 +144,16 @@ static gf_status avalanche_initial_packing(gf_sim *sim, double *phi_measured, do
     return GF_OK;
 }
 
+/* phi L W h_bed over the mean grain volume, and the rough base's glued grains, about 0.45 per D^2
+ * (gf_packing_rough_base: random placement until 500 misses in a row). */
+static double avalanche_grain_count(const gf_run_spec *spec)
+{
+    double L = gf_run_spec_param(spec, "length_over_D", 5.0), W = gf_run_spec_param(spec, "width_over_D", 5.0);
+    double h = gf_run_spec_param(spec, "bed_height_over_D", 8.0);
+    double phi = isnan(spec->phi_initial) ? gf_run_spec_param(spec, "phi_target", 0.6) : spec->phi_initial;
+    return phi * L * W * h / (M_PI / 6.0) + 0.45 * L * W;
+}
+
 const gf_scene_desc gf_scene_avalanche = {
     .name = "avalanche",
     .caption = "granular avalanche on a rough periodic incline (Izard 2014 §2.1.3.3, ch. 4)",
@@ -158,4 +168,5 @@ const gf_scene_desc gf_scene_avalanche = {
     .diagnose = avalanche_diagnose,
     .done = NULL,
     .initial_packing = avalanche_initial_packing,
+    .grain_count = avalanche_grain_count,
 };

@@ -286,6 +286,17 @@ static void column_geometry(const gf_run_spec *spec, double *length_m, double *h
     *height_m = g.H0;
 }
 
+/* phi R0 H0 W over the mean grain volume, and the glued floor: gf_packing_rough_base places
+ * grains at random until 500 misses in a row, about 0.45 per D^2 (the 404 and 960 grains of
+ * the a = 1 columns at R0 = 10 and 16 D). */
+static double column_grain_count(const gf_run_spec *spec)
+{
+    column_geom g;
+    column_geom_of(spec, &g);
+    double column = g.phi * g.R0 * g.H0 * g.W / sphere_volume(0.5 * g.D);
+    return column + (g.rough ? 0.45 * g.L * g.W / (g.D * g.D) : 0.0);
+}
+
 const gf_scene_desc gf_scene_column_collapse = {
     .name = "column_collapse",
     .caption = "granular column released by a gate, quasi-2D slab (Lajeunesse 2005; Rondon 2011; Izard 2014 ch. 5)",
@@ -301,4 +312,5 @@ const gf_scene_desc gf_scene_column_collapse = {
     .done = column_done,
     .initial_packing = column_initial_packing,
     .column_geometry = column_geometry,
+    .grain_count = column_grain_count,
 };

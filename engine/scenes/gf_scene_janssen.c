@@ -258,6 +258,14 @@ static gf_status janssen_initial_packing(gf_sim *sim, double *phi_measured, doub
     return GF_OK;
 }
 
+/* phi S^2 h over the mean grain volume, and four walls of glued grains, one per D^2. */
+static double janssen_grain_count(const gf_run_spec *spec)
+{
+    double S = gf_run_spec_param(spec, "side_over_D", 10.0), h = gf_run_spec_param(spec, "fill_height_over_D", 40.0);
+    double phi = isnan(spec->phi_initial) ? gf_run_spec_param(spec, "phi_target", 0.59) : spec->phi_initial;
+    return phi * S * S * h / (M_PI / 6.0) + 4.0 * S * h;
+}
+
 const gf_scene_desc gf_scene_janssen = {
     .name = "janssen",
     .caption = "Janssen silo with walls of glued grains, settled at rest (Izard 2014 §2.1.3.2)",
@@ -272,4 +280,5 @@ const gf_scene_desc gf_scene_janssen = {
     .diagnose = NULL,
     .done = janssen_done,
     .initial_packing = janssen_initial_packing,
+    .grain_count = janssen_grain_count,
 };

@@ -94,6 +94,15 @@ static gf_status settling_diagnose(gf_sim *sim, double *v)
     return GF_OK;
 }
 
+/* One sphere, or the suspension's phi L^3 over the grain volume. */
+static double settling_grain_count(const gf_run_spec *spec)
+{
+    if (gf_run_spec_param(spec, "mode", 1.0) <= 0.5)
+        return 1.0;
+    double L = gf_run_spec_param(spec, "box_over_D", 16.0);
+    return gf_run_spec_param(spec, "phi_suspension", 0.2) * L * L * L / (M_PI / 6.0);
+}
+
 const gf_scene_desc gf_scene_settling = {
     .name = "settling",
     .caption = "single sphere or homogeneous suspension settling in a periodic box (Stokes; Richardson & Zaki 1954)",
@@ -105,4 +114,5 @@ const gf_scene_desc gf_scene_settling = {
     .n_diag = (int)(sizeof settling_diag / sizeof settling_diag[0]),
     .diag = settling_diag,
     .diagnose = settling_diagnose,
+    .grain_count = settling_grain_count,
 };

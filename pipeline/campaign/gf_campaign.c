@@ -218,6 +218,33 @@ static gf_status build_run(loader *L, int v, int k, int index, gf_campaign_run *
     return GF_OK;
 }
 
+/* A scene parameter that a group replaces (the scene's table says "the
+ * campaign's ... wins") is ignored in every run that sets the group: said
+ * once, at the key, so that --set scene.aspect_ratio=2 on a grid over a does
+ * not pass unnoticed. */
+static void warn_overridden_scene_keys(const loader *L, const gf_campaign *c)
+{
+    static const struct {
+        int group;
+        const char *key;
+    } pairs[] = {{2, "aspect_ratio"}, {3, "phi_target"}};
+    const gf_cfg_node *scene = gf_cfg_get(L->root, "scene");
+    for (size_t k = 0; scene && k < sizeof pairs / sizeof *pairs; ++k) {
+        const gf_cfg_node *node = gf_cfg_get(scene, pairs[k].key);
+        int n_set = 0;
+        for (int i = 0; node && i < c->n_runs; ++i)
+            n_set += !isnan(*gf_spec_group(&c->runs[i].spec, pairs[k].group));
+        if (!n_set)
+            continue;
+        char where[512];
+        const char *g = gf_group_names[pairs[k].group];
+        gf_log(L->ctx, GF_LOG_WARN,
+               "%s: warning: scene.%s is overridden by the group %s that %d of the %d runs set (grid, groups or "
+               "variant): set grid.%s or groups.%s instead",
+               gf_cfg_where(L->doc, node, 1, where, sizeof where), pairs[k].key, g, n_set, c->n_runs, g, g);
+    }
+}
+
 static int by_run_id(const void *a, const void *b)
 {
     const gf_campaign_run *const *x = a, *const *y = b;
@@ -290,6 +317,8 @@ static gf_status load(loader *L, const char *path, const char *const *sets, int 
             const int index = v * L->grid.n_points + k;
             st = build_run(L, v, k, index, &c->runs[index]);
         }
+    if (st == GF_OK)
+        warn_overridden_scene_keys(L, c);
     /* Two grid points that resolve to the same run would share a directory. */
     if (st == GF_OK)
         st = check_unique(L, c);

@@ -1,5 +1,9 @@
-/* `grainflow run SCENE.yaml`: one run, in this process, with a progress line. */
+/* `grainflow run SCENE.yaml`: one run, in this process, with a progress line.
+ * On a campaign file it runs the one run named by --index or --only, or the
+ * one left when --set grid.KEY=VALUE pins the grid to a point. */
+#include <limits.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "cli/gf_cli.h"
@@ -11,19 +15,26 @@
 #define MAX_SETS 64
 
 static const char help[] =
-    "usage: grainflow run SCENE.yaml [-o DIR] [--set key.path=value ...]\n"
+    "usage: grainflow run SCENE.yaml [-o DIR] [--set key.path=value ...] [--index K | --only RUN_ID]\n"
     "\n"
     "Runs the one run SCENE.yaml describes into DIR/<name>/<run-id>/ (run.yaml,\n"
     "particles.nc, diagnostics.nc, probes.nc, fields.nc, status). A run.yaml\n"
-    "written by an earlier run reproduces it exactly (same run id). A file with a\n"
-    "grid or variants is a campaign: use grainflow campaign. A run directory that\n"
-    "another process is writing (its .lock is held) is left alone, naming the\n"
+    "written by an earlier run reproduces it exactly (same run id). A run directory\n"
+    "that another process is writing (its .lock is held) is left alone, naming the\n"
     "holder; `done` is written after the run's files are reopened and listed with\n"
     "their sizes and CRC-32 in its manifest (docs/integrity.md).\n"
+    "\n"
+    "A file with a grid or variants is a campaign: run one of its runs with\n"
+    "--index K or --only RUN_ID (grainflow check FILE --brief lists them), or\n"
+    "pin the grid to one point with --set grid.a=2 (one --set per grid key);\n"
+    "grainflow campaign runs them all. The run goes to the campaign's folder,\n"
+    "where grainflow campaign would put it.\n"
     "\n"
     "options:\n"
     "  -o, --output DIR     output directory (default: runs)\n"
     "      --set KEY=VALUE  override a value, e.g. --set scene.aspect_ratio=2 --set fluid.model=none\n"
+    "      --index K        run K (0-based, campaign order) of a campaign file\n"
+    "      --only RUN_ID    the run of a campaign file with this id\n"
     "  -q, --quiet          no progress line\n"
     "\n"
     "exit status: 0 done, 1 the run failed or its directory is held by another process,\n"
@@ -47,10 +58,38 @@ static void on_progress(void *user, double t_s, double t_end_s, double steps_per
     fflush(stdout);
 }
 
+/* The run to execute: the only one, or the one --index / --only names; -1 (said why) otherwise. */
+static int pick_run(const char *file, const gf_campaign *c, int index, const char *only)
+{
+    if (index >= 0 && only)
+        return gf_cli_usage_error("run", "--index and --only name the same thing: give one"), -1;
+    if (only) {
+        int k = gf_campaign_find(c, only);
+        if (k < 0)
+            gf_cli_usage_error("run", "--only %s: no run with this id in %s (grainflow check %s --brief lists them)",
+                               only, file, file);
+        return k;
+    }
+    if (index >= c->n_runs) {
+        gf_cli_usage_error("run", "--index %d: %s has runs 0..%d", index, file, c->n_runs - 1);
+        return -1;
+    }
+    if (index >= 0)
+        return index;
+    if (c->n_runs == 1)
+        return 0;
+    fprintf(stderr,
+            "%s: a campaign of %d runs (%d grid points x %d variants): run one with --index K (0..%d) or --only "
+            "RUN_ID (grainflow check %s --brief lists them), pin the grid with --set grid.KEY=VALUE, or run them all "
+            "with grainflow campaign %s\n",
+            file, c->n_runs, c->n_points, c->n_variants, c->n_runs - 1, file, file);
+    return -1;
+}
+
 int gf_cmd_run(int argc, char **argv)
 {
-    const char *file = NULL, *out_dir = "runs", *v, *sets[MAX_SETS];
-    int n_sets = 0, quiet = 0;
+    const char *file = NULL, *out_dir = "runs", *v, *sets[MAX_SETS], *only = NULL;
+    int n_sets = 0, quiet = 0, index = -1;
     for (int i = 1; i < argc; ++i) {
         int m;
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
@@ -63,6 +102,15 @@ int gf_cmd_run(int argc, char **argv)
             if (m < 0 || n_sets == MAX_SETS)
                 return gf_cli_usage_error("run", "--set needs KEY=VALUE (at most %d)", MAX_SETS);
             sets[n_sets++] = v;
+        } else if ((m = gf_cli_opt_value(argc, argv, &i, NULL, "--only", &only))) {
+            if (m < 0)
+                return gf_cli_usage_error("run", "--only needs a run id");
+        } else if ((m = gf_cli_opt_value(argc, argv, &i, NULL, "--index", &v))) {
+            char *end = NULL;
+            long k = m > 0 ? strtol(v, &end, 10) : -1;
+            if (m < 0 || !*v || *end || k < 0 || k > INT_MAX)
+                return gf_cli_usage_error("run", "--index needs a run number >= 0");
+            index = (int)k;
         } else if (!strcmp(argv[i], "-q") || !strcmp(argv[i], "--quiet")) {
             quiet = 1;
         } else if (argv[i][0] == '-' && argv[i][1]) {
@@ -81,16 +129,16 @@ int gf_cmd_run(int argc, char **argv)
         gf_cli_print_error(&ctx);
         return GF_EXIT_USAGE;
     }
-    if (c->n_runs != 1) {
-        fprintf(stderr, "%s: describes %d runs (a grid or variants): use grainflow campaign\n", file, c->n_runs);
+    const int k = pick_run(file, c, index, only);
+    if (k < 0) {
         gf_campaign_destroy(&c);
         return GF_EXIT_USAGE;
     }
-    const gf_run_spec *spec = &c->runs[0].spec;
+    const gf_run_spec *spec = &c->runs[k].spec;
     char dir[4200];
     gf_ledger_run_dir(out_dir, c->name, spec->run_id, dir, sizeof dir);
     progress_state ps = {.tty = gf_cli_is_tty() && !quiet, .run_id = spec->run_id,
-                         .progress = {.started_s = gf_wtime()}};
+                         .progress = {.started_s = gf_wtime(), .dt_s = gf_run_spec_dt_s(spec)}};
     gf_run_exec_opts eo = {.run_dir = dir,
                            .campaign = c->name,
                            .progress = on_progress,

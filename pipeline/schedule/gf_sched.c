@@ -16,6 +16,7 @@
 #include "campaign/gf_spec_schema.h"
 #include "core/gf_timer.h"
 #include "schedule/gf_comm.h"
+#include "schedule/gf_eta.h"
 #include "schedule/gf_ledger.h"
 #include "schedule/gf_run_exec.h"
 #include "rundir/gf_lock.h"
@@ -70,7 +71,9 @@ void gf_sched_progress_text(const gf_progress *p, char *buf, size_t n)
         return;
     }
     const double frac = p->t_end_s > 0 ? p->t_s / p->t_end_s : 0.0;
-    const double rate = p->t_s > p->t0_s ? (p->t_s - p->t0_s) / (now - p->wall0_s) : 0.0; /* sim s per wall s */
+    double rate = p->t_s > p->t0_s ? (p->t_s - p->t0_s) / (now - p->wall0_s) : 0.0; /* sim s per wall s */
+    if (!(rate > 0.0)) /* one report so far: its own speed */
+        rate = p->steps_per_s * p->dt_s;
     format_duration(rate > 0 ? (p->t_end_s - p->t_s) / rate : NAN, eta, sizeof eta);
     snprintf(buf, n, "t = %.3g/%.3g s (%3.0f%%)  %.3g steps/s  ETA %s", p->t_s, p->t_end_s, 100.0 * frac,
              p->steps_per_s, eta);
@@ -148,6 +151,7 @@ typedef struct display {
     int done, failed, total;
     int held, elsewhere;        /* left to another process; found done by another process */
     int *held_runs;             /* indices of the runs left to another process (held of them) */
+    gf_campaign_eta eta;
 } display;
 
 static void clear_block(display *d)
@@ -193,6 +197,7 @@ static void report_finished(display *d, const gf_campaign *c, int index, const c
 {
     char reason[520], what[200], wall[32], cont[96];
     gf_run_state state = gf_ledger_state(dir, reason, sizeof reason);
+    gf_campaign_eta_finished(&d->eta, index);
     if (state == GF_RUN_DONE)
         ++d->done;
     else
@@ -226,10 +231,17 @@ static void draw_block(display *d, const gf_campaign *c, const slot *slots, int 
         ++d->drawn;
     }
     int running = 0;
+    double part = 0.0;
     for (int i = 0; i < n_slots; ++i)
-        running += slots[i].run >= 0;
-    printf("campaign %s: %d done, %d failed, %d running, %d remaining\n", c->name, d->done, d->failed, running,
-           remaining);
+        if (slots[i].run >= 0) {
+            ++running;
+            const gf_progress *p = &slots[i].progress;
+            part += gf_campaign_eta_part(&d->eta, slots[i].run, p->t_end_s > 0 ? p->t_s / p->t_end_s : 0.0);
+        }
+    char eta[32];
+    format_duration(gf_campaign_eta_left_s(&d->eta, part, gf_wtime()), eta, sizeof eta);
+    printf("campaign %s: %d done, %d failed, %d running, %d remaining  ETA %s\n", c->name, d->done, d->failed,
+           running, remaining, eta);
     ++d->drawn;
     fflush(stdout);
 }
@@ -306,7 +318,8 @@ static gf_status run_pool(gf_ctx *ctx, const gf_campaign *c, const gf_sched_opts
             const int index = todo[next++];
             char dir[4200];
             gf_ledger_run_dir(opt->out_dir, c->name, c->runs[index].spec.run_id, dir, sizeof dir);
-            slots[i] = (slot){.run = index, .progress = {.started_s = gf_wtime()}};
+            slots[i] = (slot){.run = index,
+                              .progress = {.started_s = gf_wtime(), .dt_s = gf_run_spec_dt_s(&c->runs[index].spec)}};
             pid_t pid = fork();
             if (pid == 0)
                 worker(c, index, dir, n_threads, opt, started, self, &slots[i]);
@@ -458,6 +471,8 @@ gf_status gf_sched_run(gf_ctx *ctx, const gf_campaign *c, const gf_sched_opts *o
                  .held_runs = malloc((size_t)(n_todo > 0 ? n_todo : 1) * sizeof(int))};
     if (!d.held_runs)
         st = GF_FAIL(ctx, GF_ERR_NOMEM, "out of memory");
+    gf_campaign_eta_init(&d.eta, c, todo, n_todo, opt->n_jobs);
+    d.eta.started_s = gf_wtime();
     if (st == GF_OK)
         st = gf_comm_size() > 1 ? run_farm(ctx, c, opt, todo, n_todo, started, &d)
                                 : run_pool(ctx, c, opt, todo, n_todo, started, &d);
@@ -466,6 +481,7 @@ gf_status gf_sched_run(gf_ctx *ctx, const gf_campaign *c, const gf_sched_opts *o
     counts->n_failed = d.failed;
     counts->n_held = d.held;
     counts->n_skipped += d.elsewhere;
+    gf_campaign_eta_free(&d.eta);
     free(todo);
     if (st == GF_ERR_INTERRUPTED)
         return GF_FAIL(ctx, GF_ERR_INTERRUPTED, "campaign %s interrupted: %d done, %d failed, %d not started",

@@ -55,9 +55,11 @@ gf_status gf_sched_run(gf_ctx *ctx, const gf_campaign *c, const gf_sched_opts *o
 void gf_sched_describe(const gf_campaign_run *r, char *buf, size_t n);
 /* Progress of one run as the engine reports it. The ETA extrapolates the
  * simulated-time rate measured since the clock first moved, so the scene
- * preparation (packing, settling: before t = 0) does not distort it. */
+ * preparation (packing, settling: before t = 0) does not distort it; until
+ * a second report gives that rate, the reported steps/s times the step dt_s. */
 typedef struct gf_progress {
     double t_s, t_end_s, steps_per_s;
+    double dt_s;              /* the run's DEM step (set by whoever starts the run); 0: unknown */
     double wall0_s, t0_s;     /* wall time and simulated time at the first report with t > 0 */
     double started_s;         /* wall time the run started */
 } gf_progress;

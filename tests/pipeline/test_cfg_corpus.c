@@ -7,6 +7,12 @@
  * line "path:line:column: message" naming a position inside the file, and no
  * campaign. Run under -DGF_SANITIZE=ON this also checks that no input makes
  * the parser read out of bounds or leak.
+ *
+ * Then every input of tests/pipeline/fuzz_corpus (the corpus libFuzzer grew
+ * from these files and the configs, workflows/fuzz.sh: valid campaigns and
+ * near misses that reach every branch the fuzzer found) goes through the
+ * reader of the ordinary build, which must meet the fuzzer's property
+ * (cfg_property.h): a campaign, or a located one-line refusal.
  */
 #include <dirent.h>
 #include <stdio.h>
@@ -14,6 +20,7 @@
 #include <string.h>
 
 #include "campaign/gf_campaign.h"
+#include "cfg_property.h"
 #include "gf_test.h"
 
 /* "path:L:C: text" with L, C >= 1 and text non-empty. */
@@ -36,6 +43,34 @@ static int lines_in(const char *path)
         n += c == '\n';
     if (f)
         fclose(f);
+    return n;
+}
+
+/* Replays dir/ through the reader; returns the number of files (accepted ones in *n_ok). */
+static int replay_fuzz_corpus(const char *dir, int *n_ok)
+{
+    DIR *d = opendir(dir);
+    GF_CHECK(d != NULL);
+    int n = 0;
+    struct dirent *e;
+    *n_ok = 0;
+    while (d && (e = readdir(d))) {
+        if (e->d_name[0] == '.')
+            continue;
+        char path[4400];
+        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+        gf_ctx ctx = {0};
+        gf_campaign *c = NULL;
+        gf_status st = gf_campaign_load_file(&ctx, path, NULL, 0, &c);
+        const char *fault = gf_cfg_outcome_fault(st, c, &ctx, path);
+        gf_test_check(fault == NULL, __FILE__, __LINE__, "fuzz_corpus/%s: %s (%s: %s)", e->d_name,
+                      fault ? fault : "", gf_status_str(st), ctx.last_msg);
+        *n_ok += st == GF_OK;
+        gf_campaign_destroy(&c);
+        ++n;
+    }
+    if (d)
+        closedir(d);
     return n;
 }
 
@@ -71,5 +106,11 @@ int main(void)
     if (d)
         closedir(d);
     gf_test_check(n_files >= 40, __FILE__, __LINE__, "corpus has %d files, expected >= 40", n_files);
+
+    snprintf(dir, sizeof dir, "%s/tests/pipeline/fuzz_corpus", src ? src : ".");
+    int n_ok = 0, n_fuzz = replay_fuzz_corpus(dir, &n_ok);
+    printf("fuzz corpus: %d inputs replayed, %d accepted as campaigns, %d refused with a located line\n", n_fuzz, n_ok,
+           n_fuzz - n_ok);
+    gf_test_check(n_fuzz >= 200, __FILE__, __LINE__, "fuzz corpus has %d files, expected >= 200", n_fuzz);
     return gf_test_finish();
 }

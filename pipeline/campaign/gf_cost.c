@@ -1,0 +1,94 @@
+/* Cost estimate of a run from its spec; see gf_cost.h. */
+#include "campaign/gf_cost.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "scenes/gf_scene.h"
+
+/*
+ * Per grain-step CPU constants (one core, Release build, -O3 -march=x86-64-v2),
+ * measured on the dry and immersed collapse of configs/demo.yaml (a = 1,
+ * Phi_i = 0.6, R0 = 10 D: 404 grains; R0 = 16 D: 960 grains) as the
+ * difference of CPU times between end_time 12 and 2 sqrt(D/g) (50 000 steps),
+ * which cancels the preparation:
+ *   dry:      3.2e-8 (404 grains), 3.8e-8 (960 grains) s per grain-step
+ *   immersed: 1.17e-7, 1.28e-7 s per grain-step, of which the fluid tier
+ *             (unresolved, cell 2 D) is the excess over the dry run
+ * and the preparation (packing by deposition, gf_packing.h) as what the
+ * end_time 2 runs took beyond their steps and settling: 2.2-2.9 ms per grain.
+ * Re-measure: docs/campaigns.md, "What a campaign costs".
+ */
+#define COST_DEM_S_PER_GRAIN_STEP 3.5e-8
+#define COST_FLUID_S_PER_GRAIN_STEP 8.8e-8
+#define COST_PACK_S_PER_GRAIN 2.5e-3
+/* netCDF-4 (deflated) bytes per grain and output record, same runs:
+ * particles.nc 38.7 and 39.9, fields.nc 42 and 34 (the fluid grid follows
+ * the domain, which follows the grains); diagnostics and probes ~100 kB. */
+#define COST_PARTICLES_B_PER_GRAIN_RECORD 40.0
+#define COST_FIELDS_B_PER_GRAIN_RECORD 40.0
+#define COST_SMALL_FILES_B 1.1e5
+
+static int is_immersed(const gf_scene_desc *scene, const gf_run_spec *s)
+{
+    return scene && (scene->needs & GF_NEED_FLUID) && strcmp(s->fluid.model, "none") != 0 &&
+           s->fluid.viscosity_Pa_s > 0.0;
+}
+
+static double grain_estimate(const gf_scene_desc *scene, const gf_run_spec *s)
+{
+    if (scene && scene->grain_count)
+        return scene->grain_count(s);
+    double n = gf_run_spec_param(s, "n_grains", NAN); /* scenes that take the count as a parameter */
+    return n > 0 ? n : NAN;
+}
+
+void gf_cost_estimate(const gf_run_spec *s, gf_run_cost *out)
+{
+    const gf_scene_desc *scene = gf_scene_find(s->scene);
+    memset(out, 0, sizeof *out);
+    out->immersed = is_immersed(scene, s);
+    out->may_stop_early = scene && scene->done != NULL;
+    out->n_grains = grain_estimate(scene, s);
+    const double t_grain = sqrt(s->grains.diameter_m / s->gravity_m_s2), dt = gf_run_spec_dt_s(s);
+    const double end_nd = s->end_time_nd > 0 ? s->end_time_nd : (scene ? scene->default_end_time_nd : 0.0);
+    out->steps = end_nd > 0 && dt > 0 ? ceil(end_nd * t_grain / dt) : NAN;
+    const double settle = dt > 0 ? ceil(gf_run_spec_param(s, "settle_time_nd", 0.0) * t_grain / dt) : 0.0;
+    const int packs = scene && (scene->needs & GF_NEED_PACKING);
+    const double per_step = COST_DEM_S_PER_GRAIN_STEP + (out->immersed ? COST_FLUID_S_PER_GRAIN_STEP : 0.0);
+    out->cpu_s = out->n_grains * ((packs ? COST_PACK_S_PER_GRAIN : 0.0) + (out->steps + settle) * per_step);
+    const double records = s->output.interval_nd > 0 ? floor(end_nd / s->output.interval_nd) + 1.0 : NAN;
+    double bytes = COST_SMALL_FILES_B;
+    if (s->output.particles)
+        bytes += records * out->n_grains * COST_PARTICLES_B_PER_GRAIN_RECORD;
+    if (s->output.fields && out->immersed)
+        bytes += records * out->n_grains * COST_FIELDS_B_PER_GRAIN_RECORD;
+    out->output_bytes = bytes;
+}
+
+void gf_cost_format_time(double s, char *buf, size_t n)
+{
+    if (!isfinite(s) || s < 0) {
+        snprintf(buf, n, "?");
+        return;
+    }
+    double t = floor(s + 0.5);
+    if (t >= 3600.0)
+        snprintf(buf, n, "%.0f:%02.0f:%02.0f", floor(t / 3600.0), fmod(floor(t / 60.0), 60.0), fmod(t, 60.0));
+    else
+        snprintf(buf, n, "%.0f:%02.0f", floor(t / 60.0), fmod(t, 60.0));
+}
+
+void gf_cost_format_bytes(double b, char *buf, size_t n)
+{
+    static const char *const units[] = {"B", "kB", "MB", "GB", "TB", "PB"};
+    if (!isfinite(b) || b < 0) {
+        snprintf(buf, n, "?");
+        return;
+    }
+    int k = 0;
+    while (b >= 1000.0 && k < 5)
+        b /= 1000.0, ++k;
+    snprintf(buf, n, k ? "%.3g %s" : "%.0f %s", b, units[k]);
+}

@@ -1,0 +1,75 @@
+#!/usr/bin/env bash
+# grainflow check on several files, its cost estimate and warnings, and the
+# warning of run and check when the realised Phi_i misses the one asked.
+# usage: cli_check.sh GRAINFLOW SOURCE_DIR
+set -uo pipefail
+g="$1" src="$2"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+fails=0
+fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
+ok() { echo "ok: $*"; }
+cd "$work"
+
+# several files: each checked, all headers printed, exit 0
+"$g" check "$src"/configs/*.yaml --brief >out.txt 2>err.txt; rc=$?
+n_cfg=$(ls "$src"/configs/*.yaml | wc -l)
+n_head=$(grep -c '^# .*: campaign .*, scene ' out.txt)
+[ $rc = 0 ] && [ "$n_head" = "$n_cfg" ] && grep -q "^# $n_cfg files checked, 0 invalid" out.txt &&
+  ok "check configs/*.yaml: $n_head files" || fail "check configs/*.yaml: exit $rc, $n_head of $n_cfg headers"
+# one bad file among good ones: the others still checked, exit 2, the error located
+"$g" check "$src/configs/demo.yaml" "$src/tests/pipeline/corpus/unknown_key.yaml" "$src/tests/pipeline/data/bc_ok.yaml" \
+  >out.txt 2>err.txt; rc=$?
+[ $rc = 2 ] && grep -q 'unknown_key.yaml:3:3: unknown key' err.txt && grep -q 'campaign cli_ok' out.txt &&
+  grep -q '^# 3 files checked, 1 invalid' out.txt &&
+  ok "check with one invalid file: exit 2, file:line:col, the others checked" ||
+  fail "check with one invalid file: exit $rc; $(cat err.txt)"
+
+# a scene key the grid overrides is said, at the key
+"$g" check "$src/configs/column_collapse_dry.yaml" --brief --set scene.aspect_ratio=2 >out.txt 2>err.txt
+grep -q -- '--set scene.aspect_ratio=2: warning: scene.aspect_ratio is overridden by the group a that 4 of the 4 runs set' err.txt &&
+  ok "scene.aspect_ratio under a grid over a: warned" || fail "no override warning: $(cat err.txt)"
+
+# the cost: grains, steps, CPU, output per run and campaign; steps = end_time sqrt(D/g) / dt
+"$g" check "$src/tests/pipeline/data/phi_loose_column.yaml" >out.txt 2>err.txt
+grep -q '^# cost: [0-9]* grains, [0-9.e+]* steps, CPU [0-9:]*, output [0-9.]* [kMG]*B' out.txt &&
+  grep -q '^# cost of campaign phi_loose: 1 runs' out.txt && ok "cost lines" || fail "cost lines: $(grep cost out.txt)"
+steps=$(sed -n 's/^# cost: [0-9]* grains, \([0-9.e+]*\) steps.*/\1/p' out.txt)
+dt=$(sed -n 's/.*dt = \([0-9.e+-]*\) s.*/\1/p' out.txt)
+tg=$(sed -n 's/.*sqrt(D\/g) = \([0-9.e+-]*\) s.*/\1/p' out.txt)
+awk -v s="$steps" -v dt="$dt" -v tg="$tg" 'BEGIN { e = 0.2 * tg / dt; exit !(s >= 0.99 * e && s <= 1.01 * e + 1) }' &&
+  ok "steps $steps = 0.2 sqrt(D/g) / dt" || fail "steps $steps, dt $dt, sqrt(D/g) $tg"
+
+# warnings: a long run, output every step; still valid (exit 0)
+"$g" check "$src/tests/pipeline/data/phi_loose_column.yaml" --set end_time=1e7 --set output.interval_nd=0.0002 \
+  >out.txt 2>err.txt; rc=$?
+[ $rc = 0 ] && grep -q 'warning: run 0 ([0-9a-f]*) needs about [0-9:]* of CPU' err.txt &&
+  grep -q 'warning: run 0 ([0-9a-f]*) writes about [0-9.]* [TGP]B' err.txt &&
+  grep -q 'warning: run 0 ([0-9a-f]*) writes a record every [0-9.]* steps' err.txt &&
+  grep -q 'warning: campaign phi_loose needs about' err.txt && ok "cost warnings" || fail "cost warnings: $(cat err.txt)"
+"$g" check "$src/tests/pipeline/data/phi_loose_column.yaml" >out.txt 2>err.txt
+[ ! -s err.txt ] && ok "no warning for a short run" || fail "warnings for a short run: $(cat err.txt)"
+
+# Phi_i: run warns exactly when the realised packing (the file's phi_initial_local)
+# is further from the asked one than phi_tolerance; check -o says the same afterwards
+"$g" run "$src/tests/pipeline/data/phi_loose_column.yaml" -o runs >out.txt 2>err.txt || fail "run failed: $(cat err.txt)"
+# the grain estimate against the grains the run held
+built=$(sed -n 's/^run [0-9a-f]* done: \([0-9]*\) grains.*/\1/p' out.txt)
+"$g" check "$src/tests/pipeline/data/phi_loose_column.yaml" >est.txt 2>/dev/null
+est=$(sed -n 's/^# cost: \([0-9]*\) grains.*/\1/p' est.txt)
+awk -v b="$built" -v e="$est" 'BEGIN { exit !(b > 0 && e >= 0.9 * b && e <= 1.1 * b) }' &&
+  ok "grain estimate $est for $built grains built (10 %)" || fail "grain estimate $est for $built grains built"
+nc=$(ls runs/phi_loose/*/diagnostics.nc)
+realised=$(ncdump -h "$nc" | sed -n 's/.*:phi_initial_local = \([0-9.e+-]*\) ;.*/\1/p')
+beyond=$(awk -v r="$realised" 'BEGIN { d = r - 0.58; if (d < 0) d = -d; print (d > 0.005) }')
+if [ "$beyond" = 1 ]; then
+  grep -q "warning: run [0-9a-f]* starts at Phi_i = ${realised:0:5}[0-9]* (interior, at t = 0), .* from the 0.58 asked: more than phi_tolerance = 0.005" err.txt &&
+    ok "run warns: realised $realised, asked 0.58" || fail "run: realised $realised, no warning: $(cat err.txt)"
+  "$g" check "$src/tests/pipeline/data/phi_loose_column.yaml" -o runs --brief >out.txt 2>err.txt
+  grep -q "warning: run 0 ([0-9a-f]*) started at Phi_i = ${realised:0:5}" err.txt &&
+    ok "check -o warns about the run already done" || fail "check -o: $(cat err.txt)"
+else
+  ! grep -q "starts at Phi_i" err.txt && ok "run: realised $realised within 0.005, no warning" ||
+    fail "run warned although realised $realised is within tolerance"
+fi
+exit $((fails > 0))
