@@ -276,7 +276,7 @@ static void post_run(const char *run_dir, const gf_stage_info *only, gf_post_row
         snprintf(line, sizeof line, "stage %s: %s", si->name, c.last_msg[0] ? c.last_msg : gf_status_str(st));
         if (st == GF_OK)
             stage_name_add(row, si);
-        else if (st == GF_ERR_UNSUPPORTED && c.last_msg[0]) /* an input the run did not write */
+        else if (st == GF_ERR_UNSUPPORTED && c.last_msg[0]) /* not determined from what the run wrote */
             add_note(row, line);
         else if (st != GF_ERR_UNSUPPORTED)
             gf_post_row_add_error(row, "error", line);

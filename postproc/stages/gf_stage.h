@@ -11,9 +11,10 @@
  *
  * Return codes: GF_OK (results in the row); GF_ERR_UNSUPPORTED when the stage
  * does not apply to this run (e.g. no probes in a dry run: no message, the
- * row is left as is), or with a message when an input it needs was not
- * written (output.particles: false): the message goes to the row's notes and
- * the run stays ok; any other code is a per-run failure whose message
+ * row is left as is), or with a message when what the run wrote cannot give
+ * the stage's quantities (an input not written, output.particles: false; a
+ * record too short for a steady window; an avalanche that did not flow): the
+ * message goes to the row's notes, the columns stay empty and the run stays ok; any other code is a per-run failure whose message
  * (ctx) the caller copies into the row's error column.
  */
 #ifndef GF_STAGE_H

@@ -56,8 +56,8 @@ gf_status gf_stage_flow_rate(gf_ctx *ctx, const gf_stage_in *in, const gf_stage_
     if (st == GF_OK) {
         gf_stats_steady(t, qg, nt, &s);
         if (!s.ok)
-            st = GF_FAIL(ctx, GF_ERR_IO, "%s: grain_flow_rate has %zu samples, at least 10 needed for a steady "
-                                         "window", f.path, nt);
+            st = GF_FAIL(ctx, GF_ERR_UNSUPPORTED, "not determined: %s: grain_flow_rate has %zu samples, at "
+                                                  "least 10 needed for a steady window", f.path, nt);
     }
     if (st == GF_OK) {
         gf_post_row *row = out->row;

@@ -180,7 +180,7 @@ gf_status gf_stage_profiles(gf_ctx *ctx, const gf_stage_in *in, const gf_stage_o
     }
     gf_ncr_close(&p);
     if (st == GF_OK && nframes == 0)
-        st = GF_FAIL(ctx, GF_ERR_IO, "%s/particles.nc: no frame in the steady window (t >= %g s)", in->run_dir, t0);
+        st = GF_FAIL(ctx, GF_ERR_UNSUPPORTED, "not determined: %s/particles.nc: no frame in the steady window (t >= %g s)", in->run_dir, t0);
     double *ug = calloc(ns + 1, sizeof *ug), *phi = calloc(ns + 1, sizeof *phi), *uf = malloc((ns + 1) * sizeof *uf);
     double *yc = malloc((ns + 1) * sizeof *yc);
     if (st == GF_OK && (!ug || !phi || !uf || !yc))

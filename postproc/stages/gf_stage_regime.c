@@ -106,7 +106,7 @@ static gf_status avalanche(gf_ctx *ctx, const gf_stage_in *in, const gf_ncr *d, 
     if (st == GF_OK) {
         gf_stats_steady(t, q, nq < nt ? nq : nt, &s);
         if (!s.ok || !(s.mean > 0.0))
-            st = GF_FAIL(ctx, GF_ERR_NUMERIC, "%s: no steady positive grain flow rate (mean %g m3/s)", d->path,
+            st = GF_FAIL(ctx, GF_ERR_UNSUPPORTED, "not determined: %s: no steady positive grain flow rate (mean %g m3/s)", d->path,
                          s.mean);
     }
     free(t);
@@ -148,7 +148,7 @@ static gf_status collapse(gf_ctx *ctx, const gf_ncr *d, const gf_groups_input *g
     if (st == GF_OK)
         st = gf_ncr_var_1d(ctx, d, "front_position", &x, &nx);
     if (st == GF_OK && (nx != nt || nt < 3))
-        st = GF_FAIL(ctx, GF_ERR_IO, "%s: front_position has %zu samples (time %zu), 3 or more needed", d->path, nx,
+        st = GF_FAIL(ctx, GF_ERR_UNSUPPORTED, "not determined: %s: front_position has %zu samples (time %zu), 3 or more needed", d->path, nx,
                      nt);
     double umax = NAN, t_rest = NAN;
     if (st == GF_OK) {
@@ -165,7 +165,7 @@ static gf_status collapse(gf_ctx *ctx, const gf_ncr *d, const gf_groups_input *g
     if (!(gi->column_height_m > 0.0))
         return GF_FAIL(ctx, GF_ERR_IO, "%s: column_height_m (H0) is needed for the collapse scales", d->path);
     if (!(t_rest > 0.0))
-        return GF_FAIL(ctx, GF_ERR_NUMERIC, "%s: no positive time to rest (t_rest = %g s)", d->path, t_rest);
+        return GF_FAIL(ctx, GF_ERR_UNSUPPORTED, "not determined: %s: no positive time to rest (t_rest = %g s)", d->path, t_rest);
     const double h = gi->column_height_m / gi->diameter_m;
     gf_scales sH = *sc;
     sH.t_viscous_s = sc->t_viscous_s * h;
