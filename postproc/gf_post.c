@@ -44,6 +44,7 @@
 #include "gf_summary.h"
 #include "rundir/gf_lock.h"
 #include "rundir/gf_manifest.h"
+#include "stages/gf_post_label.h"
 #include "stages/gf_stage.h"
 #include "stages/gf_stage_util.h"
 
@@ -437,6 +438,12 @@ static size_t gauge_index(const gf_post_row *w)
     return best;
 }
 
+/* Curves in the order of their labels (dry before immersed, then by group values). */
+static int by_label(const void *x, const void *y)
+{
+    return strcmp(((const gf_fig_series *)x)->label, ((const gf_fig_series *)y)->label);
+}
+
 static gf_status write_figures(gf_ctx *ctx, const char *dir, const gf_post_row *rows, int n)
 {
     char fig[1100], p[1200];
@@ -450,11 +457,21 @@ static gf_status write_figures(gf_ctx *ctx, const char *dir, const gf_post_row *
     gf_fig_shape *shp = calloc((size_t)n + 1, sizeof *shp);
     gf_fig_series *front = calloc((size_t)n + 1, sizeof *front), *pb = calloc((size_t)n + 1, sizeof *pb);
     double **bufs = calloc(4 * (size_t)n + 1, sizeof *bufs);
+    /* legends name runs by variant and groups (gf_post_label.h), not by hash */
+    char(*label)[GF_POST_LABEL_LEN] = calloc((size_t)n + 1, sizeof *label);
+    int *variant = calloc((size_t)n + 1, sizeof *variant);
+    gf_post_variants variants;
+    const char *variant_names[GF_POST_MAX_VARIANTS];
     gf_status st = GF_OK;
-    if (!St || !r || !a || !phi || !ro || !reg || !shp || !front || !pb || !bufs) {
+    if (!St || !r || !a || !phi || !ro || !reg || !shp || !front || !pb || !bufs || !label || !variant) {
         st = GF_FAIL(ctx, GF_ERR_NOMEM, "post: out of memory");
         goto done;
     }
+    gf_post_run_labels(rows, n, label);
+    gf_post_run_variants(rows, n, variant, &variants);
+    for (int v = 0; v < variants.n; ++v)
+        variant_names[v] = variants.names[v];
+    gf_fig_opts by_variant = {.n_variants = variants.n, .variant = variant, .variant_names = variant_names};
     int n_aval = 0, n_coll = 0, n_front = 0, n_pb = 0;
     for (int i = 0; i < n; ++i) {
         const gf_post_row *w = &rows[i];
@@ -469,21 +486,23 @@ static gf_status write_figures(gf_ctx *ctx, const char *dir, const gf_post_row *
         n_coll += strcmp(w->scene, "column_collapse") == 0;
         size_t m;
         if (read_series(w->run_dir, "post_deposit.nc", "front_position_norm", 0, &bufs[4 * i], &bufs[4 * i + 1], &m))
-            front[n_front++] = (gf_fig_series){w->run_id, (int)m, bufs[4 * i], bufs[4 * i + 1]};
+            front[n_front++] = (gf_fig_series){label[i], (int)m, bufs[4 * i], bufs[4 * i + 1]};
         if (read_series(w->run_dir, "probes.nc", "excess_pore_pressure", gauge_index(w), &bufs[4 * i + 2],
                         &bufs[4 * i + 3], &m))
-            pb[n_pb++] = (gf_fig_series){w->run_id, (int)m, bufs[4 * i + 2], bufs[4 * i + 3]};
+            pb[n_pb++] = (gf_fig_series){label[i], (int)m, bufs[4 * i + 2], bufs[4 * i + 3]};
     }
+    qsort(front, (size_t)n_front, sizeof *front, by_label);
+    qsort(pb, (size_t)n_pb, sizeof *pb, by_label);
     if (n_aval > 0 || n_coll == 0) {
         snprintf(p, sizeof p, "%s/regime_diagram.svg", fig);
         st = gf_fig_regime_diagram(ctx, p, NULL, n, St, r, reg);
     }
     if (st == GF_OK && n_coll > 0) {
         snprintf(p, sizeof p, "%s/deposit_shape.svg", fig);
-        st = gf_fig_deposit_shape(ctx, p, NULL, n, a, phi, shp);
+        st = gf_fig_deposit_shape(ctx, p, &by_variant, n, a, phi, shp);
         if (st == GF_OK) {
             snprintf(p, sizeof p, "%s/runout.svg", fig);
-            st = gf_fig_runout(ctx, p, NULL, n, a, ro, reg);
+            st = gf_fig_runout(ctx, p, &by_variant, n, a, ro, reg);
         }
     }
     if (st == GF_OK && n_front > 0) {
@@ -493,13 +512,14 @@ static gf_status write_figures(gf_ctx *ctx, const char *dir, const gf_post_row *
     }
     if (st == GF_OK && n_pb > 0) {
         snprintf(p, sizeof p, "%s/pore_pressure.svg", fig);
-        gf_fig_opts o = {.title = "Basal excess pore pressure at the summary gauge (x = 13 D for collapses)"};
+        gf_fig_opts o = {.title = "Basal excess pore pressure at the summary gauge (Pb_x_m)"};
         st = gf_fig_timeseries(ctx, p, &o, "t (s)", "excess pore pressure (Pa)", n_pb, pb);
     }
 done:
     for (int i = 0; bufs && i < 4 * n; ++i)
         free(bufs[i]);
     free(bufs), free(St), free(r), free(a), free(phi), free(ro), free(reg), free(shp), free(front), free(pb);
+    free(label), free(variant);
     return st;
 }
 

@@ -309,6 +309,7 @@ gf_status gf_nc_writer_close(gf_nc_writer **pw)
         remove(w->tmp);
     } else {
         gf_nc_remove_partial(w); /* a restarted run's records now hold it all */
+        st = gf_nc_sidecar_write(w);
     }
     gf_nc_free(w);
     return st;

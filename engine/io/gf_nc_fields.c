@@ -95,8 +95,11 @@ gf_status gf_nc_fields_open(gf_ctx *ctx, const char *path, const gf_nc_meta *met
     }
     gf_nc_writer *w;
     GF_TRY(gf_nc_begin(ctx, path, meta, GF_NC_FIELDS, NULL, &w));
-    for (int k = 0; k < 3; ++k)
+    for (int k = 0; k < 3; ++k) {
         w->n_cells[k] = (size_t)n_cells[k];
+        w->grid_lo_m[k] = lo_m[k];
+        w->grid_cell_m[k] = cell_m[k];
+    }
     w->n_vars = n_vars;
     w->varids = calloc((size_t)n_vars, sizeof *w->varids);
     gf_status st = w->varids ? GF_OK : GF_FAIL(ctx, GF_ERR_NOMEM, "%s: out of memory", path);

@@ -37,6 +37,8 @@ struct gf_nc_writer {
     int n_stations;
     /* fields */
     size_t n_cells[3];       /* nx, ny, nz */
+    double grid_lo_m[3];     /* grid corner (x, y, z) */
+    double grid_cell_m[3];   /* cell size (x, y, z) */
 };
 
 /* Creates "<path>.tmp" (netCDF-4, clobber), writes the global attributes
@@ -64,6 +66,9 @@ gf_status gf_nc_check_info(gf_ctx *ctx, const char *path, const gf_var_info *inf
 gf_status gf_nc_particles_reload_ids(gf_nc_writer *w);
 /* Removes "<path>.partial" if present (gf_nc_resume.c). */
 void gf_nc_remove_partial(const gf_nc_writer *w);
+/* particles.nc, fields.nc: writes the XDMF sidecar "<name>.xmf" beside the
+ * closed file (gf_nc_sidecar.c); other kinds: nothing. */
+gf_status gf_nc_sidecar_write(gf_nc_writer *w);
 /* Frees a writer after its file was closed or removed. */
 void gf_nc_free(gf_nc_writer *w);
 

@@ -89,10 +89,10 @@ gf_status gf_fig_pareto(gf_ctx *ctx, const char *path, const gf_fig_opts *opt, i
     double width = opt && opt->width_px > 0 ? opt->width_px : 820.0;
     double height = opt && opt->height_px > 0 ? opt->height_px : 580.0;
     gf_svg_legend_entry leg[4] = {
-        {"setting", "#8c8c8c", 0, GF_SVG_CIRCLE, NULL},
-        {"Pareto front", "#d62728", 1, GF_SVG_CIRCLE, NULL},
-        {"tolerance", "#1f77b4", 1, GF_SVG_CIRCLE, "6,4"},
-        {"recommended", "#ffbf00", 0, GF_SVG_SQUARE, NULL},
+        {"setting", "#8c8c8c", 0, GF_SVG_CIRCLE, NULL, 0},
+        {"Pareto front", "#d62728", 1, GF_SVG_CIRCLE, NULL, 0},
+        {"tolerance", "#1f77b4", 1, GF_SVG_CIRCLE, "6,4", 0},
+        {"recommended", "#ffbf00", 0, GF_SVG_SQUARE, NULL, 0},
     };
     longest = (int)strlen("Pareto front");
     gf_svg_frame f;

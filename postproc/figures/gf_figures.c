@@ -27,11 +27,11 @@
 
 #include "figures/gf_svg.h"
 
-static const char *const regime_names[GF_FIG_REGIME_COUNT] = {"unknown", "viscous", "inertial", "free-fall",
-                                                               "transitional"};
+static const char *const regime_names[GF_FIG_REGIME_COUNT] = {"undetermined", "viscous", "inertial",
+                                                               "free-fall", "transitional"};
 static const char *const regime_colours[GF_FIG_REGIME_COUNT] = {"#8c8c8c", "#1f77b4", "#ff7f0e", "#2ca02c",
                                                                  "#9467bd"};
-static const char *const shape_names[GF_FIG_SHAPE_COUNT] = {"unknown", "triangle", "trapezoid"};
+static const char *const shape_names[GF_FIG_SHAPE_COUNT] = {"undetermined", "triangle", "trapezoid"};
 static const char *const shape_colours[GF_FIG_SHAPE_COUNT] = {"#8c8c8c", "#d62728", "#1f77b4"};
 static const gf_svg_marker_shape shape_markers[GF_FIG_SHAPE_COUNT] = {GF_SVG_CIRCLE, GF_SVG_TRIANGLE,
                                                                       GF_SVG_SQUARE};
@@ -45,7 +45,7 @@ enum { legend_max_rows = 14 };
 gf_fig_regime gf_fig_regime_from_name(const char *name)
 {
     if (!name)
-        return GF_FIG_REGIME_UNKNOWN;
+        return GF_FIG_REGIME_UNDETERMINED;
     if (strcmp(name, "viscous") == 0)
         return GF_FIG_REGIME_VISCOUS;
     if (strcmp(name, "inertial") == 0)
@@ -54,7 +54,7 @@ gf_fig_regime gf_fig_regime_from_name(const char *name)
         return GF_FIG_REGIME_FREE_FALL;
     if (strcmp(name, "transitional") == 0)
         return GF_FIG_REGIME_TRANSITIONAL;
-    return GF_FIG_REGIME_UNKNOWN;
+    return GF_FIG_REGIME_UNDETERMINED;
 }
 
 const char *gf_fig_regime_name(gf_fig_regime r)
@@ -68,7 +68,7 @@ gf_fig_shape gf_fig_shape_from_name(const char *name)
         return GF_FIG_SHAPE_TRIANGLE;
     if (name && strcmp(name, "trapezoid") == 0)
         return GF_FIG_SHAPE_TRAPEZOID;
-    return GF_FIG_SHAPE_UNKNOWN;
+    return GF_FIG_SHAPE_UNDETERMINED;
 }
 
 const char *gf_fig_shape_name(gf_fig_shape s)
@@ -189,6 +189,68 @@ static void skipped_caption(gf_svg *s, const gf_svg_frame *f, int n_skipped, con
     gf_svg_caption(s, f, buf);
 }
 
+/* ---------------------------------------------------------------- variants */
+
+enum { max_variants = 8, GF_FIG_VARIANT_LABEL_LEN = 128 };
+
+static int n_variants_of(const gf_fig_opts *opt)
+{
+    if (!opt || opt->n_variants <= 1 || !opt->variant)
+        return 1;
+    return opt->n_variants < max_variants ? opt->n_variants : max_variants;
+}
+
+/* Variant of run i (0 when there is one, or its index is out of range). */
+static int variant_of(const gf_fig_opts *opt, int i)
+{
+    int nv = n_variants_of(opt);
+    if (nv <= 1)
+        return 0;
+    int v = opt->variant[i];
+    return v >= 0 && v < nv ? v : 0;
+}
+
+/* Marker style of run i: every other variant hollow, the variants at one
+ * point side by side, 0.7 marker widths apart (8 px or more at 11 px). */
+static gf_svg_marker_style variant_style(const gf_fig_opts *opt, int i, double size_px)
+{
+    int nv = n_variants_of(opt), v = variant_of(opt, i);
+    gf_svg_marker_style st = {v % 2, 0.0};
+    if (nv > 1)
+        st.dx_px = ((double)v - 0.5 * (nv - 1)) * 0.75 * size_px;
+    return st;
+}
+
+/* Legend rows for the variants that have a marker drawn (drawn[v]): the
+ * name and how its markers are drawn, "dry: filled markers", "immersed: outlined markers". */
+static int variant_legend(const gf_fig_opts *opt, const int *drawn, gf_svg_legend_entry *e,
+                          char (*text)[GF_FIG_VARIANT_LABEL_LEN])
+{
+    int nv = n_variants_of(opt), n_e = 0;
+    if (nv <= 1)
+        return 0;
+    for (int v = 0; v < nv; ++v) {
+        if (!drawn[v])
+            continue;
+        const char *name = opt->variant_names && opt->variant_names[v] ? opt->variant_names[v] : "(variant)";
+        snprintf(text[n_e], GF_FIG_VARIANT_LABEL_LEN, "%s: %s markers", name, v % 2 ? "outlined" : "filled");
+        e[n_e] = (gf_svg_legend_entry){text[n_e], "#555555", 0, GF_SVG_CIRCLE, NULL, v % 2};
+        n_e++;
+    }
+    return n_e;
+}
+
+/* Longest variant row ("<name>: outlined markers"), for the legend's width. */
+enum { variant_suffix_chars = 18 };
+static int variant_chars(const gf_fig_opts *opt, int at_least)
+{
+    int nv = n_variants_of(opt);
+    for (int v = 0; nv > 1 && opt->variant_names && v < nv; ++v)
+        if (opt->variant_names[v] && (int)strlen(opt->variant_names[v]) + variant_suffix_chars > at_least)
+            at_least = (int)strlen(opt->variant_names[v]) + variant_suffix_chars;
+    return at_least;
+}
+
 /* ---------------------------------------------------------------- regime diagram */
 
 /* One set of boundaries, three pieces meeting at (St_c, r_c = 4):
@@ -208,22 +270,26 @@ static void draw_regime_boundaries(gf_svg *s, const gf_svg_frame *f, double St_c
 }
 
 /* Markers coloured by regime; marks the regimes drawn in present[]; returns the runs skipped. */
-static int plot_runs_by_regime(gf_svg *s, const gf_svg_frame *f, int n_runs, const double *x, const double *y,
-                               const gf_fig_regime *regime, const char *xname, const char *yname,
-                               int present[GF_FIG_REGIME_COUNT])
+static int plot_runs_by_regime(gf_svg *s, const gf_svg_frame *f, const gf_fig_opts *opt, int n_runs,
+                               const double *x, const double *y, const gf_fig_regime *regime, const char *xname,
+                               const char *yname, int present[GF_FIG_REGIME_COUNT], int *drawn_variant)
 {
     int n_skipped = 0;
     for (int i = 0; i < n_runs; ++i) {
-        gf_fig_regime g = regime ? regime[i] : GF_FIG_REGIME_UNKNOWN;
+        gf_fig_regime g = regime ? regime[i] : GF_FIG_REGIME_UNDETERMINED;
         if ((int)g < 0 || g >= GF_FIG_REGIME_COUNT)
-            g = GF_FIG_REGIME_UNKNOWN;
+            g = GF_FIG_REGIME_UNDETERMINED;
         const char *colour = regime ? regime_colours[g] : palette[0];
         char tip[128];
         snprintf(tip, sizeof tip, "%s = %.3g, %s = %.3g (%s)", xname, x[i], yname, y[i], regime_names[g]);
-        if (gf_svg_marker(s, f, x[i], y[i], GF_SVG_CIRCLE, colour, marker_px, tip))
+        gf_svg_marker_style style = variant_style(opt, i, marker_px);
+        if (gf_svg_marker_styled(s, f, x[i], y[i], GF_SVG_CIRCLE, colour, marker_px, &style, tip)) {
             present[g] = 1;
-        else
+            if (drawn_variant)
+                drawn_variant[variant_of(opt, i)] = 1;
+        } else {
             n_skipped++;
+        }
     }
     return n_skipped;
 }
@@ -232,11 +298,11 @@ static int plot_runs_by_regime(gf_svg *s, const gf_svg_frame *f, int n_runs, con
 static int regime_legend(const int present[GF_FIG_REGIME_COUNT], gf_svg_legend_entry *e)
 {
     static const gf_fig_regime order[] = {GF_FIG_REGIME_VISCOUS, GF_FIG_REGIME_INERTIAL, GF_FIG_REGIME_FREE_FALL,
-                                          GF_FIG_REGIME_TRANSITIONAL, GF_FIG_REGIME_UNKNOWN};
+                                          GF_FIG_REGIME_TRANSITIONAL, GF_FIG_REGIME_UNDETERMINED};
     int n_e = 0;
     for (int k = 0; k < GF_FIG_REGIME_COUNT; ++k)
         if (present[order[k]])
-            e[n_e++] = (gf_svg_legend_entry){regime_names[order[k]], regime_colours[order[k]], 0, GF_SVG_CIRCLE, NULL};
+            e[n_e++] = (gf_svg_legend_entry){regime_names[order[k]], regime_colours[order[k]], 0, GF_SVG_CIRCLE, NULL, 0};
     return n_e;
 }
 
@@ -277,11 +343,12 @@ gf_status gf_fig_regime_diagram(gf_ctx *ctx, const char *path, const gf_fig_opts
     gf_svg_text_data(s, &f, f.x.hi / 1.6, f.y.lo * 1.4, "end", 13.0, "#555555", "inertial");
 
     int present[GF_FIG_REGIME_COUNT] = {0};
-    int n_skipped = plot_runs_by_regime(s, &f, n_runs, stokes_St, density_ratio_r, regime, "St", "r", present);
+    int n_skipped =
+        plot_runs_by_regime(s, &f, NULL, n_runs, stokes_St, density_ratio_r, regime, "St", "r", present, NULL);
     gf_svg_legend_entry e[GF_FIG_REGIME_COUNT + 2];
     int n_e = regime_legend(present, e);
-    e[n_e++] = (gf_svg_legend_entry){"Courrech du Pont et al. 2003", cdp, 1, GF_SVG_CIRCLE, "7,4"};
-    e[n_e++] = (gf_svg_legend_entry){"Izard 2014", izd, 1, GF_SVG_CIRCLE, "2,3"};
+    e[n_e++] = (gf_svg_legend_entry){"Courrech du Pont et al. 2003", cdp, 1, GF_SVG_CIRCLE, "7,4", 0};
+    e[n_e++] = (gf_svg_legend_entry){"Izard 2014", izd, 1, GF_SVG_CIRCLE, "2,3", 0};
     gf_svg_legend(s, &f, 4, n_e, e);
     skipped_caption(s, &f, n_skipped, "St or r not finite and > 0");
     return gf_svg_close(&s);
@@ -294,7 +361,7 @@ gf_status gf_fig_deposit_shape(gf_ctx *ctx, const char *path, const gf_fig_opts 
 {
     GF_TRY(check_arrays(ctx, "deposit-shape figure", path, n_runs, aspect_ratio_a, phi_initial));
     page p = page_of(opt, "Deposit shape in the (a, Phi_i) plane");
-    gf_svg_frame f = frame_of(&p, (int)strlen("trapezoid"));
+    gf_svg_frame f = frame_of(&p, variant_chars(opt, (int)strlen("undetermined")));
     gf_svg_scale xs = opt && opt->x_scale == GF_FIG_SCALE_LOG ? GF_SVG_LOG : GF_SVG_LINEAR;
     gf_svg_scale ys = opt && opt->y_scale == GF_FIG_SCALE_LOG ? GF_SVG_LOG : GF_SVG_LINEAR;
     double alo, ahi, plo, phi;
@@ -317,26 +384,32 @@ gf_status gf_fig_deposit_shape(gf_ctx *ctx, const char *path, const gf_fig_opts 
     GF_TRY(gf_svg_open(ctx, path, p.width_px, p.height_px, &s));
     gf_svg_title(s, &f, p.title);
     gf_svg_axes(s, &f);
-    int present[GF_FIG_SHAPE_COUNT] = {0};
+    int present[GF_FIG_SHAPE_COUNT] = {0}, drawn_variant[max_variants] = {0};
     int n_skipped = 0;
     for (int i = 0; i < n_runs; ++i) {
-        gf_fig_shape g = shape ? shape[i] : GF_FIG_SHAPE_UNKNOWN;
+        gf_fig_shape g = shape ? shape[i] : GF_FIG_SHAPE_UNDETERMINED;
         if ((int)g < 0 || g >= GF_FIG_SHAPE_COUNT)
-            g = GF_FIG_SHAPE_UNKNOWN;
+            g = GF_FIG_SHAPE_UNDETERMINED;
         char tip[96];
         snprintf(tip, sizeof tip, "a = %.3g, Phi_i = %.3g (%s)", aspect_ratio_a[i], phi_initial[i], shape_names[g]);
-        if (gf_svg_marker(s, &f, aspect_ratio_a[i], phi_initial[i], shape_markers[g], shape_colours[g], 11.0, tip))
+        gf_svg_marker_style style = variant_style(opt, i, 11.0);
+        if (gf_svg_marker_styled(s, &f, aspect_ratio_a[i], phi_initial[i], shape_markers[g], shape_colours[g], 11.0,
+                                 &style, tip)) {
             present[g] = 1;
-        else
+            drawn_variant[variant_of(opt, i)] = 1;
+        } else {
             n_skipped++;
+        }
     }
-    gf_svg_legend_entry e[GF_FIG_SHAPE_COUNT];
+    gf_svg_legend_entry e[GF_FIG_SHAPE_COUNT + max_variants];
     int n_e = 0;
-    static const gf_fig_shape order[] = {GF_FIG_SHAPE_TRIANGLE, GF_FIG_SHAPE_TRAPEZOID, GF_FIG_SHAPE_UNKNOWN};
+    static const gf_fig_shape order[] = {GF_FIG_SHAPE_TRIANGLE, GF_FIG_SHAPE_TRAPEZOID, GF_FIG_SHAPE_UNDETERMINED};
     for (int k = 0; k < GF_FIG_SHAPE_COUNT; ++k)
         if (present[order[k]])
             e[n_e++] = (gf_svg_legend_entry){shape_names[order[k]], shape_colours[order[k]], 0, shape_markers[order[k]],
-                                             NULL};
+                                             NULL, 0};
+    char variant_text[max_variants][GF_FIG_VARIANT_LABEL_LEN];
+    n_e += variant_legend(opt, drawn_variant, e + n_e, variant_text);
     gf_svg_legend(s, &f, 4, n_e, e);
     skipped_caption(s, &f, n_skipped, "a or Phi_i not finite");
     return gf_svg_close(&s);
@@ -408,8 +481,9 @@ gf_status gf_fig_runout(gf_ctx *ctx, const char *path, const gf_fig_opts *opt, i
     gf_svg_title(s, &f, p.title);
     gf_svg_axes(s, &f);
     const char *lube = "#333333", *laj = "#b22222";
-    /* Lube et al. 2005 give the change of regime as a range, a0 = 1.8-2.8: shade it */
-    {
+    /* Lube et al. 2005 give the change of regime as a range, a0 = 1.8-2.8: shade it (where the axis reaches it) */
+    int transition_drawn = f.x.hi > 1.8 && f.x.lo < 2.8;
+    if (transition_drawn) {
         double bx[4] = {1.8, 2.8, 2.8, 1.8}, by[4] = {f.y.lo, f.y.lo, f.y.hi, f.y.hi};
         gf_svg_region(s, &f, 4, bx, by, "#999999", 0.18);
     }
@@ -421,17 +495,21 @@ gf_status gf_fig_runout(gf_ctx *ctx, const char *path, const gf_fig_opts *opt, i
     draw_branch(s, &f, 1.8, 1.0, tiny, 3.0, laj, "2,3");
     draw_branch(s, &f, 2.3, 2.0 / 3.0, 3.0, f.x.hi, laj, "2,3");
 
-    int present[GF_FIG_REGIME_COUNT] = {0};
-    int n_skipped = plot_runs_by_regime(s, &f, n_runs, aspect_ratio_a, runout_norm, regime, "a", "runout", present);
-    gf_svg_legend_entry e[GF_FIG_REGIME_COUNT + 3];
+    int present[GF_FIG_REGIME_COUNT] = {0}, drawn_variant[max_variants] = {0};
+    int n_skipped = plot_runs_by_regime(s, &f, opt, n_runs, aspect_ratio_a, runout_norm, regime, "a", "runout",
+                                        present, drawn_variant);
+    gf_svg_legend_entry e[GF_FIG_REGIME_COUNT + 3 + max_variants];
     int n_e = 0;
     if (regime)
         n_e = regime_legend(present, e);
-    else if (present[GF_FIG_REGIME_UNKNOWN])
-        e[n_e++] = (gf_svg_legend_entry){"runs", palette[0], 0, GF_SVG_CIRCLE, NULL};
-    e[n_e++] = (gf_svg_legend_entry){lube_label, lube, 1, GF_SVG_CIRCLE, "7,4"};
-    e[n_e++] = (gf_svg_legend_entry){laj_label, laj, 1, GF_SVG_CIRCLE, "2,3"};
-    e[n_e++] = (gf_svg_legend_entry){"Lube 2005 transition a0", "#999999", 2, GF_SVG_CIRCLE, NULL};
+    else if (present[GF_FIG_REGIME_UNDETERMINED])
+        e[n_e++] = (gf_svg_legend_entry){"runs", palette[0], 0, GF_SVG_CIRCLE, NULL, 0};
+    char variant_text[max_variants][GF_FIG_VARIANT_LABEL_LEN];
+    n_e += variant_legend(opt, drawn_variant, e + n_e, variant_text);
+    e[n_e++] = (gf_svg_legend_entry){lube_label, lube, 1, GF_SVG_CIRCLE, "7,4", 0};
+    e[n_e++] = (gf_svg_legend_entry){laj_label, laj, 1, GF_SVG_CIRCLE, "2,3", 0};
+    if (transition_drawn)
+        e[n_e++] = (gf_svg_legend_entry){"Lube 2005 transition a0", "#999999", 2, GF_SVG_CIRCLE, NULL, 0};
     gf_svg_legend(s, &f, 4, n_e, e);
     skipped_caption(s, &f, n_skipped, ys == GF_SVG_LOG || xs == GF_SVG_LOG ? "not finite and > 0 on a log axis"
                                                                              : "not finite");
@@ -510,23 +588,35 @@ gf_status gf_fig_timeseries(gf_ctx *ctx, const char *path, const gf_fig_opts *op
     GF_TRY(gf_svg_open(ctx, path, p.width_px, p.height_px, &s));
     gf_svg_title(s, &f, p.title);
     gf_svg_axes(s, &f);
-    int n_rows = n_series <= legend_max_rows ? n_series : legend_max_rows - 1;
+    /* a series with nothing drawn has no legend row; past legend_max_rows the
+     * last row says how many more were drawn */
     gf_svg_legend_entry e[legend_max_rows];
+    int n_rows = 0, n_drawn = 0, n_empty = 0;
     for (int k = 0; k < n_series; ++k) {
         const char *col = palette[k % 10];
         /* past ten curves, colours repeat: the dash pattern tells them apart */
         const char *dash = (k / 10) % 3 == 0 ? NULL : (k / 10) % 3 == 1 ? "6,3" : "2,2";
-        gf_svg_polyline(s, &f, series[k].n, series[k].x, series[k].y, col, 1.8, dash, "curve");
-        if (k < n_rows)
-            e[k] = (gf_svg_legend_entry){series[k].label ? series[k].label : "(unnamed)", col, 1, GF_SVG_CIRCLE,
-                                         dash};
+        if (gf_svg_polyline(s, &f, series[k].n, series[k].x, series[k].y, col, 1.8, dash, "curve") == 0) {
+            n_empty++;
+            continue;
+        }
+        if (n_rows < legend_max_rows)
+            e[n_rows++] = (gf_svg_legend_entry){series[k].label ? series[k].label : "(unnamed)", col, 1, GF_SVG_CIRCLE,
+                                                dash, 0};
+        n_drawn++;
     }
     char more[48];
-    if (n_series > n_rows) {
-        snprintf(more, sizeof more, "... and %d more", n_series - n_rows);
-        e[n_rows++] = (gf_svg_legend_entry){more, "white", 1, GF_SVG_CIRCLE, NULL};
+    if (n_drawn > n_rows) {
+        n_rows = legend_max_rows - 1;
+        snprintf(more, sizeof more, "... and %d more", n_drawn - n_rows);
+        e[n_rows++] = (gf_svg_legend_entry){more, "white", 1, GF_SVG_CIRCLE, NULL, 0};
     }
     gf_svg_legend(s, &f, 4, n_rows, e);
+    if (n_finite > 0 && n_empty > 0) {
+        char cap[96];
+        snprintf(cap, sizeof cap, "%d series not shown (no finite sample)", n_empty);
+        gf_svg_caption(s, &f, cap);
+    }
     if (n_finite == 0)
         gf_svg_caption(s, &f, "no finite sample to draw (every value is NaN or missing)");
     return gf_svg_close(&s);

@@ -27,7 +27,7 @@
 
 /* Flow regime labels of a run (colour of its marker). */
 typedef enum gf_fig_regime {
-    GF_FIG_REGIME_UNKNOWN = 0,
+    GF_FIG_REGIME_UNDETERMINED = 0,
     GF_FIG_REGIME_VISCOUS,
     GF_FIG_REGIME_INERTIAL,
     GF_FIG_REGIME_FREE_FALL,
@@ -36,20 +36,21 @@ typedef enum gf_fig_regime {
 } gf_fig_regime;
 
 /* "viscous", "inertial", "free-fall" (also "free_fall", "freefall"),
- * "transitional"; anything else (NULL included) -> GF_FIG_REGIME_UNKNOWN. */
+ * "transitional"; anything else (NULL, "undetermined") -> GF_FIG_REGIME_UNDETERMINED. */
 gf_fig_regime gf_fig_regime_from_name(const char *name);
-/* "viscous", "inertial", "free-fall", "transitional", "unknown". */
+/* "viscous", "inertial", "free-fall", "transitional", "undetermined" (the
+ * word of the summary table's regime and deposit_shape columns). */
 const char *gf_fig_regime_name(gf_fig_regime regime);
 
 /* Deposit shape of a collapse run (marker of its point). */
 typedef enum gf_fig_shape {
-    GF_FIG_SHAPE_UNKNOWN = 0,
+    GF_FIG_SHAPE_UNDETERMINED = 0,
     GF_FIG_SHAPE_TRIANGLE,
     GF_FIG_SHAPE_TRAPEZOID,
     GF_FIG_SHAPE_COUNT
 } gf_fig_shape;
 
-/* "triangle", "trapezoid"; anything else -> GF_FIG_SHAPE_UNKNOWN. */
+/* "triangle", "trapezoid"; anything else -> GF_FIG_SHAPE_UNDETERMINED ("undetermined"). */
 gf_fig_shape gf_fig_shape_from_name(const char *name);
 const char *gf_fig_shape_name(gf_fig_shape shape);
 
@@ -64,11 +65,19 @@ typedef struct gf_fig_opts {
     const char *title;         /* NULL: the figure's default title */
     int width_px, height_px;   /* 0: 760 x 560 */
     gf_fig_scale x_scale, y_scale;  /* used by runout and timeseries; the regime diagram is always log-log */
+    /* Runs of several variants (e.g. dry and immersed) in deposit_shape and
+     * runout: variant[i] in [0, n_variants) for run i, variant_names[v] in
+     * the legend. Variant 0 is drawn filled, the next hollow (alternating),
+     * and the variants at one data point side by side, so that none hides
+     * another. n_variants <= 1 or NULL arrays: one variant, nothing shifted. */
+    int n_variants;
+    const int *variant;
+    const char *const *variant_names;
 } gf_fig_opts;
 
 /* Runs in the (St, r) plane, log-log, coloured by regime, with the published
  * boundaries. stokes_St, density_ratio_r, regime: n_runs entries (borrowed);
- * regime may be NULL (all unknown). Runs with St or r not finite and > 0 are
+ * regime may be NULL (all undetermined). Runs with St or r not finite and > 0 are
  * skipped. Errors: GF_ERR_ARG (NULL arrays with n_runs > 0, n_runs < 0),
  * GF_ERR_IO (path). */
 gf_status gf_fig_regime_diagram(gf_ctx *ctx, const char *path, const gf_fig_opts *opt, int n_runs,
@@ -76,14 +85,16 @@ gf_status gf_fig_regime_diagram(gf_ctx *ctx, const char *path, const gf_fig_opts
                                 const gf_fig_regime *regime);
 
 /* Runs in the (a, Phi_i) plane (linear axes unless opt says otherwise),
- * marker by deposit shape (triangle / trapezoid / unknown = circle). shape may
- * be NULL (all unknown). */
+ * marker by deposit shape (triangle / trapezoid / undetermined = circle). shape
+ * may be NULL (all undetermined). Variants as in gf_fig_opts. */
 gf_status gf_fig_deposit_shape(gf_ctx *ctx, const char *path, const gf_fig_opts *opt, int n_runs,
                                const double *aspect_ratio_a, const double *phi_initial, const gf_fig_shape *shape);
 
 /* Normalised runout (R_inf - R0)/R0 against a, with the dry laws of Lube et
  * al. 2005 and Lajeunesse et al. 2005 as reference curves. Axes AUTO by
- * default (log when the data span decades). regime may be NULL (one colour). */
+ * default (log when the data span decades). regime may be NULL (one colour).
+ * The shaded transition range of Lube et al. (a0 = 1.8-2.8) is drawn, and
+ * named in the legend, only when the a axis reaches it. */
 gf_status gf_fig_runout(gf_ctx *ctx, const char *path, const gf_fig_opts *opt, int n_runs,
                         const double *aspect_ratio_a, const double *runout_norm, const gf_fig_regime *regime);
 
@@ -98,7 +109,8 @@ typedef struct gf_fig_series {
 /* Several runs' curves on one plot, with a legend: front position against
  * time, basal excess pore pressure traces, ... x_label and y_label carry the
  * units, e.g. "t (s)", "excess pore pressure (Pa)". Non-finite samples break
- * a curve. x is linear unless opt->x_scale is LOG; y follows opt->y_scale
+ * a curve; a series with no finite sample is not drawn and not in the legend
+ * (the caption counts it). x is linear unless opt->x_scale is LOG; y follows opt->y_scale
  * (AUTO as above). No default title (opt->title). Past 14 series the legend
  * lists 13 and "... and N more"; colours repeat every 10 with a new dash.
  * Errors: GF_ERR_ARG (n_series < 1, series with n > 0 and NULL x/y). */

@@ -406,6 +406,21 @@ static void marker_shape(gf_svg *s, gf_svg_marker_shape shape, double size)
 int gf_svg_marker(gf_svg *s, const gf_svg_frame *f, double x, double y, gf_svg_marker_shape shape,
                   const char *colour, double size_px, const char *tooltip)
 {
+    return gf_svg_marker_styled(s, f, x, y, shape, colour, size_px, NULL, tooltip);
+}
+
+/* Fill and stroke of a marker: filled with its colour, or outlined in it. */
+static void marker_paint(gf_svg *s, const char *colour, int hollow)
+{
+    if (hollow)
+        fprintf(s->fp, "fill=\"white\" fill-opacity=\"0.9\" stroke=\"%s\" stroke-width=\"2\"", colour);
+    else
+        fprintf(s->fp, "fill=\"%s\" fill-opacity=\"0.85\" stroke=\"black\" stroke-width=\"0.6\"", colour);
+}
+
+int gf_svg_marker_styled(gf_svg *s, const gf_svg_frame *f, double x, double y, gf_svg_marker_shape shape,
+                         const char *colour, double size_px, const gf_svg_marker_style *style, const char *tooltip)
+{
     if (!axis_ok(&f->x, x) || !axis_ok(&f->y, y))
         return 0;
     double px = gf_svg_map_x(f, x), py = gf_svg_map_y(f, y);
@@ -413,10 +428,13 @@ int gf_svg_marker(gf_svg *s, const gf_svg_frame *f, double x, double y, gf_svg_m
     double tol = 0.5;
     if (px < f->x0_px - tol || px > f->x0_px + f->w_px + tol || py < f->y0_px - tol || py > f->y0_px + f->h_px + tol)
         return 0;
-    fprintf(s->fp,
-            "<g class=\"marker\" transform=\"translate(%.2f,%.2f)\" data-x=\"%.17g\" data-y=\"%.17g\" "
-            "fill=\"%s\" fill-opacity=\"0.85\" stroke=\"black\" stroke-width=\"0.6\">",
-            px, py, x, y, colour);
+    double dx = style ? style->dx_px : 0.0;
+    fprintf(s->fp, "<g class=\"marker\" transform=\"translate(%.2f,%.2f)\" data-x=\"%.17g\" data-y=\"%.17g\" ",
+            px + dx, py, x, y);
+    if (dx != 0.0)
+        fprintf(s->fp, "data-dx=\"%.2f\" ", dx);
+    marker_paint(s, colour, style && style->hollow);
+    fputc('>', s->fp);
     if (tooltip) {
         fputs("<title>", s->fp);
         gf_svg_write_escaped(s, tooltip);
@@ -545,9 +563,9 @@ void gf_svg_legend(gf_svg *s, const gf_svg_frame *f, int corner, int n, const gf
                     sx, cy, sx + sample, cy, e[i].colour, e[i].dash ? " stroke-dasharray=\"" : "",
                     e[i].dash ? e[i].dash : "", e[i].dash ? "\"" : "");
         } else {
-            fprintf(s->fp, "<g class=\"legend-marker\" transform=\"translate(%.2f,%.2f)\" fill=\"%s\" stroke=\"black\" "
-                           "stroke-width=\"0.6\">",
-                    sx + 0.5 * sample, cy, e[i].colour);
+            fprintf(s->fp, "<g class=\"legend-marker\" transform=\"translate(%.2f,%.2f)\" ", sx + 0.5 * sample, cy);
+            marker_paint(s, e[i].colour, e[i].hollow);
+            fputc('>', s->fp);
             marker_shape(s, e[i].shape, 9.0);
             fputs("</g>\n", s->fp);
         }

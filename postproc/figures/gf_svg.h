@@ -79,6 +79,16 @@ void gf_svg_caption(gf_svg *s, const gf_svg_frame *f, const char *text);
  * (non-finite, or <= 0 on a log axis); 1 when drawn. tooltip may be NULL. */
 int gf_svg_marker(gf_svg *s, const gf_svg_frame *f, double x, double y, gf_svg_marker_shape shape,
                   const char *colour, double size_px, const char *tooltip);
+/* How a marker is drawn: filled with its colour (hollow = 0), or outlined in
+ * it on white (hollow = 1); shifted by dx_px from its data position, so that
+ * runs of several variants at one data point stand side by side (the
+ * element keeps the data position in data-x, data-y). */
+typedef struct gf_svg_marker_style {
+    int hollow;
+    double dx_px;
+} gf_svg_marker_style;
+int gf_svg_marker_styled(gf_svg *s, const gf_svg_frame *f, double x, double y, gf_svg_marker_shape shape,
+                         const char *colour, double size_px, const gf_svg_marker_style *style, const char *tooltip);
 /* Polyline through the points; non-mappable points break it into pieces.
  * dash: NULL solid, else an SVG dash array, e.g. "6,4". cls: CSS class
  * ("curve", "refline"). Returns the number of <polyline> elements written. */
@@ -101,6 +111,7 @@ typedef struct gf_svg_legend_entry {
     int kind;                        /* 0: marker, 1: line, 2: shaded patch */
     gf_svg_marker_shape shape;       /* kind 0 */
     const char *dash;                /* kind 1: NULL solid */
+    int hollow;                      /* kind 0: outlined, as gf_svg_marker_style */
 } gf_svg_legend_entry;
 
 /* Width of the legend box for labels of at most that many characters

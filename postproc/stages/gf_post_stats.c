@@ -176,26 +176,6 @@ void gf_stats_steady(const double *t, const double *x, size_t n, gf_steady *out)
     out->ok = 1;
 }
 
-double gf_stats_max_rate(const double *t, const double *x, size_t n, size_t w, double *t_at)
-{
-    double best = NAN;
-    if (t_at)
-        *t_at = NAN;
-    if (w < 2)
-        w = 2;
-    if (n < w)
-        w = n;
-    for (size_t i = 0; i + w <= n; ++i) {
-        double a, b;
-        if (gf_stats_linfit(t + i, x + i, w, &a, &b) && (!isfinite(best) || b > best)) {
-            best = b;
-            if (t_at)
-                *t_at = 0.5 * (t[i] + t[i + w - 1]);
-        }
-    }
-    return best;
-}
-
 double gf_stats_settle_time(const double *t, const double *x, size_t n, double band)
 {
     while (n > 0 && !isfinite(x[n - 1]))

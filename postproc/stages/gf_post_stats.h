@@ -44,8 +44,6 @@ typedef struct gf_steady {
 } gf_steady;
 void gf_stats_steady(const double *t, const double *x, size_t n, gf_steady *out);
 
-/* Largest slope of x(t) from least-squares lines over sliding windows of w samples. */
-double gf_stats_max_rate(const double *t, const double *x, size_t n, size_t w, double *t_at);
 /* Earliest t_k such that |x_j - x_{n-1}| <= band for every j >= k. */
 double gf_stats_settle_time(const double *t, const double *x, size_t n, double band);
 

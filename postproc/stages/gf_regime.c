@@ -10,7 +10,7 @@ const char *gf_regime_name(gf_regime_label label)
     case GF_REGIME_INERTIAL: return "inertial";
     case GF_REGIME_FREE_FALL: return "free-fall";
     case GF_REGIME_TRANSITIONAL: return "transitional";
-    default: return "unknown";
+    default: return "undetermined";
     }
 }
 
@@ -18,7 +18,7 @@ gf_status gf_regime_classify(gf_ctx *ctx, double T_s, const gf_scales *sc, gf_re
 {
     const double scales[3] = {sc->t_viscous_s, sc->t_inertial_s, sc->t_freefall_s};
     const gf_regime_label labels[3] = {GF_REGIME_VISCOUS, GF_REGIME_INERTIAL, GF_REGIME_FREE_FALL};
-    out->label = out->nearest = GF_REGIME_UNKNOWN;
+    out->label = out->nearest = GF_REGIME_UNDETERMINED;
     out->best_decades = out->confidence_decades = NAN;
     if (!(isfinite(T_s) && T_s > 0.0))
         return GF_FAIL(ctx, GF_ERR_NUMERIC, "regime: flow time T = %g s is not a positive number", T_s);

@@ -27,7 +27,7 @@
 #include "core/gf_groups.h"
 
 typedef enum gf_regime_label {
-    GF_REGIME_UNKNOWN = 0,
+    GF_REGIME_UNDETERMINED = 0,
     GF_REGIME_VISCOUS,
     GF_REGIME_INERTIAL,
     GF_REGIME_FREE_FALL,
@@ -44,7 +44,7 @@ typedef struct gf_regime_result {
     double best_decades, confidence_decades;
 } gf_regime_result;
 
-/* "viscous", "inertial", "free-fall", "transitional", "unknown". */
+/* "viscous", "inertial", "free-fall", "transitional", "undetermined". */
 const char *gf_regime_name(gf_regime_label label);
 /* Classifies T (s) against sc's T_v, T_i, T_ff. Errors: T not finite and > 0. */
 gf_status gf_regime_classify(gf_ctx *ctx, double T_s, const gf_scales *sc, gf_regime_result *out);

@@ -10,8 +10,10 @@
  * Every frame -> the heap front x_front(t) (same binning, so a grain that
  * rolls ahead does not count); if particles.nc holds a single frame,
  * diagnostics front_position is used instead. The maximum front speed is
- * the largest slope of least-squares lines over windows of max(5, n/100)
- * frames; the time to rest is the earliest time after which the front stays
+ * the steepest least-squares line over the shortest windows that resolve
+ * it to 10 % given the toe's frame-to-frame scatter (gf_post_rate.h; a
+ * single-frame file's front_position is in bins of D, which the estimate
+ * allows for), with its uncertainty, NaN when unresolved; the time to rest is the earliest time after which the front stays
  * within D/2 of its final position.
  * Writes post_deposit.nc: time, front_position, (x_front − R0)/R0, and the
  * final envelope deposit_height(x_bin).
@@ -21,6 +23,7 @@
 #include <string.h>
 
 #include "stages/gf_deposit.h"
+#include "stages/gf_post_rate.h"
 #include "stages/gf_post_stats.h"
 #include "stages/gf_stage_util.h"
 
@@ -36,7 +39,8 @@ const gf_post_col gf_stage_deposit_cols[] = {
     {"plateau_length_m", 0, "m", "length of the full-height plateau at the back"},
     {"deposit_area_m2", 0, "m2", "cross-section of the heap under its surface, above the floor plane"},
     {"deposit_area_over_column", 0, "1", "heap cross-section over R0 H0 (Phi_i / Phi_deposit)"},
-    {"Ufront_particles_max_m_s", 0, "m s-1", "maximum front speed from the grains"},
+    {"Ufront_particles_max_m_s", 0, "m s-1", "maximum front speed from the grains' toe"},
+    {"Ufront_particles_max_err_m_s", 0, "m s-1", "uncertainty of Ufront_particles_max_m_s"},
     {"t_front_max_speed_s", 0, "s", "time of the maximum front speed"},
     {"t_rest_s", 0, "s", "time after which the front stays within D/2 of its final position"},
     {NULL, 0, NULL, NULL}};
@@ -115,10 +119,10 @@ gf_status gf_stage_deposit(gf_ctx *ctx, const gf_stage_in *in, const gf_stage_op
         gf_post_row_set(row, "flank_angle_deg", dep.flank_angle_deg);
         gf_post_row_set(row, "plateau_length_m", dep.plateau_length_m);
         if (fn >= 3) {
-            size_t w = fn / 100 > 5 ? fn / 100 : 5;
-            double t_at;
-            gf_post_row_set(row, "Ufront_particles_max_m_s", gf_stats_max_rate(ft, fx, fn, w, &t_at));
-            gf_post_row_set(row, "t_front_max_speed_s", t_at);
+            gf_rate_estimate u = gf_rate_max_resolved(ft, fx, fn, ft == t ? 0.0 : D, 0.1);
+            gf_post_row_set(row, "Ufront_particles_max_m_s", u.rate);
+            gf_post_row_set(row, "Ufront_particles_max_err_m_s", u.sigma);
+            gf_post_row_set(row, "t_front_max_speed_s", u.t_at);
             gf_post_row_set(row, "t_rest_s", gf_stats_settle_time(ft, fx, fn, 0.5 * D));
         }
     }

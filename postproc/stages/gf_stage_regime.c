@@ -32,13 +32,17 @@
  *   = sqrt(2 ρ_p H0 / (Δρ g)). T = t_rest is labelled against these three
  *   with gf_regime_classify (g_eff = g: vertical fall). T_over_T* columns
  *   hold t_rest over the H0 scales for a collapse. Also reported: the
- *   maximum front speed (largest slope of least-squares lines over windows
- *   of max(5, n/100) samples) in units of R0/T_visq (the thesis's viscous
- *   master line is ≈ 1e-4, §5.4) and t_rest in units of T_visq and T0.
+ *   maximum front speed and its uncertainty, the steepest least-squares
+ *   line over the shortest windows that resolve it to 10 % given that
+ *   front_position moves in bins of D (gf_post_rate.h; NaN when the record
+ *   cannot resolve it, e.g. a front that advances a few D), also in units of
+ *   R0/T_visq (the thesis's viscous master line is ≈ 1e-4, §5.4), and t_rest
+ *   in units of T_visq and T0.
  */
 #include <math.h>
 #include <stdlib.h>
 
+#include "stages/gf_post_rate.h"
 #include "stages/gf_post_stats.h"
 #include "stages/gf_regime.h"
 #include "stages/gf_stage_util.h"
@@ -58,7 +62,8 @@ const gf_post_col gf_stage_regime_cols[] = {
     {"St_groups", 0, "1", "Stokes number from the physical values"},
     {"r_groups", 0, "1", "density ratio r = sqrt(5 rho_p / 3 rho_f) from the physical values"},
     {"Vg_m3", 0, "m3", "solid volume of the mobile grains"},
-    {"Ufront_max_m_s", 0, "m s-1", "maximum front speed"},
+    {"Ufront_max_m_s", 0, "m s-1", "maximum front speed resolved by front_position (bins of D)"},
+    {"Ufront_max_err_m_s", 0, "m s-1", "uncertainty of Ufront_max_m_s"},
     {"Ufront_max_over_R0_per_Tvisq", 0, "1", "maximum front speed in units of R0/T_visq"},
     {"t_rest_over_Tvisq", 0, "1", "time to rest in units of T_visq"},
     {"t_rest_over_T0", 0, "1", "time to rest in units of T0 = sqrt(2 H0/g)"},
@@ -150,13 +155,11 @@ static gf_status collapse(gf_ctx *ctx, const gf_ncr *d, const gf_groups_input *g
     if (st == GF_OK && (nx != nt || nt < 3))
         st = GF_FAIL(ctx, GF_ERR_UNSUPPORTED, "not determined: %s: front_position has %zu samples (time %zu), 3 or more needed", d->path, nx,
                      nt);
-    double umax = NAN, t_rest = NAN;
+    double t_rest = NAN;
+    gf_rate_estimate umax = {NAN, NAN, NAN, NAN, 0};
     if (st == GF_OK) {
-        size_t w = nt / 100 > 5 ? nt / 100 : 5;
-        umax = gf_stats_max_rate(t, x, nt, w, NULL);
+        umax = gf_rate_max_resolved(t, x, nt, gi->diameter_m, 0.1);
         t_rest = gf_stats_settle_time(t, x, nt, 0.5 * gi->diameter_m);
-        if (!(umax > 0.0))
-            st = GF_FAIL(ctx, GF_ERR_NUMERIC, "%s: the front never advances (max speed %g m/s)", d->path, umax);
     }
     free(t);
     free(x);
@@ -174,9 +177,10 @@ static gf_status collapse(gf_ctx *ctx, const gf_ncr *d, const gf_groups_input *g
     gf_regime_result res;
     GF_TRY(gf_regime_classify(ctx, t_rest, &sH, &res));
     put_labels(row, t_rest, &sH, &res);
-    gf_post_row_set(row, "Ufront_max_m_s", umax);
+    gf_post_row_set(row, "Ufront_max_m_s", umax.rate);
+    gf_post_row_set(row, "Ufront_max_err_m_s", umax.sigma);
     if (sc->t_visq_s > 0.0 && gi->column_length_m > 0.0) {
-        gf_post_row_set(row, "Ufront_max_over_R0_per_Tvisq", umax * sc->t_visq_s / gi->column_length_m);
+        gf_post_row_set(row, "Ufront_max_over_R0_per_Tvisq", umax.rate * sc->t_visq_s / gi->column_length_m);
         gf_post_row_set(row, "t_rest_over_Tvisq", t_rest / sc->t_visq_s);
     }
     if (sc->t0_H_s > 0.0)

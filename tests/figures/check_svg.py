@@ -13,6 +13,11 @@ usage: check_svg.py FILE CHECK...
   xlabels=t1|t2|...      rendered tick-label text of the x axis (also ylabels)
   xscale=log|linear      axis scales used by the inverse-map checks (also yscale)
   point=X,Y              a marker with data (X, Y) sits where the axis ticks say
+                         (less its data-dx, the shift that sets variants side by side)
+  apart=X,Y,N            N markers with data (X, Y), each where the axes say once its
+                         data-dx is removed, drawn at least 8 px apart (all visible)
+  hollow=N               number of hollow (outlined) data markers
+  legend_labels=t1;t2    the legend rows' texts, in order
   curve_start=K,X,Y      the first vertex of data curve K is at data (X, Y)
   refline_through=X,Y    some reference line has a vertex at data (X, Y)
   refline_law=K,L,E      every vertex of reference line K lies on y = L x^E (to 0.05 px)
@@ -133,10 +138,28 @@ def main():
             check(len(hit) == 1, f"point {x},{y}: {len(hit)} markers")
             if hit:
                 px, py = translate(hit[0])
+                px -= float(hit[0].get("data-dx", "0"))
                 ex, ey = expected_px(root, "x", scales["x"], x), expected_px(root, "y", scales["y"], y)
                 # coordinates are printed with 2 decimals: 0.02 px covers the rounding of three numbers
                 check(abs(px - ex) < 0.02 and abs(py - ey) < 0.02,
                       f"point {x},{y} at ({px},{py}), axes say ({ex:.3f},{ey:.3f})")
+        elif key == "apart":
+            x, y, n = (float(s) for s in val.split(","))
+            hit = [mk for mk in markers if close(float(mk.get("data-x")), x) and close(float(mk.get("data-y")), y)]
+            check(len(hit) == int(n), f"apart {x},{y}: {len(hit)} markers, expected {int(n)}")
+            ex, ey = expected_px(root, "x", scales["x"], x), expected_px(root, "y", scales["y"], y)
+            drawn = [translate(mk) for mk in hit]
+            for mk, (px, py) in zip(hit, drawn):
+                px -= float(mk.get("data-dx", "0"))
+                check(abs(px - ex) < 0.02 and abs(py - ey) < 0.02, f"apart {x},{y}: a marker at data ({px},{py})")
+            gaps = [math.hypot(a[0] - b[0], a[1] - b[1]) for i, a in enumerate(drawn) for b in drawn[i + 1:]]
+            check(all(g >= 8.0 for g in gaps), f"apart {x},{y}: centres {gaps} px apart, < 8 px hides one")
+        elif key == "hollow":
+            n = sum(1 for mk in markers if mk.get("fill") == "white")
+            check(n == int(val), f"hollow markers: {n} != {val}")
+        elif key == "legend_labels":
+            t = ["".join(el.itertext()) for el in by_class(root, "legend-label", "text")]
+            check(t == val.split(";"), f"legend labels {t} != {val.split(';')}")
         elif key == "curve_start":
             k, x, y = val.split(",")
             curves = by_class(root, "curve", "polyline")

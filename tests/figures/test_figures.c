@@ -87,7 +87,7 @@ static void test_regime_diagram(void)
     double r[] = {2.58, 2.58, 2.58, 2.58, 12.91, 12.91, 12.91, 3.0, 2.0};
     gf_fig_regime g[] = {GF_FIG_REGIME_VISCOUS,   GF_FIG_REGIME_VISCOUS,   GF_FIG_REGIME_INERTIAL,
                          GF_FIG_REGIME_INERTIAL,  GF_FIG_REGIME_VISCOUS,   GF_FIG_REGIME_FREE_FALL,
-                         GF_FIG_REGIME_FREE_FALL, GF_FIG_REGIME_TRANSITIONAL, GF_FIG_REGIME_UNKNOWN};
+                         GF_FIG_REGIME_FREE_FALL, GF_FIG_REGIME_TRANSITIONAL, GF_FIG_REGIME_UNDETERMINED};
     gf_ctx ctx = {0};
     GF_CHECK_OK(gf_fig_regime_diagram(&ctx, fig_path("regime.svg"), NULL, 9, St, r, g), &ctx);
     const char *checks[] = {"markers=8", "shapes=circle:8",
@@ -105,7 +105,7 @@ static void test_regime_diagram(void)
     check_svg("regime.svg", 19, checks);
     GF_CHECK(gf_fig_regime_from_name("free-fall") == GF_FIG_REGIME_FREE_FALL);
     GF_CHECK(gf_fig_regime_from_name("free_fall") == GF_FIG_REGIME_FREE_FALL);
-    GF_CHECK(gf_fig_regime_from_name("bogus") == GF_FIG_REGIME_UNKNOWN);
+    GF_CHECK(gf_fig_regime_from_name("bogus") == GF_FIG_REGIME_UNDETERMINED);
     GF_CHECK(strcmp(gf_fig_regime_name(GF_FIG_REGIME_TRANSITIONAL), "transitional") == 0);
 }
 
@@ -114,7 +114,7 @@ static void test_deposit_shape(void)
     double a[] = {0.5, 0.7, 1.0, 2.0, 3.0, 4.0};
     double phi[] = {0.55, 0.6, 0.55, 0.6, 0.58, 0.56};
     gf_fig_shape s[] = {GF_FIG_SHAPE_TRAPEZOID, GF_FIG_SHAPE_TRAPEZOID, GF_FIG_SHAPE_TRIANGLE,
-                        GF_FIG_SHAPE_TRIANGLE,  GF_FIG_SHAPE_TRIANGLE,  GF_FIG_SHAPE_UNKNOWN};
+                        GF_FIG_SHAPE_TRIANGLE,  GF_FIG_SHAPE_TRIANGLE,  GF_FIG_SHAPE_UNDETERMINED};
     gf_ctx ctx = {0};
     gf_fig_opts opt = {.title = "Deposits: <loose> & \"dense\" columns"};
     GF_CHECK_OK(gf_fig_deposit_shape(&ctx, fig_path("deposit.svg"), &opt, 6, a, phi, s), &ctx);
@@ -154,7 +154,7 @@ static void test_runout_linear(void)
     double a[] = {0.5, 1.0, 1.5, 2.5, 1.2};
     double run[] = {0.9, 1.7, 2.9, 4.1, NAN};
     gf_fig_regime g[] = {GF_FIG_REGIME_VISCOUS, GF_FIG_REGIME_VISCOUS, GF_FIG_REGIME_INERTIAL,
-                         GF_FIG_REGIME_FREE_FALL, GF_FIG_REGIME_UNKNOWN};
+                         GF_FIG_REGIME_FREE_FALL, GF_FIG_REGIME_UNDETERMINED};
     gf_ctx ctx = {0};
     GF_CHECK_OK(gf_fig_runout(&ctx, fig_path("runout_lin.svg"), NULL, 5, a, run, g), &ctx);
     /* a <= 2.6 (padded 2.5) -> axis to 3: Lube's two branches (switch at 2.3) and Lajeunesse's
@@ -231,6 +231,48 @@ static void test_timeseries_many(void)
     check_svg("many.svg", 2, checks);
 }
 
+/* A campaign of two variants, dry and immersed, at the same four (a, Phi_i):
+ * each point carries two markers, filled (dry) and outlined (immersed), side
+ * by side and each at its data position once its shift is removed; the
+ * legend names the shapes and the variants drawn, and nothing else. */
+static void test_variants_side_by_side(void)
+{
+    double a[] = {0.5, 0.5, 1.0, 1.0, 0.5, 0.5, 1.0, 1.0};
+    double phi[] = {0.58, 0.6, 0.58, 0.6, 0.58, 0.6, 0.58, 0.6};
+    double run[] = {0.58, 0.59, 1.36, 1.67, 0.084, 0.098, 0.134, 0.143};
+    gf_fig_shape shp[] = {GF_FIG_SHAPE_TRAPEZOID,    GF_FIG_SHAPE_TRAPEZOID, GF_FIG_SHAPE_TRIANGLE,
+                          GF_FIG_SHAPE_TRIANGLE,     GF_FIG_SHAPE_TRIANGLE,  GF_FIG_SHAPE_UNDETERMINED,
+                          GF_FIG_SHAPE_UNDETERMINED, GF_FIG_SHAPE_UNDETERMINED};
+    int variant[] = {0, 0, 0, 0, 1, 1, 1, 1};
+    const char *names[] = {"dry", "immersed"};
+    gf_fig_opts opt = {.n_variants = 2, .variant = variant, .variant_names = names};
+    gf_ctx ctx = {0};
+    GF_CHECK_OK(gf_fig_deposit_shape(&ctx, fig_path("deposit_variants.svg"), &opt, 8, a, phi, shp), &ctx);
+    const char *checks[] = {"markers=8", "hollow=4", "apart=0.5,0.58,2", "apart=0.5,0.6,2", "apart=1,0.58,2",
+                            "apart=1,0.6,2",
+                            "legend_labels=triangle;trapezoid;undetermined;dry: filled markers;immersed: outlined markers"};
+    check_svg("deposit_variants.svg", 7, checks);
+    /* runout over a <= 1: the shaded transition a0 = 1.8-2.8 of Lube et al. is off the axis,
+     * so neither it nor its legend row is drawn; only one variant drawn, only its row */
+    gf_fig_opts one = {.n_variants = 2, .variant = variant, .variant_names = names};
+    GF_CHECK_OK(gf_fig_runout(&ctx, fig_path("runout_variants.svg"), &one, 4, a, run, NULL), &ctx);
+    const char *checks2[] = {"markers=4", "hollow=0", "regions=0",
+                             "legend_labels=runs;dry: filled markers;Lube 2005 (dry): 1.2a | 1.9a^(2/3);"
+                             "Lajeunesse 2005 (dry): 1.8a | 2.3a^(2/3)"};
+    check_svg("runout_variants.svg", 4, checks2);
+}
+
+/* A series with no finite sample is not drawn, so it has no legend row; the caption says so. */
+static void test_timeseries_empty_series(void)
+{
+    double t[3] = {0.0, 1.0, 2.0}, y[3] = {0.0, 0.5, 0.7}, none[3] = {NAN, NAN, NAN};
+    gf_fig_series s[3] = {{"dry, a=1", 3, t, y}, {"immersed, a=1", 3, t, none}, {"immersed, a=0.5", 0, NULL, NULL}};
+    gf_ctx ctx = {0};
+    GF_CHECK_OK(gf_fig_timeseries(&ctx, fig_path("empty_series.svg"), NULL, "t (s)", "y (m)", 3, s), &ctx);
+    const char *checks[] = {"curves=1", "legend_labels=dry, a=1", "caption~2 series not shown"};
+    check_svg("empty_series.svg", 3, checks);
+}
+
 /* Errors: bad arguments say what; an unwritable path leaves nothing behind. */
 static void test_errors(void)
 {
@@ -267,6 +309,8 @@ int main(int argc, char **argv)
     test_timeseries();
     test_timeseries_log();
     test_timeseries_many();
+    test_variants_side_by_side();
+    test_timeseries_empty_series();
     test_errors();
     return gf_test_finish();
 }

@@ -244,8 +244,13 @@ static void collapse(void)
            gf_post_row_get(&row, "T_over_Tff"), gf_post_row_get_text(&row, "regime"),
            gf_post_row_get(&row, "Ufront_max_m_s"), umax, gf_post_row_get(&row, "Ufront_max_over_R0_per_Tvisq"));
     GF_CHECK_ABS(gf_post_row_get(&row, "T_s"), TvH, dt);
-    GF_CHECK_REL(gf_post_row_get(&row, "Ufront_max_m_s"), umax, 0.01);
-    GF_CHECK_REL(gf_post_row_get(&row, "Ufront_max_over_R0_per_Tvisq"), umax * sc.t_visq_s / m.R0, 0.01);
+    /* the peak speed, read as if the positions were in bins of D (the scene's): resolved to 10 %, and
+     * within its uncertainty of the truth (the window it needs averages over the peak) */
+    const double u = gf_post_row_get(&row, "Ufront_max_m_s"), du_err = gf_post_row_get(&row, "Ufront_max_err_m_s");
+    printf("collapse: Umax %.5f +- %.5f m/s, true %.5f (error %+.2f %%)\n", u, du_err, umax, 100.0 * (u / umax - 1.0));
+    GF_CHECK(du_err <= 0.1 * u);
+    GF_CHECK(fabs(u - umax) <= du_err);
+    GF_CHECK_REL(gf_post_row_get(&row, "Ufront_max_over_R0_per_Tvisq"), u * sc.t_visq_s / m.R0, 1e-12);
     GF_CHECK(strcmp(gf_post_row_get_text(&row, "regime_nearest"), "viscous") == 0);
     free(t), free(xf), free(e);
 }
