@@ -56,6 +56,7 @@ typedef struct gf_contact_params {
     double t_contact_s;      /* t_c of the mean pair */
     double m_eff_mean_kg;    /* m* of the mean pair */
     double delta_ref_m;      /* Hertz reference overlap */
+    double law_constant;     /* a law's own constant, set by its derive hook (hertz_kk: A, s) */
 } gf_contact_params;
 
 /* Geometry of one contact, computed by the pair loop. */
@@ -126,11 +127,20 @@ void gf_contact_tangential(const gf_contact_geom *g, double k_t_N_m, double f_n_
 /* The registered laws (rows of the table). */
 extern const gf_contact_info gf_contact_law_linear;
 extern const gf_contact_info gf_contact_law_hertz;
+extern const gf_contact_info gf_contact_law_hertz_kk;
+
+/* The Hertz spring's hooks (gf_contact_hertz.c), shared by the laws built on it. */
+void gf_contact_hertz_derive(const gf_run_spec *spec, gf_contact_params *cp);
+double gf_contact_hertz_frequency_factor(const gf_contact_params *p, double overlap_m);
+double gf_contact_hertz_normal_energy(const gf_contact_params *p, double overlap_m);
+double gf_contact_hertz_tangential_energy(const gf_contact_params *p, double overlap_m, double xi2_m2);
 
 /* Kernels, also called directly by the fast pair loops (gf_contact_kernels.h). */
 void gf_contact_linear(const gf_contact_params *p, const gf_contact_geom *g, double dt_s, double *hist,
                        double *f_n_out, double f_t_out[3]);
 void gf_contact_hertz(const gf_contact_params *p, const gf_contact_geom *g, double dt_s, double *hist,
                       double *f_n_out, double f_t_out[3]);
+void gf_contact_hertz_kk(const gf_contact_params *p, const gf_contact_geom *g, double dt_s, double *hist,
+                         double *f_n_out, double f_t_out[3]);
 
 #endif

@@ -29,7 +29,7 @@ void gf_contact_hertz(const gf_contact_params *p, const gf_contact_geom *g, doub
 /* Reference overlap: the peak overlap of the mean pair hit at the free-fall
  * speed sqrt(gD) under the undamped linear law, V sqrt(m* / k_n), so that
  * the two laws coincide at the impacts of a gravity flow. */
-static void hertz_derive(const gf_run_spec *spec, gf_contact_params *cp)
+void gf_contact_hertz_derive(const gf_run_spec *spec, gf_contact_params *cp)
 {
     const double D = spec->grains.diameter_m;
     cp->delta_ref_m = sqrt(spec->gravity_m_s2 * D) * sqrt(cp->m_eff_mean_kg / cp->k_n_N_m);
@@ -39,20 +39,20 @@ static void hertz_derive(const gf_run_spec *spec, gf_contact_params *cp)
  * tangent stiffness as 1.5 k_n s; the frequency goes as the square root of
  * the stiffness, (delta/delta_ref)^(1/4) (the factor 1.5 is within the
  * margin of the t_c/5 limit). */
-static double hertz_frequency_factor(const gf_contact_params *p, double overlap_m)
+double gf_contact_hertz_frequency_factor(const gf_contact_params *p, double overlap_m)
 {
     return p->delta_ref_m > 0.0 ? sqrt(sqrt(overlap_m / p->delta_ref_m)) : 1.0;
 }
 
 /* Integral of k_n delta (delta/delta_ref)^(1/2): (2/5) k_n s delta^2. */
-static double hertz_normal_energy(const gf_contact_params *p, double overlap_m)
+double gf_contact_hertz_normal_energy(const gf_contact_params *p, double overlap_m)
 {
     return 0.4 * p->k_n_N_m * sqrt(overlap_m / p->delta_ref_m) * overlap_m * overlap_m;
 }
 
 /* 1/2 k_t(delta) |xi|^2 with Mindlin's k_t = kt_over_kn k_n s at the current
  * overlap: the energy the spring would give back at fixed overlap. */
-static double hertz_tangential_energy(const gf_contact_params *p, double overlap_m, double xi2_m2)
+double gf_contact_hertz_tangential_energy(const gf_contact_params *p, double overlap_m, double xi2_m2)
 {
     const double s = overlap_m > 0.0 ? sqrt(overlap_m / p->delta_ref_m) : 0.0;
     return 0.5 * p->kt_over_kn * p->k_n_N_m * s * xi2_m2;
@@ -63,8 +63,8 @@ const gf_contact_info gf_contact_law_hertz = {
     .kernel = gf_contact_hertz,
     .n_history = GF_CONTACT_HISTORY,
     .doc = "Hertz-Mindlin, delta^1/4 damping (Tsuji 1992)",
-    .derive = hertz_derive,
-    .frequency_factor = hertz_frequency_factor,
-    .normal_energy = hertz_normal_energy,
-    .tangential_energy = hertz_tangential_energy,
+    .derive = gf_contact_hertz_derive,
+    .frequency_factor = gf_contact_hertz_frequency_factor,
+    .normal_energy = gf_contact_hertz_normal_energy,
+    .tangential_energy = gf_contact_hertz_tangential_energy,
 };

@@ -14,6 +14,7 @@
 static const gf_contact_info *const gf_contact_table[] = {
     &gf_contact_law_linear,
     &gf_contact_law_hertz,
+    &gf_contact_law_hertz_kk,
 };
 enum { N_LAWS = sizeof gf_contact_table / sizeof gf_contact_table[0] };
 
