@@ -53,14 +53,13 @@ gf_status gf_mean_slip_prepare(gf_coupling *c, const gf_particles *p)
         double *m = &c->mean_v[MEAN_SLIP_F64 * i];
         for (int a = 0; a < 3; ++a)
             m[a] = s[0] > 0.0 ? s[1 + a] / s[0] : 0.0;
-        m[3] = 1.0;
+        m[3] = 0.0;  /* r, set by gf_mean_slip_hold */
     }
     return GF_OK;
 }
 
-const double *gf_mean_slip_velocity(const gf_coupling *c, const gf_particles *p, size_t i)
+const double *gf_mean_slip_velocity(const gf_coupling *c, size_t i)
 {
-    (void)p;
     return c->law->fluctuation ? &c->mean_v[MEAN_SLIP_F64 * i] : NULL;
 }
 

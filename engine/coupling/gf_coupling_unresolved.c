@@ -602,7 +602,7 @@ static double grain_drag(const gf_coupling *c, const gf_particles *p, size_t i, 
                          double self_share)
 {
     double D = 2.0 * p->radius_m[i];
-    const double *vm = gf_mean_slip_velocity(c, p, i);  /* mean-slip closures: slip against <v> */
+    const double *vm = gf_mean_slip_velocity(c, i);  /* mean-slip closures: slip against <v> */
     double v[3] = {vm ? vm[0] : p->vx_m_s[i], vm ? vm[1] : p->vy_m_s[i], vm ? vm[2] : p->vz_m_s[i]};
     double w = sqrt((uf[0] - v[0]) * (uf[0] - v[0]) + (uf[1] - v[1]) * (uf[1] - v[1]) + (uf[2] - v[2]) * (uf[2] - v[2]));
     double K = 0.0, corr = 1.0;

@@ -60,7 +60,7 @@ struct gf_coupling {
 /* <v> at every grain from the grains' current velocities and the cached kernels; uses c->lanes. */
 gf_status gf_mean_slip_prepare(gf_coupling *c, const gf_particles *p);
 /* <v> at grain i, or NULL for a per-grain closure. */
-const double *gf_mean_slip_velocity(const gf_coupling *c, const gf_particles *p, size_t i);
+const double *gf_mean_slip_velocity(const gf_coupling *c, size_t i);
 /* The coefficient to hold for grain i over a fluid step of dt_s (K_mean itself); remembers r. */
 double gf_mean_slip_hold(gf_coupling *c, const gf_particles *p, size_t i, double K_mean, double eps_closure,
                          double dt_s);
