@@ -32,7 +32,7 @@
  * is the "physical tank" form, not Izard 2014 (4.6), which may drop the
  * downslope buoyancy.
  *
- * Drag closures: gf_drag.h. Two choices made here:
+ * Drag closures: gf_drag.h (the mean-slip ones also gf_coupling_mean_slip.c). Two choices made here:
  *  1. The closure's phi excludes the grain's own kernel-smoothed volume: a lone
  *     grain must see phi = 0 (otherwise Beetstra's sqrt(phi) and Tenneti's
  *     phi^{1/3} terms add 5-13 % to an isolated sphere's drag for a kernel of
