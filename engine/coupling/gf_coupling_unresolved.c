@@ -32,7 +32,7 @@
  * is the "physical tank" form, not Izard 2014 (4.6), which may drop the
  * downslope buoyancy.
  *
- * Drag closures: gf_drag.h. Two choices made here:
+ * Drag closures: gf_drag.h (the mean-slip ones also gf_coupling_mean_slip.c). Two choices made here:
  *  1. The closure's phi excludes the grain's own kernel-smoothed volume: a lone
  *     grain must see phi = 0 (otherwise Beetstra's sqrt(phi) and Tenneti's
  *     phi^{1/3} terms add 5-13 % to an isolated sphere's drag for a kernel of
@@ -276,7 +276,7 @@ gf_status gf_coupling_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_coup
                        "(a cell must hold a few grains; 1.5-3 is usual)", fs->cell_over_D);
     if (!(fs->cfl > 0.0 && fs->cfl <= 1.0))
         return GF_FAIL(ctx, GF_ERR_CONFIG, "fluid.cfl = %g must be in (0, 1]", fs->cfl);
-    gf_drag_law law;
+    const gf_drag_info *law;
     GF_TRY(gf_drag_find(ctx, fs->drag, &law));
     double D = spec->grains.diameter_m;
     if (!(D > 0.0))
@@ -350,7 +350,7 @@ gf_status gf_coupling_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_coup
     c->stats.kernel_sigma_m = c->sigma_m;
     c->stats.self_mobility_s_kg = c->self_mobility;
     gf_log(ctx, GF_LOG_INFO, "coupling: unresolved, %dx%dx%d cells of %.3g x %.3g x %.3g m, kernel sigma %.3g m, drag %s",
-           g->n[0], g->n[1], g->n[2], g->h_m[0], g->h_m[1], g->h_m[2], c->sigma_m, gf_drag_name(law));
+           g->n[0], g->n[1], g->n[2], g->h_m[0], g->h_m[1], g->h_m[2], c->sigma_m, law->name);
     *out = c;
     return GF_OK;
 }
@@ -375,6 +375,7 @@ void gf_coupling_destroy(gf_coupling **pc)
     free(c->lanes);
     free(c->kern);
     free(c->held);
+    free(c->mean_v);
     free(c);
     *pc = NULL;
 }
@@ -601,7 +602,8 @@ static double grain_drag(const gf_coupling *c, const gf_particles *p, size_t i, 
                          double self_share)
 {
     double D = 2.0 * p->radius_m[i];
-    double v[3] = {p->vx_m_s[i], p->vy_m_s[i], p->vz_m_s[i]};
+    const double *vm = gf_mean_slip_velocity(c, i);  /* mean-slip closures: slip against <v> */
+    double v[3] = {vm ? vm[0] : p->vx_m_s[i], vm ? vm[1] : p->vy_m_s[i], vm ? vm[2] : p->vz_m_s[i]};
     double w = sqrt((uf[0] - v[0]) * (uf[0] - v[0]) + (uf[1] - v[1]) * (uf[1] - v[1]) + (uf[2] - v[2]) * (uf[2] - v[2]));
     double K = 0.0, corr = 1.0;
     for (int it = 0; it < 4; ++it) {  /* fixed point on the undisturbed slip w corr */
@@ -733,6 +735,7 @@ gf_status gf_coupling_fluid_step(gf_coupling *c, const gf_particles *p, double d
     if (c->first_step)
         memcpy(f->eps_old, f->eps, g->n_cells * sizeof(double));
     mean_pressure_gradient(c, p);
+    GF_TRY(gf_mean_slip_prepare(c, p));
 
     /* 2. drag coefficients at the current state, spread to beta and beta v */
     cell_fields(c);
@@ -755,14 +758,16 @@ gf_status gf_coupling_fluid_step(gf_coupling *c, const gf_particles *p, double d
         held_grain *hg = &c->held[i];
         hg->id = p->id[i];
         hg->K_kg_s = grain_drag(c, p, (size_t)i, uf, fmin(1.0, eps_i + own), share);
+        if (c->law->fluctuation)
+            hg->K_kg_s = gf_mean_slip_hold(c, p, (size_t)i, hg->K_kg_s, fmin(1.0, eps_i + own), dt_s);
         hg->eps = eps_i;
         hg->mass_kg = p->mass_kg[i];
         hg->phi1_x = NAN;
     }
     memset(c->lanes, 0, g->n_cells * GF_AVERAGE_LANES * sizeof(double));
     for (size_t i = 0; i < p->n_local; ++i) {  /* sums over grains: in grain order */
-        const double K = c->held[i].K_kg_s;
-        const double value[GF_AVERAGE_LANES] = {K, K * p->vx_m_s[i], K * p->vy_m_s[i], K * p->vz_m_s[i]};
+        double value[GF_AVERAGE_LANES];
+        gf_mean_slip_exchange(c, p, i, c->held[i].K_kg_s, value);
         gf_average_spread_lanes(g, &c->kern[i], value, c->lanes);
     }
     double *const beta_fields[4] = {f->beta, f->beta_v[0], f->beta_v[1], f->beta_v[2]};
@@ -802,6 +807,8 @@ gf_status gf_coupling_fluid_step(gf_coupling *c, const gf_particles *p, double d
             /* -V grad p' - V rho_f g (hydrostatic part) + V G (mean gradient) */
             hg->f_other_N[a] = vi * (-gpa - c->rho_f * c->setup.gravity_m_s2[a] + c->mean_gradp[a]);
         }
+        if (c->law->fluctuation)
+            gf_mean_slip_target(c, p, (size_t)i, hg->uf, hg->uf);
     }
 
     /* 5. output fields and bookkeeping */

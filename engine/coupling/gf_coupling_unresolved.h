@@ -14,6 +14,7 @@
 #include "fluid/gf_fluid.h"
 
 #define OSEEN_N 96
+#define MEAN_SLIP_F64 4
 
 enum { FLD_EPS, FLD_U, FLD_V, FLD_W, FLD_P, FLD_N };
 
@@ -32,7 +33,9 @@ struct gf_coupling {
     gf_run_spec spec;
     gf_coupling_setup setup;
     gf_fluid *fluid;
-    gf_drag_law law;
+    const gf_drag_info *law;
+    double *mean_v;               /* mean-slip closures: <v>[3] and 1 - K'/K per grain (gf_coupling_mean_slip.c) */
+    size_t mean_cap;
     double sigma_m, self_mobility, dt_dem_s;
     double sigma_eff_m;           /* Gaussian width whose continuum Stokes self-mobility is self_mobility */
     double oseen[OSEEN_N];        /* Oseen reduction of the self-mobility on a log grid of Re_sigma */
@@ -52,6 +55,20 @@ struct gf_coupling {
     double *lanes;                /* cell fields interleaved for the per-grain transfers (gf_average.h) */
     gf_coupling_stats stats;
 };
+
+/* Mean-slip closures (gf_coupling_mean_slip.c; no-ops or NULL for per-grain closures). */
+/* <v> at every grain from the grains' current velocities and the cached kernels; uses c->lanes. */
+gf_status gf_mean_slip_prepare(gf_coupling *c, const gf_particles *p);
+/* <v> at grain i, or NULL for a per-grain closure. */
+const double *gf_mean_slip_velocity(const gf_coupling *c, size_t i);
+/* The coefficient to hold for grain i over a fluid step of dt_s (K_mean itself); remembers r. */
+double gf_mean_slip_hold(gf_coupling *c, const gf_particles *p, size_t i, double K_mean, double eps_closure,
+                         double dt_s);
+/* u* = u_f + r (v - <v>): the velocity the held K relaxes grain i towards. */
+void gf_mean_slip_target(const gf_coupling *c, const gf_particles *p, size_t i, const double uf[3], double target[3]);
+/* What grain i spreads to the fluid's beta and beta v: K, K ((1 - r) v + r <v>) (K, K v for a per-grain closure). */
+void gf_mean_slip_exchange(const gf_coupling *c, const gf_particles *p, size_t i, double K_held,
+                           double value[GF_AVERAGE_LANES]);
 
 /* Per-grain arrays (kernels, held values) for n grains, kept on shrink. */
 gf_status gf_coupling_reserve(gf_coupling *c, size_t n);

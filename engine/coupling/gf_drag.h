@@ -1,62 +1,74 @@
 /*
- * gf_drag: drag closures of the unresolved tier, selected by spec.fluid.drag.
- * Each returns the coefficient K (kg/s) of the drag on one grain,
+ * gf_drag: the drag closures of the unresolved tier, a registry selected by
+ * spec.fluid.drag (docs/fast-tier.md). A closure is one file
+ * (gf_drag_<name>.c, its formula and source in that file's header) and one
+ * row in gf_drag_table.c; the schema's allowed names are the registry's.
+ *
+ * Every closure gives the coefficient K (kg/s) of the drag on one grain,
  *   F_d = K (u_f - v),
- * with u_f the (undisturbed, interstitial) fluid velocity at the grain, v its
- * velocity, eps the local fluid fraction (phi = 1 - eps), W = |u_f - v| and the
- * superficial (particle) Reynolds number Re = rho_f eps W D / eta_f.
+ * with u_f the (undisturbed, interstitial) fluid velocity at the grain, v a
+ * grain velocity, eps the local fluid fraction (phi = 1 - eps), W = |u_f - v|
+ * and the superficial (particle) Reynolds number Re = rho_f eps W D / eta_f.
  * F_d is the drag WITHOUT the mean pressure gradient: the pressure-gradient
  * (buoyancy) force -V grad p is added separately by the coupling (the
- * Anderson–Jackson "model A" split). Where a paper's correlation is for the
- * total force, it is converted below and the conversion is stated.
+ * Anderson–Jackson "model A" split).
  *
- * di_felice — Di Felice, Int. J. Multiphase Flow 20 (1994):
- *   F_d = (1/2) C_D rho (pi D^2/4) eps^2 W (u - v) eps^{-chi},
- *   C_D = (0.63 + 4.8/sqrt(Re))^2 (Dallavalle), chi = 3.7 - 0.65 exp(-(1.5 - log10 Re)^2 / 2).
- *   K = (1/2) C_D rho (pi D^2/4) eps^{2-chi} W. With model A a settling
- *   suspension gets U/U_t = eps^{chi+1}: Richardson–Zaki with n = 4.7 at low Re
- *   (4.65 measured), and a single grain gets Dallavalle's C_D (4 % below
- *   Stokes at Re -> 0, 11 % above Schiller–Naumann at Re = 20).
- * beetstra — Beetstra, van der Hoef & Kuipers, AIChE J. 53 (2007), fitted to
- *   lattice-Boltzmann drag in fixed random arrays, normalised by the Stokes drag
- *   at the superficial velocity, F = F_d / (3 pi eta D eps W):
- *   F = 10 phi/eps^2 + eps^2 (1 + 1.5 sqrt(phi))
- *       + 0.413 Re/(24 eps^2) [1/eps + 3 phi eps + 8.4 Re^-0.343] / [1 + 10^{3 phi} Re^{-(1 + 4 phi)/2}],
- *   K = 3 pi eta D eps F. Its Stokes limit is Carman–Kozeny (10 phi/eps^2 <=> 180 in the
- *   Kozeny constant) plus a small correction.
- * tenneti — Tenneti, Garg & Subramaniam, Int. J. Multiphase Flow 37 (2011),
- *   particle-resolved DNS of fixed random arrays; their F is the TOTAL average
- *   fluid force (mean pressure gradient included) over 3 pi eta D eps W:
- *   F = F_isol/eps^3 + F_phi + F_phiRe,  F_isol = 1 + 0.15 Re^0.687 (Schiller–Naumann),
- *   F_phi = 5.81 phi/eps^3 + 0.48 phi^{1/3}/eps^4,  F_phiRe = phi^3 Re (0.95 + 0.61 phi^3/eps^2).
- *   The drag alone is eps times the total (van der Hoef et al., JFM 528, 2005:
- *   in a bed the mean pressure gradient carries the fraction phi of the total),
- *   so K = 3 pi eta D eps^2 F. Some implementations omit this factor and use
- *   the total force as drag, counting the mean pressure gradient twice.
+ * Two kinds of closure:
+ *  - per-grain slip (fluctuation == NULL): v is the grain's own velocity
+ *    (di_felice, beetstra, tenneti: laws for the mean slip of a suspension or
+ *    of a fixed bed, applied to each grain);
+ *  - mean slip (fluctuation != NULL): the law K acts on the slip between the
+ *    fluid and the LOCAL MEAN grain velocity <v> (the kernel average of the
+ *    grains' velocities at the grain), and the grain's own motion about that
+ *    mean, v - <v>, is resisted by the separate coefficient `fluctuation`:
+ *      F_d = K (u_f - <v>) + K' (<v> - v).
+ *    Resistance to the relative motion of touching neighbours is the
+ *    lubrication force of the DEM pair loop (spec.fluid.lubrication).
  *
- * Which to use. The default in gf_run_spec.c is di_felice: it is the closure
- * built for MOBILE grains (it reproduces Richardson–Zaki hindered settling,
- * test_hindered_settling), the state of a collapsing or avalanching column,
- * and it is well-behaved from eps -> 1 to packed beds. Its weakness is the
- * fixed dense bed (Carman–Kozeny drag underestimated by ~30 % at phi = 0.4):
- * beetstra and tenneti are fits to fixed arrays and give the Carman–Kozeny/
- * Ergun pressure drop (test_fixed_bed) but hinder a settling suspension
- * about twice too much at phi = 0.4. For a quasi-static dense column whose
- * pore pressure is set by the permeability, beetstra is the better choice.
+ * Which to use. The default in gf_run_spec.c is di_felice: it reproduces
+ * Richardson–Zaki hindered settling (test_hindered_settling), the state of a
+ * collapsing or avalanching column, and it is well-behaved from eps -> 1 to
+ * packed beds. Its weakness is the fixed dense bed (Carman–Kozeny drag
+ * underestimated by ~30 % at phi = 0.4): beetstra and tenneti are fits to
+ * fixed arrays and give the Carman–Kozeny/Ergun pressure drop
+ * (test_fixed_bed) but hinder a settling suspension about twice too much at
+ * phi = 0.4. For a quasi-static dense column whose pore pressure is set by the
+ * permeability, beetstra is the better choice. mean_slip is di_felice on the
+ * mean slip with an isolated-sphere resistance to the grain-scale motion
+ * (dense sheared beds, docs/fast-tier.md for what it changes and what not).
  */
 #ifndef GF_DRAG_H
 #define GF_DRAG_H
 
 #include "core/gf_status.h"
 
-typedef enum gf_drag_law { GF_DRAG_DI_FELICE = 0, GF_DRAG_BEETSTRA, GF_DRAG_TENNETI } gf_drag_law;
+/* K in kg/s for a grain of diameter D in a fluid of density rho and viscosity mu; eps in [0.2, 1], slip >= 0. */
+typedef double (*gf_drag_fn)(double diameter_m, double eps, double slip_m_s, double rho_kg_m3, double viscosity_Pa_s);
 
-/* Law named name ("di_felice", "beetstra", "tenneti"). GF_ERR_CONFIG otherwise. */
-gf_status gf_drag_find(gf_ctx *ctx, const char *name, gf_drag_law *law);
-const char *gf_drag_name(gf_drag_law law);
+typedef struct gf_drag_info {
+    const char *name;        /* the value of fluid.drag */
+    const char *summary;     /* one line, with the source */
+    gf_drag_fn coefficient;  /* K on the slip u_f - v (per-grain closures) or u_f - <v> (mean-slip closures) */
+    gf_drag_fn fluctuation;  /* NULL: per-grain slip; else K' on <v> - v, slip argument |<v> - v| */
+} gf_drag_info;
 
-/* K in kg/s. eps clipped to [0.2, 1]; slip_m_s >= 0. */
-double gf_drag_coefficient(gf_drag_law law, double diameter_m, double eps, double slip_m_s, double rho_kg_m3,
+/* The closure named name, or NULL. */
+const gf_drag_info *gf_drag_lookup(const char *name);
+/* The same, GF_ERR_CONFIG naming the known closures if there is none. */
+gf_status gf_drag_find(gf_ctx *ctx, const char *name, const gf_drag_info **law);
+/* NULL-terminated list of the registered names (the schema's allowed values). */
+const char *const *gf_drag_names(void);
+
+/* K in kg/s of law's coefficient, eps clipped to [0.2, 1]. */
+double gf_drag_coefficient(const gf_drag_info *law, double diameter_m, double eps, double slip_m_s, double rho_kg_m3,
                            double viscosity_Pa_s);
+/* K' in kg/s of law's fluctuation resistance (law->coefficient's K for a per-grain closure). */
+double gf_drag_fluctuation_coefficient(const gf_drag_info *law, double diameter_m, double eps, double slip_m_s,
+                                       double rho_kg_m3, double viscosity_Pa_s);
+
+extern const gf_drag_info gf_drag_law_di_felice;
+extern const gf_drag_info gf_drag_law_beetstra;
+extern const gf_drag_info gf_drag_law_tenneti;
+extern const gf_drag_info gf_drag_law_mean_slip;
 
 #endif

@@ -16,10 +16,10 @@
 #include <string.h>
 
 #include "contact/gf_contact.h"
+#include "coupling/gf_drag.h"
 #include "scenes/gf_scene.h"
 
 static const char *const fluid_models[] = {"none", "unresolved", "resolved", "auto", NULL};
-static const char *const drag_laws[] = {"di_felice", "beetstra", "tenneti", NULL};
 
 #define D(sec, k, field, lo, hi, open, unit, doc) \
     {sec, k, GF_FIELD_DOUBLE, offsetof(gf_run_spec, field), 0, lo, hi, open, unit, NULL, doc, NULL}
@@ -52,7 +52,7 @@ static const gf_spec_field fields[] = {
     N("fluid", "model", fluid.model, fluid_models, "fluid tier"),
     D("fluid", "density_kg_m3", fluid.density_kg_m3, 0, 1e5, 0, "kg m-3", "fluid density rho_f (0: dry)"),
     D("fluid", "viscosity_Pa_s", fluid.viscosity_Pa_s, 0, 1e6, 0, "Pa s", "dynamic viscosity eta_f (0: dry)"),
-    N("fluid", "drag", fluid.drag, drag_laws, "drag closure (unresolved tier)"),
+    R("fluid", "drag", fluid.drag, gf_drag_names, "drag closure (unresolved tier)"),
     D("fluid", "cell_over_D", fluid.cell_over_D, 0, 100.0, 1, "1", "fluid cell size / D"),
     D("fluid", "cfl", fluid.cfl, 0, 1.0, 1, "1", "advective CFL bound"),
     B("fluid", "lubrication", fluid.lubrication, "Brenner normal lubrication"),
