@@ -3,7 +3,7 @@
 # Runs apt-get only when something is missing (root, or sudo when available).
 set -euo pipefail
 pkgs=(build-essential cmake pkg-config git libyaml-dev libnetcdf-dev netcdf-bin libhdf5-dev
-      libfftw3-dev libudunits2-dev libopenmpi-dev openmpi-bin python3 python3-netcdf4 python3-xarray)
+      libfftw3-dev libudunits2-dev libgsl-dev libsuitesparse-dev libopenmpi-dev openmpi-bin python3 python3-netcdf4 python3-xarray)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
