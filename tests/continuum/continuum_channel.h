@@ -40,3 +40,23 @@ static inline double outlet_error(const gf_continuum *s)
 }
 
 #endif
+
+/* Fully developed mu(I) channel: H = 1, Lambda = H/d, rho_s = P0 = 1, phi = 0.6, periodic along x
+ * (nx cells), driven by G = beta^2 P0/H as a body force; velocity scale sqrt(G H/rho_s) = beta. */
+static inline gf_continuum_params channel_mui(int ny, double beta, double Lambda, gf_mui_params law, gf_rheology rh)
+{
+    double phi = 0.6, rho = phi * 1.0, G = beta * beta;
+    gf_continuum_params p = {
+        .n = {4, ny, 1},
+        .length_m = {4.0 / ny, 1.0, 1.0},
+        .side = {{GF_SIDE_PERIODIC, GF_SIDE_PERIODIC}, {GF_SIDE_WALL, GF_SIDE_WALL}, {GF_SIDE_PERIODIC, GF_SIDE_PERIODIC}},
+        .density_kg_m3 = rho,
+        .body_accel_m_s2 = {G / rho, 0.0, 0.0},
+        .rheology = rh,
+        .mui = {.law = law, .diameter_m = 1.0 / Lambda, .grain_density_kg_m3 = 1.0, .gdot_min_1_s = 1e-5,
+                .rate_part_only = rh == GF_RHEOLOGY_MU_I_RATE_PART},
+        .pressure_ref_Pa = 1.0,
+        .dt_s = 2.0,
+    };
+    return p;
+}
