@@ -57,6 +57,8 @@ typedef struct gf_continuum_params {
     double pressure_ref_Pa;         /* added to the projection pressure in the mu(I) law */
     double dt_s;
     int min_cells_across;           /* refuse coarser wall-to-wall grids; 0: 8 */
+    int laplacian_form;             /* 1: eta lap(u) per component, the thesis' approximation (4.8), with
+                                       eta averaged from the edges to the face; 0: the stress divergence */
 } gf_continuum_params;
 
 typedef struct gf_continuum gf_continuum;

@@ -189,8 +189,41 @@ static void shift(int out[3], const int idx[3], int axis, int by)
     out[axis] += by;
 }
 
+/* The thesis' approximation (4.8): eta (sum_b d2u_a/dx_b^2), eta at the face from its edges. */
+static void assemble_row_laplacian(gf_continuum *s, int a, const int idx[3], int row, double rho_dt)
+{
+    const double *h = s->g.h_m;
+    int t[3];
+    double eta = 0.0;
+    int n_edges = 0;
+    for (int b = 0; b < s->n_comp; ++b) {
+        if (b == a)
+            continue;
+        int k = 3 - a - b;
+        for (int side = 0; side < 2; ++side) {
+            shift(t, idx, b, side);
+            eta += s->eta_edge[k][edge_index(s, k, t)];
+            ++n_edges;
+        }
+    }
+    eta /= n_edges;
+    add_face(s, row, a, idx, rho_dt);
+    for (int b = 0; b < s->n_comp; ++b) {
+        double c = eta / (h[b] * h[b]);
+        shift(t, idx, b, 1);
+        add_face(s, row, a, t, -c);
+        add_face(s, row, a, idx, 2.0 * c);
+        shift(t, idx, b, -1);
+        add_face(s, row, a, t, -c);
+    }
+}
+
 static void assemble_row(gf_continuum *s, int a, const int idx[3], int row, double rho_dt)
 {
+    if (s->p.laplacian_form) {
+        assemble_row_laplacian(s, a, idx, row, rho_dt);
+        return;
+    }
     const double *h = s->g.h_m;
     int t[3], t2[3];
     add_face(s, row, a, idx, rho_dt);
