@@ -36,6 +36,11 @@ gf_status gf_continuum_params_check(gf_ctx *ctx, const gf_continuum_params *p, c
                            "%s: %d cells across the walls of axis %d is too coarse to resolve the wall layer "
                            "(at least %d needed)",
                            where, p->n[d], d, min_cells);
+    if (p->two_phase && !has_outflow)
+        return GF_FAIL(ctx, GF_ERR_CONFIG, "%s: two phases need an outflow (open) side to fix the pressure", where);
+    if (p->two_phase && !(p->density2_kg_m3 > 0.0 && p->viscosity2_Pa_s >= 0.0))
+        return GF_FAIL(ctx, GF_ERR_CONFIG, "%s: the second phase needs a density > 0 and a viscosity >= 0 (got %g kg/m3, %g Pa s)",
+                       where, p->density2_kg_m3, p->viscosity2_Pa_s);
     if (!(p->density_kg_m3 > 0.0))
         return GF_FAIL(ctx, GF_ERR_CONFIG, "%s: density must be > 0 (got %g kg/m3)", where, p->density_kg_m3);
     if (!(p->dt_s > 0.0))
@@ -107,7 +112,7 @@ static gf_status allocate(gf_continuum *s)
             return GF_FAIL(s->ctx, GF_ERR_NOMEM, "continuum: velocity");
     }
     double **cell[] = {&s->p_cell, &s->div_cell, &s->eta_cell, &s->strain_cell, &s->diag_cell,
-                       &s->offsq_cell[0], &s->offsq_cell[1], &s->offsq_cell[2]};
+                       &s->offsq_cell[0], &s->offsq_cell[1], &s->offsq_cell[2], &s->c_cell, &s->c_new};
     for (size_t f = 0; f < sizeof cell / sizeof cell[0]; ++f)
         if (!(*cell[f] = calloc(g->n_cells, sizeof(double))))
             return GF_FAIL(s->ctx, GF_ERR_NOMEM, "continuum: cell fields");
@@ -121,6 +126,14 @@ static gf_status allocate(gf_continuum *s)
         s->eta_edge[k] = calloc(s->n_edges[k], sizeof(double));
         if (!s->e_edge[k] || !s->eta_edge[k])
             return GF_FAIL(s->ctx, GF_ERR_NOMEM, "continuum: edge fields");
+    }
+    for (size_t c = 0; c < g->n_cells; ++c)
+        s->c_cell[c] = 1.0;
+    if (s->p.two_phase) {
+        for (int a = 0; a < s->n_comp; ++a)
+            if (!(s->rho_face[a] = calloc(g->n_faces[a], sizeof(double))))
+                return GF_FAIL(s->ctx, GF_ERR_NOMEM, "continuum: face densities");
+        GF_TRY(gf_cont_lu_create(s->ctx, (int)g->n_cells, (long)(2 * s->n_comp + 1) * (long)g->n_cells, &s->lu_p));
     }
     GF_TRY(map_unknowns(s));
     s->rhs = calloc(s->n_unknowns, sizeof(double));
@@ -185,9 +198,11 @@ void gf_continuum_destroy(gf_continuum **ps)
     for (int a = 0; a < 3; ++a) {
         free(s->u[a]), free(s->u_old[a]), free(s->unknown[a]);
         free(s->e_edge[a]), free(s->eta_edge[a]), free(s->offsq_cell[a]);
+        free(s->rho_face[a]);
     }
     free(s->p_cell), free(s->div_cell), free(s->eta_cell), free(s->strain_cell), free(s->diag_cell);
-    free(s->rhs), free(s->x);
+    free(s->rhs), free(s->x), free(s->c_cell), free(s->c_new);
+    gf_cont_lu_destroy(&s->lu_p);
     gf_cont_poisson_destroy(&s->poisson);
     gf_cont_lu_destroy(&s->lu);
     free(s);
@@ -197,11 +212,18 @@ void gf_continuum_destroy(gf_continuum **ps)
 gf_status gf_continuum_step(gf_continuum *s)
 {
     double dt = s->p.dt_s;
-    if (s->p.rheology != GF_RHEOLOGY_NEWTONIAN || s->steps == 0)
+    if (s->p.two_phase)
+        gf_continuum_face_density(s);
+    if (s->p.rheology != GF_RHEOLOGY_NEWTONIAN || s->p.two_phase || s->steps == 0)
         gf_continuum_update_viscosity(s);
     gf_continuum_advect(s, dt);
     GF_TRY(gf_continuum_viscous(s, dt));
-    gf_continuum_project(s, dt);
+    if (s->p.two_phase) {
+        GF_TRY(gf_continuum_project_variable(s, dt));
+        gf_continuum_advect_fraction(s, dt);
+    } else {
+        gf_continuum_project(s, dt);
+    }
     s->time_s += dt;
     ++s->steps;
     for (int a = 0; a < s->n_comp; ++a)
@@ -240,6 +262,10 @@ const double *gf_continuum_velocity(const gf_continuum *s, int a)
 const double *gf_continuum_pressure(const gf_continuum *s)
 {
     return s->p_cell;
+}
+double *gf_continuum_fraction(gf_continuum *s)
+{
+    return s->c_cell;
 }
 const double *gf_continuum_viscosity(const gf_continuum *s)
 {

@@ -24,6 +24,12 @@
  * zero, zero-flux pressure), an outflow (zero normal gradient of velocity and
  * p = 0 on the face, the thesis' code), or periodic.
  * 2-D is the 3-D code with one periodic cell along z and no z velocity.
+ * Two phases (two_phase = 1, after Lagree, Staron & Popinet, JFM 686, 2011):
+ * the main phase (mu(I)) and a light Newtonian one (air) mix cell by cell by
+ * the volume fraction c, advected by a bounded MUSCL scheme (minmod), with
+ * rho = c rho + (1 - c) rho_2 and eta = c eta + (1 - c) eta_2; the projection
+ * is then variable-coefficient, div(grad(phi)/rho) = div u / dt, solved by
+ * LU as well (it needs an outflow side to fix the pressure).
  * Units SI. The rheology's pressure is P = pressure_ref_Pa + p, p the
  * projection pressure (zero on an outflow face).
  */
@@ -57,6 +63,9 @@ typedef struct gf_continuum_params {
     double pressure_ref_Pa;         /* added to the projection pressure in the mu(I) law */
     double dt_s;
     int min_cells_across;           /* refuse coarser wall-to-wall grids; 0: 8 */
+    int two_phase;                  /* 1: a second, Newtonian phase fills the cells in proportion 1 - c,
+                                       c the volume fraction of the main phase (a free surface by VOF) */
+    double density2_kg_m3, viscosity2_Pa_s; /* the second phase (air) */
     int laplacian_form;             /* 1: eta lap(u) per component, the thesis' approximation (4.8), with
                                        eta averaged from the edges to the face; 0: the stress divergence */
 } gf_continuum_params;
@@ -78,6 +87,9 @@ const gf_grid *gf_continuum_grid(const gf_continuum *s);
 const double *gf_continuum_velocity(const gf_continuum *s, int a);
 /* Projection pressure at cell centres (Pa). Borrowed. */
 const double *gf_continuum_pressure(const gf_continuum *s);
+/* Volume fraction c of the main phase at cell centres (1 everywhere unless two_phase); writable
+ * before the first step to set the initial shape. Borrowed. */
+double *gf_continuum_fraction(gf_continuum *s);
 /* Effective viscosity at cell centres (Pa s) of the last step. Borrowed. */
 const double *gf_continuum_viscosity(const gf_continuum *s);
 double gf_continuum_time(const gf_continuum *s);

@@ -24,6 +24,9 @@ struct gf_continuum {
     double *rhs, *x;
     gf_cont_poisson *poisson;
     gf_cont_lu *lu;
+    double *c_cell, *c_new;    /* volume fraction of the main phase */
+    double *rho_face[3];       /* density on the faces (two phases), else NULL */
+    gf_cont_lu *lu_p;          /* variable-density pressure (two phases) */
     int factored;          /* a Newtonian matrix is factored once per dt */
     double time_s;
     long steps;
@@ -43,6 +46,15 @@ void gf_continuum_advect(gf_continuum *s, double dt);
 void gf_continuum_update_viscosity(gf_continuum *s);
 gf_status gf_continuum_viscous(gf_continuum *s, double dt);
 void gf_continuum_project(gf_continuum *s, double dt);
+/* Two phases: density on the faces from c; the variable-density projection; the VOF advection of c. */
+void gf_continuum_face_density(gf_continuum *s);
+gf_status gf_continuum_project_variable(gf_continuum *s, double dt);
+void gf_continuum_advect_fraction(gf_continuum *s, double dt);
+/* Density of component a's face q (rho, or rho_face under two phases). */
+static inline double gf_continuum_rho(const gf_continuum *s, int a, size_t q)
+{
+    return s->rho_face[a] ? s->rho_face[a][q] : s->p.density_kg_m3;
+}
 /* (p(cell above) - p(cell below))/h_a at face idx of component a, p = 0 on outflow faces. */
 double gf_continuum_pressure_gradient(const gf_continuum *s, const double *p, int a, const int idx[3]);
 

@@ -135,7 +135,7 @@ void gf_continuum_advect(gf_continuum *s, double dt)
                     int idx[3] = {i, j, k};
                     s->u_old[a][q] = s->u[a][q] + dt * (s->p.body_accel_m_s2[a] - convection(s, a, idx, gamma) -
                                                          gf_continuum_pressure_gradient(s, s->p_cell, a, idx) /
-                                                             s->p.density_kg_m3);
+                                                             gf_continuum_rho(s, a, q));
                 }
     for (int a = 0; a < s->n_comp; ++a) {
         double *tmp = s->u[a];

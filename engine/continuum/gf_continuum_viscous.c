@@ -63,11 +63,11 @@ static double pressure_at_cell(const gf_continuum *s, const int idx[3])
     return s->p.pressure_ref_Pa + s->p_cell[gf_continuum_cell_clamped(s, idx)];
 }
 
-static double viscosity(const gf_continuum *s, double gdot2, double pressure)
+static double viscosity(const gf_continuum *s, double gdot2, double pressure, double c)
 {
-    if (s->p.rheology == GF_RHEOLOGY_NEWTONIAN)
-        return s->p.viscosity_Pa_s;
-    return gf_mui_viscosity(&s->p.mui, sqrt(gdot2), pressure);
+    double eta = s->p.rheology == GF_RHEOLOGY_NEWTONIAN ? s->p.viscosity_Pa_s
+                                                        : gf_mui_viscosity(&s->p.mui, sqrt(gdot2), pressure);
+    return s->p.two_phase ? c * eta + (1.0 - c) * s->p.viscosity2_Pa_s : eta;
 }
 
 static int n_pairs(const gf_continuum *s)
@@ -128,7 +128,7 @@ static void cell_strains(gf_continuum *s, double *offsq[3])
 void gf_continuum_update_viscosity(gf_continuum *s)
 {
     const gf_grid *g = &s->g;
-    if (s->p.rheology == GF_RHEOLOGY_NEWTONIAN) {
+    if (s->p.rheology == GF_RHEOLOGY_NEWTONIAN && !s->p.two_phase) {
         for (size_t c = 0; c < g->n_cells; ++c)
             s->eta_cell[c] = s->p.viscosity_Pa_s;
         for (int k = 0; k < 3; ++k)
@@ -144,7 +144,7 @@ void gf_continuum_update_viscosity(gf_continuum *s)
             for (int i = 0; i < g->n[0]; ++i) {
                 int idx[3] = {i, j, k2};
                 size_t c = gf_grid_cell(g, i, j, k2);
-                s->eta_cell[c] = viscosity(s, s->strain_cell[c], pressure_at_cell(s, idx));
+                s->eta_cell[c] = viscosity(s, s->strain_cell[c], pressure_at_cell(s, idx), s->c_cell[c]);
             }
     for (int kk = 0; kk < n_pairs(s); ++kk) {
         int k = s->n_comp == 3 ? kk : 2, a, b;
@@ -154,7 +154,7 @@ void gf_continuum_update_viscosity(gf_continuum *s)
                 for (int i0 = 0; i0 < s->ne[k][0]; ++i0) {
                     int idx[3] = {i0, i1, i2};
                     size_t q = edge_index(s, k, idx);
-                    double rest = 0.0, pres = 0.0;
+                    double rest = 0.0, pres = 0.0, frac = 0.0;
                     for (int da = -1; da < 1; ++da)
                         for (int db = -1; db < 1; ++db) {
                             int cidx[3] = {i0, i1, i2};
@@ -163,9 +163,10 @@ void gf_continuum_update_viscosity(gf_continuum *s)
                             size_t c = gf_continuum_cell_clamped(s, cidx);
                             rest += 0.25 * (s->strain_cell[c] - offsq[k][c]);
                             pres += 0.25 * (s->p.pressure_ref_Pa + s->p_cell[c]);
+                            frac += 0.25 * s->c_cell[c];
                         }
                     double e = s->e_edge[k][q];
-                    s->eta_edge[k][q] = viscosity(s, e * e + rest, pres);
+                    s->eta_edge[k][q] = viscosity(s, e * e + rest, pres, frac);
                 }
     }
 }
@@ -266,7 +267,7 @@ gf_status gf_continuum_viscous(gf_continuum *s, double dt)
 {
     const gf_grid *g = &s->g;
     double rho_dt = s->p.density_kg_m3 / dt;
-    int newtonian = s->p.rheology == GF_RHEOLOGY_NEWTONIAN;
+    int newtonian = s->p.rheology == GF_RHEOLOGY_NEWTONIAN && !s->p.two_phase; /* constant matrix */
     gf_cont_lu_clear(s->lu);
     for (int a = 0; a < s->n_comp; ++a)
         for (int k = 0; k < g->nf[a][2]; ++k)
@@ -277,8 +278,9 @@ gf_status gf_continuum_viscous(gf_continuum *s, double dt)
                     if (row < 0)
                         continue;
                     int idx[3] = {i, j, k};
-                    s->rhs[row] = rho_dt * s->u[a][q];
-                    assemble_row(s, a, idx, row, rho_dt);
+                    double rho_dt_q = s->rho_face[a] ? s->rho_face[a][q] / dt : rho_dt;
+                    s->rhs[row] = rho_dt_q * s->u[a][q];
+                    assemble_row(s, a, idx, row, rho_dt_q);
                 }
     if (!newtonian || !s->factored) {
         GF_TRY(gf_cont_lu_factor(s->ctx, s->lu));
