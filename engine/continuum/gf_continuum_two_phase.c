@@ -171,7 +171,7 @@ void gf_continuum_advect_fraction(gf_continuum *s, double dt)
             vmax = fmax(vmax, fabs(s->u[a][q]));
         courant += dt * vmax / g->h_m[a];
     }
-    int n_sub = (int)ceil(courant / 0.4);
+    int n_sub = (int)ceil(courant / 0.2);
     if (n_sub < 1)
         n_sub = 1;
     for (int k = 0; k < n_sub; ++k)
