@@ -58,13 +58,15 @@ static gf_continuum_params solver_params(const gf_run_spec *spec, const collapse
     return p;
 }
 
-static void measure(const gf_continuum *s, double *front, double *height_back, double *volume)
+static void measure(const gf_continuum *s, double *front, double *height_back, double *volume, double *height_max)
 {
     const gf_grid *g = gf_continuum_grid(s);
     const double *c = gf_continuum_fraction((gf_continuum *)s);
     *front = 0.0;
     *height_back = 0.0;
     *volume = 0.0;
+    if (height_max)
+        *height_max = 0.0;
     for (int i = 0; i < g->n[0]; ++i) {
         double col = 0.0;
         for (int j = 0; j < g->n[1]; ++j)
@@ -73,6 +75,8 @@ static void measure(const gf_continuum *s, double *front, double *height_back, d
             *front = (i + 1) * g->h_m[0];
         if (i == 0)
             *height_back = col;
+        if (height_max && col > *height_max)
+            *height_max = col;
         *volume += col * g->h_m[0];
     }
 }
@@ -102,8 +106,9 @@ static gf_status run_steps(gf_ctx *ctx, const gf_run_spec *spec, const collapse_
     while (1) {
         double t = gf_continuum_time(s);
         if (w && t >= next - 1e-9 * every) {
-            measure(s, &front, &height, &volume);
-            double v[3] = {front, height, spec->continuum.phi};
+            double height_max;
+            measure(s, &front, &height, &volume, &height_max);
+            double v[3] = {front, height_max, spec->continuum.phi};
             GF_TRY(gf_nc_diagnostics_append(w, t, v));
             next += every;
         }
@@ -135,14 +140,14 @@ gf_status gf_continuum_collapse_run(gf_ctx *ctx, const gf_run_spec *spec, const 
         for (int i = 0; i < g->n[0]; ++i)
             c[gf_grid_cell(g, i, j, 0)] = ((i + 0.5) * g->h_m[0] < cg.R0 && (j + 0.5) * g->h_m[1] < cg.H0) ? 1.0 : 0.0;
     double front0, height0, volume0;
-    measure(s, &front0, &height0, &volume0);
+    measure(s, &front0, &height0, &volume0, NULL);
     gf_nc_writer *w = NULL;
     gf_status st = output_dir ? open_diagnostics(ctx, spec, &cg, output_dir, resolved_yaml, &w) : GF_OK;
     if (st == GF_OK)
         st = run_steps(ctx, spec, &cg, s, w, interrupt, r);
     if (st == GF_OK) {
         double volume;
-        measure(s, &r->front_m, &r->height_m, &volume);
+        measure(s, &r->front_m, &r->height_m, &volume, NULL);
         r->mass_drift = volume / volume0 - 1.0;
         r->column_length_m = cg.R0;
         r->column_height_m = cg.H0;
