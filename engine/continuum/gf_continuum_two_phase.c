@@ -10,7 +10,7 @@
  *    solved by LU every step (rho moves with c), u = u** - dt grad(phi)/rho;
  *  - c is advected by the divergence-free u^{n+1} in conservation form with a
  *    MUSCL reconstruction limited by minmod (van Leer 1979), in sub-steps of
- *    Courant number 0.4, and clipped to [0, 1]; what enters through an open
+ *    Courant number 0.2, and clipped to [0, 1]; what enters through an open
  *    side is the second phase (c = 0).
  */
 #include <math.h>
