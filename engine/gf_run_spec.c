@@ -1,6 +1,8 @@
 /* Defaults of a run; see gf_run_spec.h. */
 #include "gf_run_spec.h"
 
+#include "continuum/gf_mui.h"
+
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -27,6 +29,11 @@ void gf_run_spec_defaults(gf_run_spec *s)
     snprintf(s->fluid.drag, sizeof s->fluid.drag, "di_felice");
     s->output = (gf_output_spec){.interval_nd = 1.0, .particles = 1, .fields = 1, .probes = 1,
                                  .diagnostics = 1, .checkpoint_interval_nd = 0.0};
+    snprintf(s->method, sizeof s->method, "dem");
+    /* mu_s, mu_2: this DEM's own steady chute (docs/validation-dem.md), so that the two methods
+     * compare like with like; I0 of Jop et al. 2005. */
+    s->continuum = (gf_continuum_spec){.mu_s = 0.280, .mu_2 = 0.703, .I0 = 0.279, .phi = 0.6,
+                                       .cell_over_D = 0.5, .gdot_min_nd = 1e-4};
     s->stokes_St = s->density_ratio_r = s->aspect_ratio_a = s->phi_initial = NAN;
 }
 
@@ -88,4 +95,17 @@ gf_status gf_run_spec_check_time_step(gf_ctx *ctx, const gf_run_spec *s)
                    "contact.dt_over_tc = %g: dt = %g s exceeds the stability limit t_c/5 = %g s "
                    "(velocity Verlet on the contact network; use <= 0.2, 0.02 recommended)",
                    r, gf_run_spec_dt_s(s), gf_run_spec_t_contact_s(s) * GF_DT_MAX_OVER_TC);
+}
+
+gf_status gf_run_spec_check_method(gf_ctx *ctx, const gf_run_spec *spec)
+{
+    if (strcmp(spec->method, "continuum") != 0)
+        return GF_OK;
+    if (strcmp(spec->scene, "column_collapse") != 0)
+        return GF_FAIL(ctx, GF_ERR_CONFIG, "method: continuum runs the scene column_collapse only (got %s)",
+                       spec->scene);
+    if (strcmp(spec->fluid.model, "none") != 0)
+        return GF_FAIL(ctx, GF_ERR_CONFIG, "method: continuum is dry (fluid.model: none; got %s)", spec->fluid.model);
+    gf_mui_params law = {.mu_s = spec->continuum.mu_s, .mu_2 = spec->continuum.mu_2, .I0 = spec->continuum.I0};
+    return gf_mui_check(ctx, &law, "continuum");
 }

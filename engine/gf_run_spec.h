@@ -58,6 +58,14 @@ typedef struct gf_fluid_spec {
     double lub_cutoff_over_R; /* lubrication active for 0 <= gap <= cutoff R, seed 1/2 */
 } gf_fluid_spec;
 
+/* The continuum method (method: continuum; engine/continuum): the mu(I) law and the grid. */
+typedef struct gf_continuum_spec {
+    double mu_s, mu_2, I0;    /* mu(I) = mu_s + (mu_2 - mu_s)/(I0/I + 1) */
+    double phi;               /* solid fraction: the continuum's density is phi rho_p */
+    double cell_over_D;       /* cell edge / D */
+    double gdot_min_nd;       /* |gdot| floor (Djouwe Meffeja 2012, Annex A) x sqrt(D/g) */
+} gf_continuum_spec;
+
 typedef struct gf_output_spec {
     double interval_nd;       /* output interval in sqrt(D/g) */
     int particles, fields, probes, diagnostics;  /* which files to write */
@@ -74,6 +82,8 @@ typedef struct gf_run_spec {
     gf_contact_spec contact;
     gf_fluid_spec fluid;
     gf_output_spec output;
+    char method[GF_NAME_LEN]; /* "dem" (grains) or "continuum" (the mu(I) continuum, column_collapse only) */
+    gf_continuum_spec continuum;
     /* the groups a campaign asked for (NaN when not on the grid); recorded as attributes */
     double stokes_St, density_ratio_r, aspect_ratio_a, phi_initial;
     int n_scene_params;
@@ -105,5 +115,8 @@ double gf_run_spec_dt_limit_over_tc(const gf_run_spec *spec);
  * it is not a positive number. Called by gf_sim_create and by the campaign
  * loader, so `grainflow check` refuses what the engine would refuse. */
 gf_status gf_run_spec_check_time_step(gf_ctx *ctx, const gf_run_spec *spec);
+/* GF_ERR_CONFIG when method is continuum and the scene has no continuum form, the run is
+ * immersed, or the mu(I) law is not mu_2 > mu_s >= 0, I0 > 0. Called by the campaign loader. */
+gf_status gf_run_spec_check_method(gf_ctx *ctx, const gf_run_spec *spec);
 
 #endif

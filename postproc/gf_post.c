@@ -208,6 +208,9 @@ static void read_identity(gf_post_row *row)
             snprintf(row->run_id, sizeof row->run_id, "%s", buf);
         gf_ncr_att_text(NULL, &f, "scene", row->scene, sizeof row->scene);
         gf_ncr_att_text(NULL, &f, "fluid_model", row->fluid_model, sizeof row->fluid_model);
+        char stages[64] = "";
+        gf_ncr_att_text(NULL, &f, "stages", stages, sizeof stages);
+        gf_post_row_set_text(row, "method", strcmp(stages, "continuum") == 0 ? "continuum" : "dem");
         static const char *const map[][2] = {{"stokes_St", "St"},
                                              {"density_ratio_r", "r"},
                                              {"aspect_ratio_a", "a"},

@@ -30,6 +30,7 @@ const gf_post_col gf_summary_identity_cols[] = {
      "incomplete (no status file, or being written)"},
     {"error", 1, "", "per-run messages"},
     {"fluid_model", 1, "", "fluid tier that ran"},
+    {"method", 1, "", "dem (grains) or continuum (the mu(I) continuum, engine/continuum)"},
     {"realised_St", 0, "1", "Stokes number realised by the physical values"},
     {"realised_r", 0, "1", "density ratio realised by the physical values"},
     {"phi_initial_measured", 0, "1", "achieved initial packing fraction: solid volume / container volume"},

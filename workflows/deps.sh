@@ -9,6 +9,8 @@ pkgs=(
   libopenmpi-dev openmpi-bin
   zlib1g-dev       # CRC-32 of run manifests (postproc/rundir/gf_manifest.c)
   libxml2-dev      # the XDMF sidecar test (tests/io/test_nc_sidecar.c)
+  libgsl-dev       # root finding and quadrature of the mu(I) oracles (engine/continuum)
+  libsuitesparse-dev  # UMFPACK LU of the continuum solver's stress divergence
   python3 python3-netcdf4 python3-xarray
 )
 missing=()

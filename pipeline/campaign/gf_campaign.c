@@ -209,6 +209,12 @@ static gf_status build_run(loader *L, int v, int k, int index, gf_campaign_run *
         const gf_cfg_node *key = contact ? gf_cfg_get(contact, "dt_over_tc") : NULL;
         at = key ? key : contact ? contact : at;
     }
+    if (st == GF_OK && (st = gf_run_spec_check_method(ctx, &run->spec)) != GF_OK) {
+        /* located at the continuum: section when it has one, else at method: */
+        const gf_cfg_node *cont = gf_cfg_get(L->root, "continuum"), *method = gf_cfg_get(L->root, "method");
+        const gf_cfg_node *key = cont ? gf_cfg_get(cont, "mu_2") : NULL;
+        at = (key && strstr(gf_ctx_message(ctx), "mu_2")) ? key : cont ? cont : method ? method : at;
+    }
     if (st != GF_OK) {
         char msg[512];
         snprintf(msg, sizeof msg, "%s", gf_ctx_message(ctx));

@@ -20,6 +20,7 @@
 #include "scenes/gf_scene.h"
 
 static const char *const fluid_models[] = {"none", "unresolved", "resolved", "auto", NULL};
+static const char *const methods[] = {"dem", "continuum", NULL};
 
 #define D(sec, k, field, lo, hi, open, unit, doc) \
     {sec, k, GF_FIELD_DOUBLE, offsetof(gf_run_spec, field), 0, lo, hi, open, unit, NULL, doc, NULL}
@@ -34,6 +35,7 @@ static const gf_spec_field fields[] = {
     {"", "seed", GF_FIELD_U64, offsetof(gf_run_spec, seed), 0, 0, 0, 0, "", NULL, "RNG seed (packing, radii)", NULL},
     D("", "end_time", end_time_nd, 0, 1e7, 0, "1", "end time in sqrt(D/g); 0: the scene's default"),
     D("", "gravity", gravity_m_s2, 0, 1e3, 1, "m s-2", "|g|"),
+    N("", "method", method, methods, "dem: grains; continuum: the mu(I) continuum (column_collapse)"),
     D("grains", "diameter_m", grains.diameter_m, 0, 1.0, 1, "m", "mean grain diameter D"),
     D("grains", "polydispersity", grains.polydispersity, 0, 0.5, 0, "1", "radii uniform in R(1 -+ p)"),
     D("grains", "density_kg_m3", grains.density_kg_m3, 0, 1e5, 1, "kg m-3", "grain density rho_p"),
@@ -58,6 +60,12 @@ static const gf_spec_field fields[] = {
     B("fluid", "lubrication", fluid.lubrication, "Brenner normal lubrication"),
     D("fluid", "roughness_over_R", fluid.roughness_over_R, 0, 1.0, 0, "1", "effective roughness eta_e / R"),
     D("fluid", "lub_cutoff_over_R", fluid.lub_cutoff_over_R, 0, 10.0, 0, "1", "lubrication range / R"),
+    D("continuum", "mu_s", continuum.mu_s, 0, 5.0, 0, "1", "mu(I): static friction mu_s"),
+    D("continuum", "mu_2", continuum.mu_2, 0, 5.0, 1, "1", "mu(I): limiting friction mu_2 (> mu_s)"),
+    D("continuum", "I0", continuum.I0, 0, 10.0, 1, "1", "mu(I): I0 (> 0)"),
+    D("continuum", "phi", continuum.phi, 0, 0.7405, 1, "1", "solid fraction of the continuum"),
+    D("continuum", "cell_over_D", continuum.cell_over_D, 0, 10.0, 1, "1", "cell edge / D"),
+    D("continuum", "gdot_min_nd", continuum.gdot_min_nd, 0, 1.0, 1, "1", "|gdot| floor x sqrt(D/g)"),
     D("output", "interval_nd", output.interval_nd, 0, 1e7, 1, "1", "output interval in sqrt(D/g)"),
     B("output", "particles", output.particles, "write particles.nc"),
     B("output", "fields", output.fields, "write fields.nc"),
@@ -238,7 +246,7 @@ static gf_status read_groups(gf_ctx *ctx, const gf_cfg_doc *doc, const gf_cfg_no
 
 static const char *const top_keys[] = {"name",  "description", "seed",   "end_time", "gravity",
                                        "scene", "grains",      "contact", "fluid",   "output",
-                                       "domain", "groups",     "grid",   "variants", NULL};
+                                       "domain", "groups",     "grid",   "variants", "method", "continuum", NULL};
 
 gf_status gf_spec_read(gf_ctx *ctx, const gf_cfg_doc *doc, const gf_cfg_node *root, gf_run_spec *spec)
 {
@@ -287,7 +295,8 @@ gf_status gf_spec_read(gf_ctx *ctx, const gf_cfg_doc *doc, const gf_cfg_node *ro
             GF_TRY(read_scene_params(ctx, doc, item, scene, "domain", spec));
         else if (strcmp(k, "groups") == 0)
             GF_TRY(read_groups(ctx, doc, item, spec));
-        else if (!strcmp(k, "grains") || !strcmp(k, "contact") || !strcmp(k, "fluid") || !strcmp(k, "output"))
+        else if (!strcmp(k, "grains") || !strcmp(k, "contact") || !strcmp(k, "fluid") || !strcmp(k, "output") ||
+                 !strcmp(k, "continuum"))
             GF_TRY(read_section(ctx, doc, item, k, spec));
         else if (gf_spec_field_find("", k))
             GF_TRY(read_field(ctx, doc, gf_spec_field_find("", k), item, spec));

@@ -42,6 +42,9 @@ size_t gf_spec_text(const gf_run_spec *spec, char *buf, size_t n)
     char value[64];
     for (int i = 0; i < nf; ++i)
         if (!f[i].section[0]) {
+            /* method: dem is left out, so the run ids written before it existed do not change */
+            if (strcmp(f[i].key, "method") == 0 && strcmp(spec->method, "dem") == 0)
+                continue;
             gf_spec_field_format(&f[i], spec, value, sizeof value);
             put(&o, "%s: %s\n", f[i].key, value);
         }
@@ -52,8 +55,9 @@ size_t gf_spec_text(const gf_run_spec *spec, char *buf, size_t n)
     qsort(params, (size_t)np, sizeof *params, by_key);
     for (int i = 0; i < np; ++i)
         put(&o, "  %s: %.17g\n", params[i].key, params[i].value);
-    const char *sections[] = {"grains", "contact", "fluid", "output"};
-    for (int s = 0; s < 4; ++s) {
+    const char *sections[] = {"grains", "contact", "fluid", "output", "continuum"};
+    int n_sections = strcmp(spec->method, "continuum") == 0 ? 5 : 4; /* the continuum's keys only when it runs */
+    for (int s = 0; s < n_sections; ++s) {
         put(&o, "%s:\n", sections[s]);
         for (int i = 0; i < nf; ++i)
             if (strcmp(f[i].section, sections[s]) == 0) {

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "continuum/gf_continuum_collapse.h"
 #include "core/gf_timer.h"
 #include "gf_sim.h"
 #include "rundir/gf_lock.h"
@@ -101,8 +102,16 @@ gf_status gf_run_execute(gf_ctx *ctx, const gf_run_spec *spec, const gf_run_exec
                          .preparation_dir = preparations[0] ? preparations : NULL};
     const double t0 = gf_wtime();
     gf_sim *sim = NULL;
-    gf_status st = gf_sim_create(&run_ctx, spec, &so, &sim);
-    if (st == GF_OK) {
+    gf_status st = GF_OK;
+    if (strcmp(spec->method, "continuum") == 0) { /* the mu(I) continuum instead of grains */
+        gf_continuum_collapse_result cr;
+        st = gf_continuum_collapse_run(&run_ctx, spec, opt->run_dir, yaml, opt->interrupt, &cr);
+        res->steps = cr.steps;
+        res->sim_time_s = cr.time_s;
+    } else {
+        st = gf_sim_create(&run_ctx, spec, &so, &sim);
+    }
+    if (st == GF_OK && sim) {
         res->n_particles = (long)gf_sim_particles(sim)->n_local;
         res->continued_from_s = cont ? gf_sim_time_s(sim) : 0.0;
         st = gf_sim_run(sim);

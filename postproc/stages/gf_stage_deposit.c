@@ -45,11 +45,57 @@ const gf_post_col gf_stage_deposit_cols[] = {
     {"t_rest_s", 0, "s", "time after which the front stays within D/2 of its final position"},
     {NULL, 0, NULL, NULL}};
 
+/*
+ * A run without grains (method: continuum, engine/continuum/gf_continuum_collapse.h)
+ * has its heap only as the diagnostics' front_position and deposit_height: the
+ * run-out, the height and the front's history come from those; the shape columns
+ * stay empty.
+ */
+static gf_status deposit_from_diagnostics(gf_ctx *ctx, const gf_stage_in *in, gf_stage_out *out)
+{
+    gf_ncr d;
+    GF_TRY(gf_stage_open(ctx, in, "diagnostics.nc", &d));
+    double R0, H0, D = gf_ncr_att_double_or(&d, "grain_diameter_m", NAN);
+    gf_stage_column(&d, &R0, &H0);
+    double *t = NULL, *x = NULL, *h = NULL;
+    size_t nt = 0, nx = 0, nh = 0;
+    gf_status st = gf_ncr_var_1d(ctx, &d, "time", &t, &nt);
+    if (st == GF_OK) st = gf_ncr_var_1d(ctx, &d, "front_position", &x, &nx);
+    if (st == GF_OK) st = gf_ncr_var_1d(ctx, &d, "deposit_height", &h, &nh);
+    if (st == GF_OK && (nx != nt || nh != nt || nt == 0))
+        st = GF_FAIL(ctx, GF_ERR_IO, "%s: front_position, deposit_height and time differ in length", d.path);
+    gf_ncr_close(&d);
+    if (st == GF_OK) {
+        gf_post_row *row = out->row;
+        double R = x[nt - 1], H = h[nt - 1];
+        gf_post_row_set(row, "R_inf_m", R);
+        gf_post_row_set(row, "H_inf_m", H);
+        if (R0 > 0.0) {
+            gf_post_row_set(row, "R_inf_over_R0", R / R0);
+            gf_post_row_set(row, "runout_norm", (R - R0) / R0);
+            gf_post_row_set(row, "H_inf_over_R0", H / R0);
+        }
+        if (nt >= 3) {
+            /* the continuum's front is interpolated in the volume fraction: a continuous series (q = 0) */
+            gf_rate_estimate u = gf_rate_max_resolved(t, x, nt, 0.0, 0.1);
+            gf_post_row_set(row, "Ufront_particles_max_m_s", u.rate);
+            gf_post_row_set(row, "Ufront_particles_max_err_m_s", u.sigma);
+            gf_post_row_set(row, "t_front_max_speed_s", u.t_at);
+            if (D > 0.0)
+                gf_post_row_set(row, "t_rest_s", gf_stats_settle_time(t, x, nt, 0.5 * D));
+        }
+    }
+    free(t), free(x), free(h);
+    return st;
+}
+
 gf_status gf_stage_deposit(gf_ctx *ctx, const gf_stage_in *in, const gf_stage_opts *opts, gf_stage_out *out)
 {
     const int collapse = gf_stage_is_scene(in, "column_collapse");
     if (!collapse)
         return GF_ERR_UNSUPPORTED;   /* only a collapse leaves a heap against a back wall */
+    if (!gf_stage_has_file(in, "particles.nc") && gf_stage_has_file(in, "diagnostics.nc"))
+        return deposit_from_diagnostics(ctx, in, out);
     gf_ncr p;
     GF_TRY(gf_stage_open(ctx, in, "particles.nc", &p));
     gf_grains_info g;

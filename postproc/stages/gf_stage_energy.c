@@ -27,6 +27,10 @@ gf_status gf_stage_energy(gf_ctx *ctx, const gf_stage_in *in, const gf_stage_opt
     GF_TRY(gf_stage_open(ctx, in, "diagnostics.nc", &d));
     double *t = NULL, *e = NULL;
     size_t nt = 0, ne = 0;
+    if (!gf_ncr_has_var(&d, "ecx_per_grain") && !gf_stage_has_file(in, "particles.nc")) {
+        gf_ncr_close(&d);
+        return GF_ERR_UNSUPPORTED;  /* no grains (method: continuum): no grain energy */
+    }
     gf_status st = gf_ncr_var_1d(ctx, &d, "time", &t, &nt);
     if (st == GF_OK)
         st = gf_ncr_var_1d(ctx, &d, "ecx_per_grain", &e, &ne);
