@@ -89,12 +89,31 @@ static gf_status deposit_from_diagnostics(gf_ctx *ctx, const gf_stage_in *in, gf
     return st;
 }
 
+/* 1 when diagnostics.nc says it was written by the continuum (its "stages"
+ * attribute): the heap is then its deposit_height and front_position. A grain
+ * run without particles.nc (output.particles: false) is not one: its heap's
+ * shape is not computed, and the note says why. */
+static int heap_in_diagnostics(const gf_stage_in *in)
+{
+    if (!gf_stage_has_file(in, "diagnostics.nc"))
+        return 0;
+    gf_ctx c = {0};
+    gf_ncr d;
+    if (gf_stage_open(&c, in, "diagnostics.nc", &d) != GF_OK)
+        return 0;
+    char stages[64] = "";
+    gf_ncr_att_text(NULL, &d, "stages", stages, sizeof stages);
+    const int continuum = strcmp(stages, "continuum") == 0 && gf_ncr_has_var(&d, "deposit_height");
+    gf_ncr_close(&d);
+    return continuum;
+}
+
 gf_status gf_stage_deposit(gf_ctx *ctx, const gf_stage_in *in, const gf_stage_opts *opts, gf_stage_out *out)
 {
     const int collapse = gf_stage_is_scene(in, "column_collapse");
     if (!collapse)
         return GF_ERR_UNSUPPORTED;   /* only a collapse leaves a heap against a back wall */
-    if (!gf_stage_has_file(in, "particles.nc") && gf_stage_has_file(in, "diagnostics.nc"))
+    if (!gf_stage_has_file(in, "particles.nc") && heap_in_diagnostics(in))
         return deposit_from_diagnostics(ctx, in, out);
     gf_ncr p;
     GF_TRY(gf_stage_open(ctx, in, "particles.nc", &p));
