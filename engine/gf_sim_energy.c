@@ -49,8 +49,8 @@ static double wall_elastic_normal(const gf_sim *s)
         if (!wl->active)
             continue;
         for (size_t i = 0; i < p->n_local; ++i) {
-            double dist = (p->x_m[i] - wl->point_m[0]) * wl->normal[0] + (p->y_m[i] - wl->point_m[1]) * wl->normal[1] +
-                          (p->z_m[i] - wl->point_m[2]) * wl->normal[2];
+            double c[3] = {p->x_m[i], p->y_m[i], p->z_m[i]}, n[3];
+            double dist = gf_wall_distance(wl, c, n);
             double overlap = p->radius_m[i] - dist;
             if (overlap > 0.0 && !(p->flags[i] & GF_P_GLUED))
                 e += 0.5 * s->cp.k_n_N_m * overlap * overlap;
