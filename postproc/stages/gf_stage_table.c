@@ -7,7 +7,9 @@
 #include <string.h>
 
 const gf_stage_info gf_stage_table[] = {
-    {"flow_rate", 1, gf_stage_flow_rate, "diagnostics.nc: time, grain_flow_rate, fluid_flow_rate",
+    {"flow_rate", 2, gf_stage_flow_rate,
+     "diagnostics.nc: time, grain_flow_rate, fluid_flow_rate; silo: discharge_rate, discharge_mass_rate, "
+     "orifice_packing_fraction, fill_height",
      "summary row", gf_stage_flow_rate_cols},
     {"regime", 1, gf_stage_regime,
      "attributes (grains, fluid, geometry, scene_param_*); diagnostics.nc: grain_flow_rate, bed_height, "
