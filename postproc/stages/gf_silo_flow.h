@@ -40,4 +40,20 @@ int gf_silo_fit_beverloo(const double *D_over_d, const double *Q_nd, int n, doub
 /* Q = Q0 (1 - exp(-H/H0)) through n points; returns 0 with fewer than 3 distinct H. */
 int gf_silo_fit_saturation(const double *H, const double *Q, int n, double *Q0, double *H0, double *R2);
 
+/* Kinematic model (Nedderman & Tuzun 1979; thesis (3.13)-(3.15)): the downward
+ * velocity across the orifice at height z is a Gaussian
+ * A exp(-(x - x_c)^2 / (4 b z)). Weighted log-linear least squares over the n
+ * bins (x, v) above 10 % of the peak (weights v^2: the error of ln v scales as
+ * 1/v); *R2 on v over every bin. Returns b (units of x), NaN when fewer than
+ * 4 bins or no maximum. */
+double gf_silo_fit_gaussian(const double *x, const double *v, int n, double z, double *R2);
+
+/* The profiles stage for the silo: v_y(x) across the orifice's mid-plane
+ * (|z - Ly/2| < d) in slabs of d at z = 0.5, 1, 2, 3, 5, 8 d, bins of d/2,
+ * averaged over the particles.nc frames of the steady window; the Gaussian
+ * fit of each (post_profiles.nc: x, z_level, v_down, b, gauss_R2) and in the
+ * row b at 1 d and 5 d, the smallest R^2 at z >= 3 d and whether b decreases
+ * from 1 d up (thesis §3.5.1, Fig. 3.13). */
+gf_status gf_silo_profiles(gf_ctx *ctx, const gf_stage_in *in, gf_stage_out *out);
+
 #endif

@@ -219,56 +219,6 @@ static void study_trend(const char *name, const double *x, int n, int restitutio
     GF_CHECK(1.0 - res / tot > 0.9);
 }
 
-/* Gaussian A exp(-(x - xc)^2 / (4 b z)) through the bins above 10 % of the peak (weighted log-linear fit),
- * R^2 on v over every bin. Returns b (m), NaN when too few bins. */
-static double fit_gaussian(const double *x, const double *v, int n, double z, double *R2)
-{
-    double S[5][5] = {{0}}, vmax = 0.0;
-    for (int i = 0; i < n; ++i)
-        vmax = fmax(vmax, v[i]);
-    /* ln v = c0 + c1 x + c2 x^2, weights v^2 (the errors of ln v scale as 1/v) */
-    double A[3][3] = {{0}}, B[3] = {0};
-    int m = 0;
-    for (int i = 0; i < n; ++i) {
-        if (!(v[i] > 0.1 * vmax))
-            continue;
-        double w = v[i] * v[i], ph[3] = {1.0, x[i], x[i] * x[i]}, y = log(v[i]);
-        for (int a = 0; a < 3; ++a) {
-            B[a] += w * ph[a] * y;
-            for (int c = 0; c < 3; ++c)
-                A[a][c] += w * ph[a] * ph[c];
-        }
-        ++m;
-    }
-    (void)S;
-    if (m < 4)
-        return NAN;
-    /* Cramer's rule on the 3 x 3 normal equations */
-    double det = A[0][0] * (A[1][1] * A[2][2] - A[1][2] * A[2][1]) - A[0][1] * (A[1][0] * A[2][2] - A[1][2] * A[2][0]) +
-                 A[0][2] * (A[1][0] * A[2][1] - A[1][1] * A[2][0]);
-    double c[3];
-    for (int k = 0; k < 3; ++k) {
-        double M[3][3];
-        memcpy(M, A, sizeof M);
-        for (int a = 0; a < 3; ++a)
-            M[a][k] = B[a];
-        c[k] = (M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
-                M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0])) /
-               det;
-    }
-    if (!(c[2] < 0.0))
-        return NAN;
-    double mean = 0.0, tot = 0.0, res = 0.0;
-    for (int i = 0; i < n; ++i)
-        mean += v[i] / n;
-    for (int i = 0; i < n; ++i) {
-        double p = exp(c[0] + c[1] * x[i] + c[2] * x[i] * x[i]);
-        tot += (v[i] - mean) * (v[i] - mean), res += (v[i] - p) * (v[i] - p);
-    }
-    *R2 = 1.0 - res / tot;
-    return -1.0 / (4.0 * c[2] * z); /* exp(-x^2/(4bz)): c2 = -1/(4 b z) */
-}
-
 static void study_profiles(void)
 {
     gf_run_spec s;
@@ -287,7 +237,7 @@ static void study_profiles(void)
             v[i] = r->vcount[h][i] ? r->vsum[h][i] / (double)r->vcount[h][i] : 0.0;
         }
         R2[h] = NAN;
-        b[h] = fit_gaussian(x, v, N_XBINS, profile_z[h] * d, &R2[h]);
+        b[h] = gf_silo_fit_gaussian(x, v, N_XBINS, profile_z[h] * d, &R2[h]);
         double vmax = 0.0;
         for (int i = 0; i < N_XBINS; ++i)
             vmax = fmax(vmax, v[i]);
