@@ -15,7 +15,7 @@
  * from a loose lattice and settle with the run's friction (gf_packing's free
  * pour) up to the fill height H, then settle with the run's contacts for
  * settle_time_nd while the floor is whole; t = 0 when the orifice opens
- * (start()).
+ * (at the end of build()).
  *
  * Reinjection (thesis §3.3): a grain whose centre falls below y = -d has left
  * (the thesis does not say where it stops counting one) and is moved, at rest
@@ -150,15 +150,10 @@ static gf_status silo_build(gf_sim *sim, const gf_run_spec *spec)
     if (steps > 0)
         GF_TRY(gf_sim_advance(sim, steps));
     gf_sim_reset_clock(sim);
-    return GF_OK;
-}
-
-/* t = 0: the orifice opens. */
-static gf_status silo_start(gf_sim *sim)
-{
-    const silo_geom g = geometry(gf_sim_spec(sim));
-    double lo[3] = {g.ox0, 0.0, g.oz0}, hi[3] = {g.ox1, 0.0, g.oz1};
-    return gf_sim_set_wall_hole(sim, FLOOR_WALL, lo, hi);
+    /* t = 0: the orifice opens (here rather than in start(), which a restart
+     * skips: a restarted run rebuilds the scene and must find the hole open) */
+    double lo_h[3] = {g.ox0, 0.0, g.oz0}, hi_h[3] = {g.ox1, 0.0, g.oz1};
+    return gf_sim_set_wall_hole(sim, FLOOR_WALL, lo_h, hi_h);
 }
 
 /* The reinjection lattice: sites of spacing a = 2 R_max, nx along x and nz
@@ -346,7 +341,7 @@ const gf_scene_desc gf_scene_silo = {
     .n_params = (int)(sizeof silo_params / sizeof silo_params[0]),
     .default_end_time_nd = 200.0,
     .build = silo_build,
-    .start = silo_start,
+    .start = NULL,
     .n_diag = (int)(sizeof silo_diag / sizeof silo_diag[0]),
     .diag = silo_diag,
     .diagnose = silo_diagnose,
