@@ -45,7 +45,7 @@ int gf_silo_fit_saturation(const double *H, const double *Q, int n, double *Q0, 
  * A exp(-(x - x_c)^2 / (4 b z)). Weighted log-linear least squares over the n
  * bins (x, v) above 10 % of the peak (weights v^2: the error of ln v scales as
  * 1/v); *R2 on v over every bin. Returns b (units of x), NaN when fewer than
- * 4 bins or no maximum. */
+ * 4 bins, no maximum, or a width sigma = sqrt(2 b z) beyond the sampled range. */
 double gf_silo_fit_gaussian(const double *x, const double *v, int n, double z, double *R2);
 
 /* The profiles stage for the silo: v_y(x) across the orifice's mid-plane

@@ -43,7 +43,11 @@ double gf_silo_fit_gaussian(const double *x, const double *v, int n, double z, d
         else
             c[k] = dk / det;
     }
-    if (!(det != 0.0) || !(c[2] < 0.0))
+    double xlo = INFINITY, xhi = -INFINITY;
+    for (int i = 0; i < n; ++i)
+        xlo = fmin(xlo, x[i]), xhi = fmax(xhi, x[i]);
+    /* a Gaussian wider than the sampled range (sigma^2 = -1/(2 c2)) is not identified */
+    if (!(det != 0.0) || !(c[2] < 0.0) || !(sqrt(-0.5 / c[2]) < xhi - xlo))
         return NAN;
     double mean = 0.0, tot = 0.0, res = 0.0;
     for (int i = 0; i < n; ++i)
