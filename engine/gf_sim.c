@@ -154,6 +154,38 @@ gf_status gf_sim_set_wall_active(gf_sim *s, int w, int active)
     return GF_OK;
 }
 
+gf_status gf_sim_set_wall_hole(gf_sim *s, int w, const double lo_m[3], const double hi_m[3])
+{
+    if (w < 0 || w >= s->n_walls)
+        return GF_FAIL(s->ctx, GF_ERR_ARG, "scene %s: no wall %d (have %d)", s->spec.scene, w, s->n_walls);
+    gf_wall *wl = &s->walls[w];
+    int axis = -1;
+    for (int a = 0; a < 3; ++a)
+        if (fabs(wl->normal[a]) == 1.0)
+            axis = a;
+    if (axis < 0)
+        return GF_FAIL(s->ctx, GF_ERR_ARG, "scene %s: a hole needs a wall normal to a box axis (wall %d)",
+                       s->spec.scene, w);
+    for (int a = 0; a < 3; ++a)
+        if (a != axis && !(hi_m[a] > lo_m[a]))
+            return GF_FAIL(s->ctx, GF_ERR_CONFIG, "scene %s: empty hole [%g, %g] m along axis %d", s->spec.scene,
+                           lo_m[a], hi_m[a], a);
+    wl->has_hole = 1, wl->hole_axis = axis;
+    for (int a = 0; a < 3; ++a)
+        wl->hole_lo[a] = lo_m[a], wl->hole_hi[a] = hi_m[a];
+    s->forces_valid = 0;
+    return GF_OK;
+}
+
+gf_status gf_sim_grains_moved(gf_sim *s)
+{
+    s->forces_valid = 0;
+    s->need_build = 1;
+    return GF_OK;
+}
+
+double *gf_sim_scene_counters(gf_sim *s) { return s->scene_counters; }
+
 gf_status gf_sim_set_end_time(gf_sim *s, double t_end_s)
 {
     if (!(t_end_s > 0.0) || !isfinite(t_end_s))
@@ -244,9 +276,9 @@ gf_status gf_sim_check_state(gf_sim *s)
     for (int w = 0; w < s->n_walls; ++w) {
         if (!s->walls[w].active)
             continue;
-        const double *n = s->walls[w].normal, *q = s->walls[w].point_m;
         for (size_t i = 0; i < p->n_local; ++i) {
-            double ov = p->radius_m[i] - ((p->x_m[i] - q[0]) * n[0] + (p->y_m[i] - q[1]) * n[1] + (p->z_m[i] - q[2]) * n[2]);
+            double c[3] = {p->x_m[i], p->y_m[i], p->z_m[i]}, n[3];
+            double ov = p->radius_m[i] - gf_wall_distance(&s->walls[w], c, n);
             if (ov > GF_OVERLAP_MAX_OVER_D * D && !(p->flags[i] & GF_P_GLUED))
                 return GF_FAIL(s->ctx, GF_ERR_PHYSICS,
                                "scene %s: grain %lld overlaps wall %d by %.3g D (limit %.2g D): impossible initial state",

@@ -133,6 +133,15 @@ typedef struct gf_sim_energy {
 } gf_sim_energy;
 gf_status gf_sim_energy_audit(const gf_sim *sim, gf_sim_energy *e);
 
+/* A scene moved grains (teleported, e.g. a silo's reinjection, Djouwe
+ * Meffeja 2012 §3.3) between steps: the next step rebuilds the neighbour list
+ * and the forces first. */
+gf_status gf_sim_grains_moved(gf_sim *sim);
+/* A scene's own running totals (e.g. grains discharged), GF_SIM_SCENE_COUNTERS
+ * values, zero at creation, written to and read from checkpoints. Borrowed. */
+#define GF_SIM_SCENE_COUNTERS 8
+double *gf_sim_scene_counters(gf_sim *sim);
+
 /* --- builder calls, for scenes --- */
 /* Domain box; periodic axes wrap, others must be closed by walls. */
 gf_status gf_sim_set_box(gf_sim *sim, const double lo_m[3], const double hi_m[3], const int periodic[3]);
@@ -144,6 +153,11 @@ gf_status gf_sim_add_wall(gf_sim *sim, const double point_m[3], const double nor
                           int *wall_id);
 /* Activates/deactivates a wall: a gate is a wall a scene removes at t = 0. */
 gf_status gf_sim_set_wall_active(gf_sim *sim, int wall_id, int active);
+/* Opens a rectangular hole in plane wall wall_id (a silo's orifice): the
+ * rectangle [lo, hi] on the two axes other than the wall normal's, which must
+ * be a box axis. Grains over the hole touch only its rim (gf_sim_internal.h:
+ * gf_wall_distance). */
+gf_status gf_sim_set_wall_hole(gf_sim *sim, int wall_id, const double lo_m[3], const double hi_m[3]);
 gf_status gf_sim_set_end_time(gf_sim *sim, double t_end_s);
 /* Basal pore-pressure gauge (probes.nc station). */
 gf_status gf_sim_add_gauge(gf_sim *sim, const char *name, const double x_m[3]);

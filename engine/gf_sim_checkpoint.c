@@ -49,6 +49,7 @@ static gf_status write_all(gf_sim *s, gf_restart *r)
     GF_TRY(gf_restart_put_f64(r, "gravity", 3, s->gravity_m_s2));
     GF_TRY(gf_restart_put_i64(r, "sort_state", 1, (const int64_t[1]){s->n_rebuilds}));
     GF_TRY(gf_restart_put_i64(r, "sort_layout", 1, (const int64_t[1]){s->store_layout}));
+    GF_TRY(gf_restart_put_f64(r, "scene_counters", GF_SIM_SCENE_COUNTERS, s->scene_counters));
     uint8_t active[GF_SIM_MAX_WALLS];
     double wall_force[3 * GF_SIM_MAX_WALLS];
     for (int w = 0; w < s->n_walls; ++w) {
@@ -155,6 +156,8 @@ static gf_status read_all(gf_sim *s, gf_restart *r)
     if (gf_restart_has(r, "sort_state"))
         GF_TRY(gf_restart_get_i64(r, "sort_state", 1, &sort_state));
     s->n_rebuilds = (long)sort_state;
+    if (gf_restart_has(r, "scene_counters")) /* checkpoints without them: scenes that keep none */
+        GF_TRY(gf_restart_get_f64(r, "scene_counters", GF_SIM_SCENE_COUNTERS, s->scene_counters));
     size_t nw = 0;
     GF_TRY(gf_restart_len(r, "wall_active", &nw));
     if (nw != (size_t)s->n_walls)

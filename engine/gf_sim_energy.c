@@ -53,9 +53,8 @@ static double wall_overlap(const gf_sim *s, size_t i, int w)
         return 0.0;
     const gf_particles *p = s->p;
     const gf_wall *wl = &s->walls[w];
-    double dist = (p->x_m[i] - wl->point_m[0]) * wl->normal[0] + (p->y_m[i] - wl->point_m[1]) * wl->normal[1] +
-                  (p->z_m[i] - wl->point_m[2]) * wl->normal[2];
-    return fmax(p->radius_m[i] - dist, 0.0);
+    double c[3] = {p->x_m[i], p->y_m[i], p->z_m[i]}, n[3];
+    return fmax(p->radius_m[i] - gf_wall_distance(wl, c, n), 0.0); /* a wall's hole: its rim (gf_sim_internal.h) */
 }
 
 /* The same for the grain-wall contacts (glued grains do not touch walls). */

@@ -397,7 +397,7 @@ static void wall_rows(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_si
     const int listed = s->wall_cand_walls == s->n_walls && s->wall_cand_grains == p->n_local;
     for (int w = 0; w < s->n_walls; ++w) {
         const gf_wall *wl = &s->walls[w];
-        const double *nw = wl->normal, *pw = wl->point_m;
+        const double *nw_plane = wl->normal, *pw = wl->point_m;
         size_t k = listed ? first_candidate(s->wall_cand, s->wall_cand_start[w], s->wall_cand_start[w + 1], i0) : i0;
         const size_t k_end = listed ? s->wall_cand_start[w + 1] : i1;
         for (; k < k_end; ++k) {
@@ -405,8 +405,11 @@ static void wall_rows(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_si
             if (i >= i1)
                 break;
             double *h = &s->wall_hist[3 * (i * stride + (size_t)w)];
-            double ri = p->radius_m[i];
-            double dist = (p->x_m[i] - pw[0]) * nw[0] + (p->y_m[i] - pw[1]) * nw[1] + (p->z_m[i] - pw[2]) * nw[2];
+            double ri = p->radius_m[i], c[3] = {p->x_m[i], p->y_m[i], p->z_m[i]}, n_loc[3];
+            double dist = wl->has_hole ? gf_wall_distance(wl, c, n_loc)
+                                       : (c[0] - pw[0]) * nw_plane[0] + (c[1] - pw[1]) * nw_plane[1] +
+                                             (c[2] - pw[2]) * nw_plane[2];
+            const double *nw = wl->has_hole ? n_loc : nw_plane;
             double overlap = ri - dist;
             if (!wl->active || (p->flags[i] & GF_P_GLUED) || overlap <= -lub_cut) {
                 if (h[0] != 0.0 || h[1] != 0.0 || h[2] != 0.0)

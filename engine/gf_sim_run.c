@@ -225,6 +225,9 @@ static gf_status run_loop(gf_sim *s, run_out *o, int resumed)
         const long to_check = GF_DONE_EVERY - s->step % GF_DONE_EVERY;
         if (s->scene->done && to_check < to_stop)
             to_stop = to_check;
+        const long to_upkeep = GF_SCENE_MAINTAIN_EVERY - s->step % GF_SCENE_MAINTAIN_EVERY;
+        if (s->scene->maintain && to_upkeep < to_stop)
+            to_stop = to_upkeep;
         long n = to_stop < chunk ? to_stop : chunk;
         double w0 = gf_wtime();
         gf_status st = gf_sim_advance(s, n);
@@ -240,6 +243,8 @@ static gf_status run_loop(gf_sim *s, run_out *o, int resumed)
             return GF_FAIL(s->ctx, GF_ERR_INTERRUPTED, "%s; checkpoint written", what);
         }
         GF_TRY(st);
+        if (s->scene->maintain && s->step % GF_SCENE_MAINTAIN_EVERY == 0)
+            GF_TRY(s->scene->maintain(s));
         double w1 = gf_wtime(), took = w1 - w0;
         /* ~0.1 s per chunk; grown only when a whole chunk ran (a chunk cut short by
          * frequent output instants must not double without bound and overflow) */

@@ -46,6 +46,7 @@
 #include "rundir/gf_manifest.h"
 #include "stages/gf_post_label.h"
 #include "stages/gf_stage.h"
+#include "stages/gf_silo_flow.h"
 #include "stages/gf_stage_util.h"
 
 static const char *const run_files[] = {"diagnostics.nc", "particles.nc", "probes.nc", "fields.nc"};
@@ -447,6 +448,30 @@ static int by_label(const void *x, const void *y)
     return strcmp(((const gf_fig_series *)x)->label, ((const gf_fig_series *)y)->label);
 }
 
+/* Q^(2/5) against D over the campaign's silo runs, with its Beverloo line (figures/gf_fig_beverloo.c). */
+static gf_status silo_figure(gf_ctx *ctx, const char *fig, const gf_post_row *rows, int n)
+{
+    double *D = calloc(2 * (size_t)n + 1, sizeof *D), k = NAN, C = NAN;
+    if (!D)
+        return GF_FAIL(ctx, GF_ERR_NOMEM, "post: out of memory");
+    double *Q = D + n;
+    int m = 0;
+    for (int i = 0; i < n; ++i)
+        if (strcmp(rows[i].scene, "silo") == 0 && isfinite(gf_post_row_get(&rows[i], "silo_Q_nd"))) {
+            D[m] = gf_post_row_get(&rows[i], "silo_D_over_d");
+            Q[m++] = gf_post_row_get(&rows[i], "silo_Q_nd");
+            k = gf_post_row_get(&rows[i], "beverloo_k"), C = gf_post_row_get(&rows[i], "beverloo_C");
+        }
+    gf_status st = GF_OK;
+    if (m > 0) {
+        char p[1200];
+        snprintf(p, sizeof p, "%s/beverloo.svg", fig);
+        st = gf_fig_beverloo(ctx, p, NULL, m, D, Q, k, C);
+    }
+    free(D);
+    return st;
+}
+
 static gf_status write_figures(gf_ctx *ctx, const char *dir, const gf_post_row *rows, int n)
 {
     char fig[1100], p[1200];
@@ -508,6 +533,8 @@ static gf_status write_figures(gf_ctx *ctx, const char *dir, const gf_post_row *
             st = gf_fig_runout(ctx, p, &by_variant, n, a, ro, reg);
         }
     }
+    if (st == GF_OK)
+        st = silo_figure(ctx, fig, rows, n);
     if (st == GF_OK && n_front > 0) {
         snprintf(p, sizeof p, "%s/front_position.svg", fig);
         gf_fig_opts o = {.title = "Front position (x_front - R0)/R0 against time"};
@@ -625,6 +652,7 @@ gf_status gf_post_campaign_report(gf_ctx *ctx, const char *campaign_dir, const g
                     rows[i].error);
     }
     count_rows(rows, n, rep);
+    gf_silo_campaign_fits(rows, n); /* the laws over the campaign's silo runs, in their rows */
     st = gf_summary_write(ctx, campaign_dir, rows, n);
     if (st == GF_OK && opt->figures) {
         char p[1100];

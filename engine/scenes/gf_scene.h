@@ -18,6 +18,8 @@ enum {
     GF_NEED_PACKING = 1u << 3,   /* builds a packing at phi_initial */
 };
 
+#define GF_SCENE_MAINTAIN_EVERY 100
+
 typedef struct gf_param_info {
     const char *key;
     const char *unit;            /* udunits string, "1" for dimensionless */
@@ -42,6 +44,13 @@ typedef struct gf_scene_desc {
     gf_status (*diagnose)(gf_sim *sim, double *values);
     /* Non-zero when the scene's end condition holds (e.g. at rest). May be NULL. */
     int (*done)(gf_sim *sim);
+    /* Scene upkeep between steps, every GF_SCENE_MAINTAIN_EVERY steps of the
+     * clock in gf_sim_run (e.g. a silo's reinjection of the grains that left;
+     * a scene that moves grains calls gf_sim_grains_moved). May be NULL. */
+    gf_status (*maintain)(gf_sim *sim);
+    /* Consistency of the parameters together (each one's range is the table's):
+     * NULL when consistent, else the key at fault, with one line in why. May be NULL. */
+    const char *(*check)(const gf_run_spec *spec, char *why, size_t n);
     /* Achieved initial packing, for the phi_initial_measured / phi_initial_local
      * attributes (gf_nc_meta): call once right after gf_sim_create, before any
      * step (it measures the current state). NaN when not applicable. May be NULL. */
@@ -64,5 +73,8 @@ const gf_scene_desc *const *gf_scene_all(int *n);
 /* Fills absent scene parameters with defaults and checks every value is in
  * range and every key is known. Errors name the key and the range. */
 gf_status gf_scene_resolve_params(gf_ctx *ctx, gf_run_spec *spec);
+/* The same; on a consistency error (the scene's check) *bad_key names the key
+ * at fault, for a located message; NULL otherwise. */
+gf_status gf_scene_resolve_params_at(gf_ctx *ctx, gf_run_spec *spec, const char **bad_key);
 
 #endif

@@ -27,8 +27,12 @@ static const gf_param_info *find_param(const gf_scene_desc *d, const char *key)
     return NULL;
 }
 
-gf_status gf_scene_resolve_params(gf_ctx *ctx, gf_run_spec *spec)
+gf_status gf_scene_resolve_params(gf_ctx *ctx, gf_run_spec *spec) { return gf_scene_resolve_params_at(ctx, spec, NULL); }
+
+gf_status gf_scene_resolve_params_at(gf_ctx *ctx, gf_run_spec *spec, const char **bad_key)
 {
+    if (bad_key)
+        *bad_key = NULL;
     const gf_scene_desc *d = gf_scene_find(spec->scene);
     if (!d)
         return GF_FAIL(ctx, GF_ERR_CONFIG, "scene: unknown scene '%s'", spec->scene);
@@ -48,6 +52,13 @@ gf_status gf_scene_resolve_params(gf_ctx *ctx, gf_run_spec *spec)
             present |= strcmp(spec->scene_params[k].key, info->key) == 0;
         if (!present)
             GF_TRY(gf_run_spec_set_param(ctx, spec, info->key, info->def));
+    }
+    char why[256];
+    const char *key = d->check ? d->check(spec, why, sizeof why) : NULL;
+    if (key) {
+        if (bad_key)
+            *bad_key = key;
+        return GF_FAIL(ctx, GF_ERR_CONFIG, "scene %s: %s", d->name, why);
     }
     return GF_OK;
 }

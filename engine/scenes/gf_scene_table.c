@@ -14,6 +14,7 @@ extern const gf_scene_desc gf_scene_friction_clamp;
 extern const gf_scene_desc gf_scene_janssen;
 extern const gf_scene_desc gf_scene_settled_bed;
 extern const gf_scene_desc gf_scene_settling;
+extern const gf_scene_desc gf_scene_silo;
 
 /* --- rows (one per scene) --- */
 static const gf_scene_desc *const gf_scene_table[] = {
@@ -25,6 +26,7 @@ static const gf_scene_desc *const gf_scene_table[] = {
     &gf_scene_janssen,
     &gf_scene_settled_bed,
     &gf_scene_settling,
+    &gf_scene_silo,
 };
 
 const gf_scene_desc *const *gf_scene_all(int *n)

@@ -148,6 +148,26 @@ static gf_status check_grid_vs_groups(loader *L)
     return GF_OK;
 }
 
+/* The node that sets scene parameter key, for a located error: the
+ * variant's (dotted scene.key or nested), else the file's scene: or domain:
+ * map; fallback when the key was left to its default. */
+static const gf_cfg_node *scene_key_node(const loader *L, const gf_cfg_node *variant, const char *key,
+                                         const gf_cfg_node *fallback)
+{
+    char dotted[GF_NAME_LEN + 8];
+    snprintf(dotted, sizeof dotted, "scene.%s", key);
+    const gf_cfg_node *n = NULL;
+    if (variant && !(n = gf_cfg_get(variant, dotted))) {
+        const gf_cfg_node *sec = gf_cfg_get(variant, "scene");
+        n = sec && sec->kind == GF_CFG_MAP ? gf_cfg_get(sec, key) : NULL;
+    }
+    for (int k = 0; !n && k < 2; ++k) {
+        const gf_cfg_node *sec = gf_cfg_get(L->root, k ? "domain" : "scene");
+        n = sec && sec->kind == GF_CFG_MAP ? gf_cfg_get(sec, key) : NULL;
+    }
+    return n ? n : fallback;
+}
+
 /* One run: variant v, grid point k. */
 static gf_status build_run(loader *L, int v, int k, int index, gf_campaign_run *run)
 {
@@ -199,8 +219,9 @@ static gf_status build_run(loader *L, int v, int k, int index, gf_campaign_run *
                  run->label[0] ? "variant " : "", run->label);
     }
     st = gf_groups_map_apply(ctx, &run->spec);
-    if (st == GF_OK)
-        st = gf_scene_resolve_params(ctx, &run->spec);
+    const char *bad_key = NULL;
+    if (st == GF_OK && (st = gf_scene_resolve_params_at(ctx, &run->spec, &bad_key)) != GF_OK && bad_key)
+        at = scene_key_node(L, variant, bad_key, at);
     if (st == GF_OK)
         st = gf_groups_map_realised(ctx, &run->spec, &run->scales);
     if (st == GF_OK && (st = gf_run_spec_check_time_step(ctx, &run->spec)) != GF_OK) {

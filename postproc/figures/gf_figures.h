@@ -98,6 +98,12 @@ gf_status gf_fig_deposit_shape(gf_ctx *ctx, const char *path, const gf_fig_opts 
 gf_status gf_fig_runout(gf_ctx *ctx, const char *path, const gf_fig_opts *opt, int n_runs,
                         const double *aspect_ratio_a, const double *runout_norm, const gf_fig_regime *regime);
 
+/* Silo discharge (Djouwe Meffeja 2012 §3.4.2, Fig. 3.8): (Q sqrt(d/g))^(2/5)
+ * against the orifice size D/d, one marker per run, with the campaign's
+ * Beverloo line (k, C with phi = 0.5; NaN: not drawn) and the thesis' own
+ * (k = 1.47, C = 1.7). Linear axes. */
+gf_status gf_fig_beverloo(gf_ctx *ctx, const char *path, const gf_fig_opts *opt, int n_runs, const double *D_over_d,
+                          const double *Q_nd, double k, double C);
 /* One curve of a time series (borrowed). label may be NULL. */
 typedef struct gf_fig_series {
     const char *label;

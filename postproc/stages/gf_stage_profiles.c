@@ -21,12 +21,14 @@
  * averaged over the same frames, and R̄e* = St̄ / r (§4.2: St̄_c ≈ 40,
  * R̄e*_c ≈ 10). NaN for a dry run.
  * Writes post_profiles.nc (y_slab, u_grain, phi_grain, u_fluid).
+ * Scene silo: the velocity profiles across the orifice (stages/gf_silo_flow.h).
  */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "stages/gf_post_stats.h"
+#include "stages/gf_silo_flow.h"
 #include "stages/gf_stage_util.h"
 
 const gf_post_col gf_stage_profiles_cols[] = {
@@ -37,6 +39,11 @@ const gf_post_col gf_stage_profiles_cols[] = {
     {"n_profile_frames", 0, "1", "frames averaged for the profiles"},
     {"St_bar", 0, "1", "mean particle Stokes number rho_p <|u| D> / (9 eta_f) over the steady window"},
     {"Re_bar", 0, "1", "mean particle Reynolds number St_bar / r"},
+    /* scene silo (stages/gf_silo_flow.h) */
+    {"silo_b_z1_over_d", 0, "1", "silo: diffusion length b / d of the Gaussian v_y(x) at z = d"},
+    {"silo_b_z5_over_d", 0, "1", "silo: diffusion length b / d of the Gaussian v_y(x) at z = 5 d"},
+    {"silo_gauss_R2_min", 0, "1", "silo: smallest R^2 of the Gaussian fits at z >= 3 d"},
+    {"silo_b_decreasing", 0, "1", "silo: 1 when b(z) decreases from z = d up, else 0"},
     {NULL, 0, NULL, NULL}};
 
 #define NSLAB_MAX 4096
@@ -88,6 +95,8 @@ static gf_status fluid_profile(gf_ctx *ctx, const gf_stage_in *in, double t0, do
 
 gf_status gf_stage_profiles(gf_ctx *ctx, const gf_stage_in *in, const gf_stage_opts *opts, gf_stage_out *out)
 {
+    if (gf_stage_is_scene(in, "silo") && gf_stage_has_file(in, "particles.nc"))
+        return gf_silo_profiles(ctx, in, out);
     if (!gf_stage_is_scene(in, "avalanche") || !gf_stage_has_file(in, "particles.nc"))
         return GF_ERR_UNSUPPORTED;   /* avalanches only, and only when trajectories were written */
     /* steady window start */

@@ -7,7 +7,9 @@
 #include <string.h>
 
 const gf_stage_info gf_stage_table[] = {
-    {"flow_rate", 1, gf_stage_flow_rate, "diagnostics.nc: time, grain_flow_rate, fluid_flow_rate",
+    {"flow_rate", 2, gf_stage_flow_rate,
+     "diagnostics.nc: time, grain_flow_rate, fluid_flow_rate; silo: discharge_rate, discharge_mass_rate, "
+     "orifice_packing_fraction, fill_height",
      "summary row", gf_stage_flow_rate_cols},
     {"regime", 1, gf_stage_regime,
      "attributes (grains, fluid, geometry, scene_param_*); diagnostics.nc: grain_flow_rate, bed_height, "
@@ -19,9 +21,9 @@ const gf_stage_info gf_stage_table[] = {
      "summary row, post_deposit.nc", gf_stage_deposit_cols},
     {"pore_pressure", 1, gf_stage_pore_pressure, "probes.nc: station_name, x, y, excess_pore_pressure",
      "summary row, post_pore_pressure.nc", gf_stage_pore_pressure_cols},
-    {"profiles", 1, gf_stage_profiles,
-     "particles.nc: x, y, z, u, v, w, radius, glued; diagnostics.nc: grain_flow_rate; fields.nc: x, y, z, "
-     "fluid_fraction, u_fluid; attributes: grains, fluid",
+    {"profiles", 2, gf_stage_profiles,
+     "particles.nc: x, y, z, u, v, w, radius, glued; diagnostics.nc: grain_flow_rate (silo: discharge_rate); "
+     "fields.nc: x, y, z, fluid_fraction, u_fluid; attributes: grains, fluid (silo: scene_param_width_*)",
      "summary row, post_profiles.nc", gf_stage_profiles_cols},
     {"energy", 1, gf_stage_energy, "diagnostics.nc: ecx_per_grain; particles.nc: radius, glued",
      "summary row, post_energy.nc", gf_stage_energy_cols},
