@@ -222,7 +222,7 @@ static void read_identity(gf_post_row *row)
                                              {"phi_initial_local", "phi_initial_local"}};
         for (size_t m = 0; m < sizeof map / sizeof map[0]; ++m)
             gf_post_row_set(row, map[m][1], gf_ncr_att_double_or(&f, map[m][0], NAN));
-        if (strcmp(row->scene, "column_collapse") == 0) {
+        if (gf_ncr_att_double_or(&f, "column_length_m", 0.0) > 0.0) { /* a released column */
             double R0, H0;
             gf_stage_column(&f, &R0, &H0);
             gf_post_row_set(row, "R0_m", R0);
@@ -457,7 +457,7 @@ static gf_status silo_figure(gf_ctx *ctx, const char *fig, const gf_post_row *ro
     double *Q = D + n;
     int m = 0;
     for (int i = 0; i < n; ++i)
-        if (strcmp(rows[i].scene, "silo") == 0 && isfinite(gf_post_row_get(&rows[i], "silo_Q_nd"))) {
+        if (isfinite(gf_post_row_get(&rows[i], "silo_Q_nd"))) {
             D[m] = gf_post_row_get(&rows[i], "silo_D_over_d");
             Q[m++] = gf_post_row_get(&rows[i], "silo_Q_nd");
             k = gf_post_row_get(&rows[i], "beverloo_k"), C = gf_post_row_get(&rows[i], "beverloo_C");
@@ -500,7 +500,7 @@ static gf_status write_figures(gf_ctx *ctx, const char *dir, const gf_post_row *
     for (int v = 0; v < variants.n; ++v)
         variant_names[v] = variants.names[v];
     gf_fig_opts by_variant = {.n_variants = variants.n, .variant = variant, .variant_names = variant_names};
-    int n_aval = 0, n_coll = 0, n_front = 0, n_pb = 0;
+    int n_regime = 0, n_coll = 0, n_front = 0, n_pb = 0; /* rows that hold a regime, a run-out */
     for (int i = 0; i < n; ++i) {
         const gf_post_row *w = &rows[i];
         St[i] = row_or(w, "St", "St_groups");
@@ -510,8 +510,8 @@ static gf_status write_figures(gf_ctx *ctx, const char *dir, const gf_post_row *
         ro[i] = gf_post_row_get(w, "runout_norm");
         reg[i] = gf_fig_regime_from_name(gf_post_row_get_text(w, "regime"));
         shp[i] = gf_fig_shape_from_name(gf_post_row_get_text(w, "deposit_shape"));
-        n_aval += strcmp(w->scene, "avalanche") == 0;
-        n_coll += strcmp(w->scene, "column_collapse") == 0;
+        n_regime += reg[i] != GF_FIG_REGIME_UNDETERMINED || isfinite(gf_post_row_get(w, "T_s"));
+        n_coll += isfinite(ro[i]);
         size_t m;
         if (read_series(w->run_dir, "post_deposit.nc", "front_position_norm", 0, &bufs[4 * i], &bufs[4 * i + 1], &m))
             front[n_front++] = (gf_fig_series){label[i], (int)m, bufs[4 * i], bufs[4 * i + 1]};
@@ -521,7 +521,7 @@ static gf_status write_figures(gf_ctx *ctx, const char *dir, const gf_post_row *
     }
     qsort(front, (size_t)n_front, sizeof *front, by_label);
     qsort(pb, (size_t)n_pb, sizeof *pb, by_label);
-    if (n_aval > 0 || n_coll == 0) {
+    if (n_regime > 0) {
         snprintf(p, sizeof p, "%s/regime_diagram.svg", fig);
         st = gf_fig_regime_diagram(ctx, p, NULL, n, St, r, reg);
     }

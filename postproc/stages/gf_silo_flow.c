@@ -161,7 +161,7 @@ void gf_silo_campaign_fits(gf_post_row *rows, int n_rows)
     int n = 0;
     for (int i = 0; i < n_rows; ++i) {
         const gf_post_row *r = &rows[i];
-        if (strcmp(r->scene, "silo") != 0 || !isfinite(gf_post_row_get(r, "silo_Q_nd")))
+        if (!isfinite(gf_post_row_get(r, "silo_Q_nd")))
             continue;
         idx[n] = i;
         D[n] = gf_post_row_get(r, "silo_D_over_d"), Qnd[n] = gf_post_row_get(r, "silo_Q_nd");

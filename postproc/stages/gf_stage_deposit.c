@@ -110,9 +110,8 @@ static int heap_in_diagnostics(const gf_stage_in *in)
 
 gf_status gf_stage_deposit(gf_ctx *ctx, const gf_stage_in *in, const gf_stage_opts *opts, gf_stage_out *out)
 {
-    const int collapse = gf_stage_is_scene(in, "column_collapse");
-    if (!collapse)
-        return GF_ERR_UNSUPPORTED;   /* only a collapse leaves a heap against a back wall */
+    if (!gf_stage_is_column(in))
+        return GF_ERR_UNSUPPORTED;   /* only a released column leaves a heap against a back wall */
     if (!gf_stage_has_file(in, "particles.nc") && heap_in_diagnostics(in))
         return deposit_from_diagnostics(ctx, in, out);
     gf_ncr p;

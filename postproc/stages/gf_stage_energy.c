@@ -20,8 +20,7 @@ const gf_post_col gf_stage_energy_cols[] = {
 
 gf_status gf_stage_energy(gf_ctx *ctx, const gf_stage_in *in, const gf_stage_opts *opts, gf_stage_out *out)
 {
-    const int known = gf_stage_is_scene(in, "avalanche") || gf_stage_is_scene(in, "column_collapse");
-    if (!known && !gf_stage_has_file(in, "diagnostics.nc"))
+    if (!gf_stage_has_file(in, "diagnostics.nc"))
         return GF_ERR_UNSUPPORTED;
     gf_ncr d;
     GF_TRY(gf_stage_open(ctx, in, "diagnostics.nc", &d));

@@ -54,15 +54,14 @@ const gf_post_col gf_stage_flow_rate_cols[] = {
 gf_status gf_stage_flow_rate(gf_ctx *ctx, const gf_stage_in *in, const gf_stage_opts *opts, gf_stage_out *out)
 {
     (void)opts;
-    if (gf_stage_is_scene(in, "silo"))
-        return gf_silo_flow_rate(ctx, in, out);
-    const int avalanche = gf_stage_is_scene(in, "avalanche");
-    /* a flowing layer in a periodic cell: avalanches, or an unnamed scene that wrote Q_g */
-    if (!avalanche && ((in->scene && in->scene[0]) || !gf_stage_has_file(in, "diagnostics.nc")))
+    if (gf_stage_has_var(in, "diagnostics.nc", "discharge_rate"))
+        return gf_silo_flow_rate(ctx, in, out);   /* a discharge through an orifice */
+    /* a flowing layer in a periodic cell: whatever scene wrote Q_g */
+    if (!gf_stage_has_file(in, "diagnostics.nc"))
         return GF_ERR_UNSUPPORTED;
     gf_ncr f;
     GF_TRY(gf_stage_open(ctx, in, "diagnostics.nc", &f));
-    if (!avalanche && !gf_ncr_has_var(&f, "grain_flow_rate")) {
+    if (!gf_ncr_has_var(&f, "grain_flow_rate")) {
         gf_ncr_close(&f);
         return GF_ERR_UNSUPPORTED;   /* not a flowing-layer scene */
     }

@@ -105,7 +105,7 @@ gf_status gf_stage_pore_pressure(gf_ctx *ctx, const gf_stage_in *in, const gf_st
     if (st == GF_OK) {
         for (size_t s = 0; s < ns; ++s)
             trace(t, P + s * nt, nt, &ts[s]);
-        if (gf_stage_is_scene(in, "column_collapse") && D > 0.0)
+        if (gf_stage_is_column(in) && D > 0.0)
             for (size_t s = 1; s < ns; ++s)
                 if (fabs(xs[s] - 13.0 * D) < fabs(xs[main_st] - 13.0 * D))
                     main_st = s;

@@ -95,10 +95,12 @@ static gf_status fluid_profile(gf_ctx *ctx, const gf_stage_in *in, double t0, do
 
 gf_status gf_stage_profiles(gf_ctx *ctx, const gf_stage_in *in, const gf_stage_opts *opts, gf_stage_out *out)
 {
-    if (gf_stage_is_scene(in, "silo") && gf_stage_has_file(in, "particles.nc"))
-        return gf_silo_profiles(ctx, in, out);
-    if (!gf_stage_is_scene(in, "avalanche") || !gf_stage_has_file(in, "particles.nc"))
-        return GF_ERR_UNSUPPORTED;   /* avalanches only, and only when trajectories were written */
+    if (!gf_stage_has_file(in, "particles.nc"))
+        return GF_ERR_UNSUPPORTED;   /* only when trajectories were written */
+    if (gf_stage_has_var(in, "diagnostics.nc", "discharge_rate"))
+        return gf_silo_profiles(ctx, in, out);   /* a discharge through an orifice */
+    if (!gf_stage_has_var(in, "diagnostics.nc", "grain_flow_rate"))
+        return GF_ERR_UNSUPPORTED;   /* a flowing layer (its steady window) */
     /* steady window start */
     double t0 = NAN;
     if (gf_stage_has_file(in, "diagnostics.nc")) {

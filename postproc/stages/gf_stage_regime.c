@@ -191,8 +191,7 @@ static gf_status collapse(gf_ctx *ctx, const gf_ncr *d, const gf_groups_input *g
 gf_status gf_stage_regime(gf_ctx *ctx, const gf_stage_in *in, const gf_stage_opts *opts, gf_stage_out *out)
 {
     (void)opts;
-    if (!gf_stage_has_file(in, "diagnostics.nc") && !gf_stage_is_scene(in, "avalanche") &&
-        !gf_stage_is_scene(in, "column_collapse"))
+    if (!gf_stage_has_file(in, "diagnostics.nc"))
         return GF_ERR_UNSUPPORTED;
     gf_ncr d;
     GF_TRY(gf_stage_open(ctx, in, "diagnostics.nc", &d));
@@ -207,9 +206,9 @@ gf_status gf_stage_regime(gf_ctx *ctx, const gf_stage_in *in, const gf_stage_opt
         gf_post_row_set(row, "Tvisq_s", sc.t_visq_s);
         gf_post_row_set(row, "St_groups", sc.stokes_St);
         gf_post_row_set(row, "r_groups", sc.density_ratio_r);
-        if (gf_stage_is_scene(in, "avalanche") || gf_ncr_has_var(&d, "grain_flow_rate"))
+        if (gf_ncr_has_var(&d, "grain_flow_rate"))
             st = avalanche(ctx, in, &d, &sc, row);
-        else if (gf_stage_is_scene(in, "column_collapse") || gf_ncr_has_var(&d, "front_position"))
+        else if (gf_ncr_has_var(&d, "front_position"))
             st = collapse(ctx, &d, &gi, &sc, row);
         else
             st = GF_ERR_UNSUPPORTED;

@@ -1,6 +1,9 @@
 /*
  * The table of post-processing stages (docs/architecture.md): a new stage is one file
  * and one row here. Order matters only for the column order of the summary.
+ * A stage applies to a run when the run's files hold what its `reads` names (the
+ * first variable or attribute listed selects): never by the scene's name, so a
+ * new scene that writes those variables is post-processed as it stands.
  */
 #include "stages/gf_stage.h"
 
@@ -8,8 +11,8 @@
 
 const gf_stage_info gf_stage_table[] = {
     {"flow_rate", 2, gf_stage_flow_rate,
-     "diagnostics.nc: time, grain_flow_rate, fluid_flow_rate; silo: discharge_rate, discharge_mass_rate, "
-     "orifice_packing_fraction, fill_height",
+     "diagnostics.nc: grain_flow_rate (a flowing layer), time, fluid_flow_rate; or discharge_rate (a discharge "
+     "through an orifice), discharge_mass_rate, orifice_packing_fraction, fill_height",
      "summary row", gf_stage_flow_rate_cols},
     {"regime", 1, gf_stage_regime,
      "attributes (grains, fluid, geometry, scene_param_*); diagnostics.nc: grain_flow_rate, bed_height, "
@@ -17,12 +20,14 @@ const gf_stage_info gf_stage_table[] = {
      "radius, glued",
      "summary row", gf_stage_regime_cols},
     {"deposit", 1, gf_stage_deposit,
-     "particles.nc: x, y, radius, glued (all frames); diagnostics.nc: front_position (single-frame runs)",
+     "attribute column_length_m > 0 (a released column); particles.nc: x, y, radius, glued (all frames); "
+     "diagnostics.nc: front_position, deposit_height (continuum runs: stages = continuum)",
      "summary row, post_deposit.nc", gf_stage_deposit_cols},
-    {"pore_pressure", 1, gf_stage_pore_pressure, "probes.nc: station_name, x, y, excess_pore_pressure",
+    {"pore_pressure", 1, gf_stage_pore_pressure,
+     "probes.nc: excess_pore_pressure, station_name, x, y; attribute column_length_m (the gauge at 13/16 R0)",
      "summary row, post_pore_pressure.nc", gf_stage_pore_pressure_cols},
     {"profiles", 2, gf_stage_profiles,
-     "particles.nc: x, y, z, u, v, w, radius, glued; diagnostics.nc: grain_flow_rate (silo: discharge_rate); "
+     "particles.nc: x, y, z, u, v, w, radius, glued; diagnostics.nc: grain_flow_rate (or discharge_rate); "
      "fields.nc: x, y, z, fluid_fraction, u_fluid; attributes: grains, fluid (silo: scene_param_width_*)",
      "summary row, post_profiles.nc", gf_stage_profiles_cols},
     {"energy", 1, gf_stage_energy, "diagnostics.nc: ecx_per_grain; particles.nc: radius, glued",

@@ -32,9 +32,34 @@ gf_status gf_stage_open(gf_ctx *ctx, const gf_stage_in *in, const char *name, gf
     return gf_ncr_open(ctx, p, f);
 }
 
-int gf_stage_is_scene(const gf_stage_in *in, const char *scene)
+int gf_stage_has_var(const gf_stage_in *in, const char *file, const char *var)
 {
-    return in->scene && strcmp(in->scene, scene) == 0;
+    if (!gf_stage_has_file(in, file))
+        return 0;
+    gf_ctx c = {0};
+    gf_ncr f;
+    if (gf_stage_open(&c, in, file, &f) != GF_OK)
+        return 0;
+    const int has = gf_ncr_has_var(&f, var);
+    gf_ncr_close(&f);
+    return has;
+}
+
+int gf_stage_is_column(const gf_stage_in *in)
+{
+    static const char *const files[] = {"diagnostics.nc", "particles.nc", "probes.nc"};
+    for (size_t k = 0; k < sizeof files / sizeof files[0]; ++k) {
+        if (!gf_stage_has_file(in, files[k]))
+            continue;
+        gf_ctx c = {0};
+        gf_ncr f;
+        if (gf_stage_open(&c, in, files[k], &f) != GF_OK)
+            continue;
+        const double R0 = gf_ncr_att_double_or(&f, "column_length_m", NAN);
+        gf_ncr_close(&f);
+        return R0 > 0.0;   /* every file of a run carries the same attributes */
+    }
+    return 0;
 }
 
 void gf_stage_column(const gf_ncr *f, double *R0_m, double *H0_m)
@@ -69,11 +94,11 @@ gf_status gf_stage_scales(gf_ctx *ctx, const gf_ncr *f, const gf_stage_in *in, g
     if (!isfinite(gi->viscosity_Pa_s))
         gi->viscosity_Pa_s = 0.0;
     const double theta = gf_ncr_att_double_or(f, "incline_deg", 0.0);
-    gi->slope_sin = (!gf_stage_is_scene(in, "column_collapse") && isfinite(theta) && theta > 0.0)
-                        ? sin(theta * M_PI / 180.0)
-                        : 1.0;
+    /* a column falls vertically; a layer on an incline feels g sin(theta) */
+    const int column = gf_ncr_att_double_or(f, "column_length_m", 0.0) > 0.0;
+    gi->slope_sin = (!column && isfinite(theta) && theta > 0.0) ? sin(theta * M_PI / 180.0) : 1.0;
     double R0 = 0.0, H0 = 0.0;
-    if (gf_stage_is_scene(in, "column_collapse"))
+    if (column)
         gf_stage_column(f, &R0, &H0);
     gi->column_height_m = isfinite(H0) ? H0 : 0.0;
     gi->column_length_m = isfinite(R0) ? R0 : 0.0;

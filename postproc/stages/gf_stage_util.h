@@ -20,8 +20,15 @@ int gf_stage_has_file(const gf_stage_in *in, const char *name);
  * run did not write it: the stage's columns stay empty, the reason in the
  * row's notes); a file that does not read is GF_ERR_IO. */
 gf_status gf_stage_open(gf_ctx *ctx, const gf_stage_in *in, const char *name, gf_ncr *f);
-/* Non-zero when the run is the scene named (in->scene). */
-int gf_stage_is_scene(const gf_stage_in *in, const char *scene);
+/* What a run's files hold, which is how a stage chooses the runs it applies to
+ * (the stage table's `reads` column), never the scene's name: a new scene that
+ * writes the same variables is post-processed without editing the stages.
+ * Non-zero when <run>/file exists and holds the variable var. */
+int gf_stage_has_var(const gf_stage_in *in, const char *file, const char *var);
+/* Non-zero when the run is a column released against a back wall: its files
+ * (diagnostics.nc, else particles.nc, else probes.nc) name a column length
+ * R0 > 0 (column_length_m). */
+int gf_stage_is_column(const gf_stage_in *in);
 
 /* Groups and time scales of the run from its global attributes (docs/output.md):
  * grain_diameter_m, grain_density_kg_m3, fluid_density_kg_m3, fluid_viscosity_Pa_s,
