@@ -139,7 +139,7 @@ struct gf_sim {
     int forces_valid;           /* F(t) in the store matches x(t) */
     /* fluid */
     int immersed;
-    char fluid_reason[256];     /* why this fluid tier (fluid_model_reason attribute) */
+    char fluid_reason[384];     /* why this fluid tier (fluid_model_reason attribute) */
     gf_coupling *coupling;
     int n_substeps;             /* DEM steps per fluid step, re-chosen at every fluid step */
     long next_fluid_step;       /* step index of the next fluid step */
