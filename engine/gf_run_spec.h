@@ -56,6 +56,7 @@ typedef struct gf_fluid_spec {
     int lubrication;          /* Brenner normal lubrication on/off */
     double roughness_over_R;  /* eta_e / R, seed 1e-4 .. 4e-4 */
     double lub_cutoff_over_R; /* lubrication active for 0 <= gap <= cutoff R, seed 1/2 */
+    double d_over_dx;         /* resolved tier: grid cells per grain diameter D/dx (8-20); 0: 16 */
 } gf_fluid_spec;
 
 typedef struct gf_output_spec {

@@ -11,10 +11,12 @@
 
 /* --- declarations (one per tier) --- */
 extern const gf_coupling_tier gf_coupling_tier_unresolved;
+extern const gf_coupling_tier gf_coupling_tier_resolved;
 
 /* --- rows (one per tier) --- */
 static const gf_coupling_tier *const gf_coupling_tier_table[] = {
     &gf_coupling_tier_unresolved,
+    &gf_coupling_tier_resolved,
 };
 
 const gf_coupling_tier *const *gf_coupling_tier_all(int *n)
