@@ -94,9 +94,9 @@ static gf_status resolved_check(gf_ctx *ctx, const gf_run_spec *spec)
     if (!(fs->density_kg_m3 > 0.0) || !(fs->viscosity_Pa_s > 0.0))
         return GF_FAIL(ctx, GF_ERR_CONFIG, "fluid: density (%g kg/m3) and viscosity (%g Pa s) must be > 0 for the "
                        "resolved tier", fs->density_kg_m3, fs->viscosity_Pa_s);
-    if (!(n >= RESOLVED_MIN_D_OVER_DX))
+    if (!(n >= RESOLVED_MIN_D_OVER_DX) || n > 64.0)
         return GF_FAIL(ctx, GF_ERR_CONFIG, "fluid.d_over_dx = %g: the resolved tier needs D/dx >= %g (the solid "
-                       "fraction's shell is ~3 cells; Izard 2014 uses 10-40)", n, RESOLVED_MIN_D_OVER_DX);
+                       "fraction's shell is ~3 cells; Izard 2014 uses 10-40) and at most 64", n, RESOLVED_MIN_D_OVER_DX);
     double r = spec->grains.density_kg_m3 / fs->density_kg_m3;
     if (!(r >= RESOLVED_MIN_DENSITY_RATIO))
         return GF_FAIL(ctx, GF_ERR_CONFIG, "grains.density_kg_m3 / fluid.density_kg_m3 = %.4g: the resolved tier's "
@@ -104,6 +104,19 @@ static gf_status resolved_check(gf_ctx *ctx, const gf_run_spec *spec)
                        "§3.1.3.1)", r, RESOLVED_MIN_DENSITY_RATIO);
     if (!(fs->cfl > 0.0 && fs->cfl <= 1.0))
         return GF_FAIL(ctx, GF_ERR_CONFIG, "fluid.cfl = %g must be in (0, 1]", fs->cfl);
+    /* the fluid step is a whole number (>= 1) of DEM steps: a DEM step beyond the fluid's limits would
+     * force a fluid step that breaks them */
+    double D = spec->grains.diameter_m, h = D / n, nu = fs->viscosity_Pa_s / fs->density_kg_m3;
+    double dt_dem = gf_run_spec_dt_s(spec);
+    double dt_visc = RESOLVED_VISCOUS_LIMIT * h * h / nu;
+    double dt_adv = spec->gravity_m_s2 > 0.0 ? h / sqrt(spec->gravity_m_s2 * D) : INFINITY;
+    if (dt_dem > dt_visc)
+        return GF_FAIL(ctx, GF_ERR_NUMERIC, "contact.dt_over_tc: the DEM step %.3g s exceeds the resolved fluid "
+                       "step's viscous limit nu dt/dx^2 <= %g, dt <= %.3g s at D/dx = %g (shorten t_c or dt/t_c, or "
+                       "coarsen the grid)", dt_dem, RESOLVED_VISCOUS_LIMIT, dt_visc, n);
+    if (dt_dem > dt_adv)
+        return GF_FAIL(ctx, GF_ERR_NUMERIC, "contact.dt_over_tc: the DEM step %.3g s exceeds the resolved fluid "
+                       "step's advective limit sqrt(gD) dt/dx <= 1, dt <= %.3g s at D/dx = %g", dt_dem, dt_adv, n);
     return GF_OK;
 }
 

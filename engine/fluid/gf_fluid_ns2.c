@@ -12,28 +12,73 @@
                 for (size_t fi = gf_grid_face(g, a, i, j, k), once_ = 1; once_; once_ = 0) \
                     if (gf_grid_face_free(g, a, (a) == 0 ? i : (a) == 1 ? j : k))
 
+/* 1 when face (i,j,k) of component a has all its stencil neighbours inside the arrays, no boundary rule
+ * needed: the fast path of the loops below (the generic gf_grid calls handle the rest, the same values). */
+static int interior_face(const gf_grid *g, int a, int i, int j, int k)
+{
+    const int idx[3] = {i, j, k};
+    for (int d = 0; d < 3; ++d) {
+        if (d == a ? (idx[d] < 1 || idx[d] > g->n[d] - 1) : (idx[d] < 1 || idx[d] > g->n[d] - 2))
+            return 0;
+    }
+    return 1;
+}
+
+static double advection_generic(const gf_grid *g, const double *const uu[3], int a, size_t fi, int i, int j, int k)
+{
+    const double *u = uu[a];
+    double adv = 0.0;
+    for (int d = 0; d < 3; ++d) {
+        if (g->n[d] == 1 && g->periodic[d])
+            continue;
+        double vd = d == a ? u[fi] : gf_fluid_advecting_velocity(g, uu, a, d, i, j, k);
+        double up = gf_grid_face_neighbour(g, u, a, i, j, k, d, +1);
+        double dn = gf_grid_face_neighbour(g, u, a, i, j, k, d, -1);
+        adv += vd * (up - dn) / (2.0 * g->h_m[d]);
+    }
+    return adv;
+}
+
+/* Interior face: strides of the face arrays instead of the boundary-aware neighbour calls. */
+static double advection_interior(const gf_grid *g, const double *const uu[3], int a, size_t fi, int i, int j, int k)
+{
+    const double *u = uu[a];
+    const size_t s[3] = {1, (size_t)g->nf[a][0], (size_t)g->nf[a][0] * (size_t)g->nf[a][1]};
+    double adv = 0.0;
+    for (int d = 0; d < 3; ++d) {
+        double vd = u[fi];
+        if (d != a) { /* component d at this face: the four d-faces around it (cells m-1, m along a) */
+            const size_t sd[3] = {1, (size_t)g->nf[d][0], (size_t)g->nf[d][0] * (size_t)g->nf[d][1]};
+            size_t q = gf_grid_face(g, d, i, j, k);
+            vd = 0.25 * (uu[d][q] + uu[d][q + sd[d]] + uu[d][q - sd[a]] + uu[d][q - sd[a] + sd[d]]);
+        }
+        adv += vd * (u[fi + s[d]] - u[fi - s[d]]) / (2.0 * g->h_m[d]);
+    }
+    return adv;
+}
+
 void gf_fluid_ns2_advection(const gf_fluid *f, double *const A[3])
 {
     const gf_grid *g = &f->grid;
     const double *const uu[3] = {f->u[0], f->u[1], f->u[2]};
     for (int a = 0; a < 3; ++a) {
-        const double *u = f->u[a];
         memset(A[a], 0, g->n_faces[a] * sizeof(double));
         FOR_FREE_FACES(g, a, fi, i, j, k)
-        {
-            double adv = 0.0;
-            for (int d = 0; d < 3; ++d) {
-                if (g->n[d] == 1 && g->periodic[d])
-                    continue;
-                double vd = d == a ? u[fi] : gf_fluid_advecting_velocity(g, uu, a, d, i, j, k);
-                double up = gf_grid_face_neighbour(g, u, a, i, j, k, d, +1);
-                double dn = gf_grid_face_neighbour(g, u, a, i, j, k, d, -1);
-                adv += vd * (up - dn) / (2.0 * g->h_m[d]);
-            }
-            A[a][fi] = -adv;
-        }
+        A[a][fi] = -(interior_face(g, a, i, j, k) ? advection_interior(g, uu, a, fi, i, j, k)
+                                                   : advection_generic(g, uu, a, fi, i, j, k));
         gf_grid_sync_periodic(g, a, A[a]);
     }
+}
+
+static double laplacian(const gf_grid *g, const double *u, int a, size_t fi, int i, int j, int k)
+{
+    if (!interior_face(g, a, i, j, k))
+        return gf_grid_face_laplacian(g, u, a, i, j, k);
+    const size_t s[3] = {1, (size_t)g->nf[a][0], (size_t)g->nf[a][0] * (size_t)g->nf[a][1]};
+    double l = 0.0;
+    for (int d = 0; d < 3; ++d)
+        l += (u[fi + s[d]] - 2.0 * u[fi] + u[fi - s[d]]) / (g->h_m[d] * g->h_m[d]);
+    return l;
 }
 
 static double pressure_gradient(const gf_grid *g, const double *p, int a, int i, int j, int k)
@@ -53,7 +98,7 @@ void gf_fluid_ns2_rates(const gf_fluid *f, const double *const A[3], const doubl
         FOR_FREE_FACES(g, a, fi, i, j, k)
         {
             double adv = 1.5 * A[a][fi] - 0.5 * A_old[a][fi];
-            r[a][fi] = adv + nu * gf_grid_face_laplacian(g, f->u[a], a, i, j, k) -
+            r[a][fi] = adv + nu * laplacian(g, f->u[a], a, fi, i, j, k) -
                        pressure_gradient(g, f->p_Pa, a, i, j, k) / rho;
         }
         gf_grid_sync_periodic(g, a, r[a]);

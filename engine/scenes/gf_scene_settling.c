@@ -7,11 +7,7 @@
  *  mode 1, homogeneous suspension: grains at solid fraction phi_suspension on a
  *    jittered simple cubic lattice filling a periodic cube (Richardson & Zaki
  *    1954 hindered settling, U/U_t = (1 - phi)^4.65 at low Re).
- * walls = 1 (single sphere only): a closed box of box_over_D x height_over_D x
- *    box_over_D with free-slip walls, the sphere released at rest
- *    release_depth_over_D below the top (5 radii in Izard 2014 §2.2.3): the
- *    resolved tier's settling validation (docs/resolved.md).
- * Axes: y vertical (docs/output.md), all three axes periodic unless walls. With periodic
+ * Axes: y vertical (docs/output.md), all three axes periodic. With periodic
  * gravity and no glued grains the coupling applies the mean pressure
  * gradient that carries the excess weight, so the mixture's momentum stays
  * zero, as in a tank whose bottom is far away (gf_coupling_unresolved.c).
@@ -24,17 +20,12 @@
  */
 #include <math.h>
 
-#include "coupling/gf_coupling.h"
 #include "scenes/gf_scene.h"
 
 static const gf_param_info settling_params[] = {
     {"mode", "1", 1.0, 0.0, 1.0, "0: single sphere; 1: homogeneous suspension"},
     {"box_over_D", "1", 16.0, 4.0, 1000.0, "periodic cube edge / D (the suspension rounds it to whole lattice cells)"},
     {"phi_suspension", "1", 0.2, 0.001, 0.5, "solid fraction of the suspension (mode 1)"},
-    {"walls", "1", 0.0, 0.0, 1.0, "1: single sphere in a closed box with free-slip walls (Izard 2014 §2.2.3), released "
-     "release_depth_over_D below the top; 0: periodic"},
-    {"height_over_D", "1", 0.0, 0.0, 1000.0, "box height / D with walls (0: box_over_D)"},
-    {"release_depth_over_D", "1", 2.5, 0.5, 1000.0, "depth of the sphere's centre below the top wall / D (walls)"},
 };
 
 static const gf_var_info settling_diag[] = {
@@ -42,28 +33,6 @@ static const gf_var_info settling_diag[] = {
     {"settling_velocity", "m s-1", "grain velocity relative to the zero-volume-flux frame (positive downwards)", NULL},
     {"settling_velocity_ratio", "1", "settling velocity over the Stokes velocity", NULL},
 };
-
-/* One sphere in a closed box with free-slip walls, centred across, release_depth_over_D below the top. */
-static gf_status closed_box_build(gf_sim *sim, const gf_run_spec *spec, double L, const double grav[3])
-{
-    double D = spec->grains.diameter_m;
-    double H = gf_run_spec_param(spec, "height_over_D", 0.0) * D;
-    if (!(H > 0.0))
-        H = L;
-    double depth = gf_run_spec_param(spec, "release_depth_over_D", 2.5) * D;
-    if (depth > H - D)
-        return GF_FAIL(gf_sim_ctx(sim), GF_ERR_CONFIG, "settling: release_depth_over_D = %g does not fit a box %g D high",
-                       depth / D, H / D);
-    double lo[3] = {0, 0, 0}, hi[3] = {L, H, L};
-    int periodic[3] = {0, 0, 0};
-    GF_TRY(gf_sim_set_box(sim, lo, hi, periodic));
-    GF_TRY(gf_sim_set_gravity(sim, grav));
-    for (int a = 0; a < 3; ++a)
-        for (int side = 0; side < 2; ++side)
-            GF_TRY(gf_sim_set_fluid_bc(sim, a, side, GF_BC_FREE_SLIP));
-    return gf_particles_add(gf_sim_ctx(sim), gf_sim_particles(sim), 0.5 * L, H - depth, 0.5 * L, 0.5 * D,
-                            spec->grains.density_kg_m3, 0, NULL);
-}
 
 static gf_status settling_build(gf_sim *sim, const gf_run_spec *spec)
 {
@@ -83,10 +52,7 @@ static gf_status settling_build(gf_sim *sim, const gf_run_spec *spec)
                            L / D, phi);
         L = n * a;
     }
-    double grav[3] = {0, -spec->gravity_m_s2, 0};
-    if (!suspension && gf_run_spec_param(spec, "walls", 0.0) > 0.5)
-        return closed_box_build(sim, spec, L, grav);
-    double lo[3] = {0, 0, 0}, hi[3] = {L, L, L};
+    double lo[3] = {0, 0, 0}, hi[3] = {L, L, L}, grav[3] = {0, -spec->gravity_m_s2, 0};
     int periodic[3] = {1, 1, 1};
     GF_TRY(gf_sim_set_box(sim, lo, hi, periodic));
     GF_TRY(gf_sim_set_gravity(sim, grav));
