@@ -15,10 +15,15 @@
  * force). The terminal speed is the largest speed reached (the box's floor
  * then slows the sphere down).
  *
- * Usage: resolved_settling [dx=D/dx] [box=W/D] [height=H/D] [end=t sqrt(g/D)] [cfl=c] [check=fast|full|none]
- *   check=fast: D/dx = 8 in a 5 D x 10 D box (the default suite): the early
- *     acceleration within 5 % of (2/3) g, and the terminal speed within 20 % of
- *     1.24 sqrt(gD) (the box and the grid both lower it: docs/resolved.md);
+ * Usage: resolved_settling [dx=D/dx] [box=W/D] [height=H/D] [end=t sqrt(g/D)] [cfl=c]
+ *                          [early_dx=] [early_box=] [early_height=] [check=fast|full|none]
+ *   check=fast (the default suite, ~10 s of CPU): the early phase at D/dx = 12
+ *     in a 4 D x 6 D box, the acceleration within 5 % of (2/3) g (the smoothed
+ *     shell adds pi^2 a^2/R^2 of the volume to the added mass: -8 % at
+ *     D/dx = 8, -4.4 % at 12, -2.4 % at 16); the fall at D/dx = 8 in a
+ *     4 D x 12 D box to t = 8 sqrt(D/g): the force balance F_h = -m g of the
+ *     terminal state within 2 %, and u_T within 25 % of 1.24 sqrt(gD) (the
+ *     4 D box alone lowers it by ~20 %, docs/resolved.md);
  *   check=full: the early acceleration within 5 %, u_T and Re_T within 3 %.
  * Prints the history and one summary line.
  */
@@ -34,6 +39,7 @@
 
 typedef struct args {
     double dx, box, height, end, cfl;
+    double early_dx, early_box, early_height; /* the early phase's grid and box (0: those of the run) */
     char check[16];
 } args;
 
@@ -57,6 +63,12 @@ static void parse(int argc, char **argv, args *a)
             a->end = atof(v);
         else if (!strcmp(k, "cfl"))
             a->cfl = atof(v);
+        else if (!strcmp(k, "early_dx"))
+            a->early_dx = atof(v);
+        else if (!strcmp(k, "early_box"))
+            a->early_box = atof(v);
+        else if (!strcmp(k, "early_height"))
+            a->early_height = atof(v);
         else if (!strcmp(k, "check"))
             snprintf(a->check, sizeof a->check, "%s", v);
     }
@@ -175,7 +187,11 @@ int main(int argc, char **argv)
      * first 0.15 sqrt(D/g); the start-up transient (the grain falls freely over the first fluid step) is gone
      * after ten steps */
     printf("# early phase\n# t sqrt(g/D)   u/sqrt(gD)   y/D   F_h/(m g)\n");
-    GF_CHECK(run(&a, 0.002 * a.dx, 0.15, 0.002, &early) == GF_OK);
+    args ea = a;
+    ea.dx = a.early_dx > 0.0 ? a.early_dx : a.dx;
+    ea.box = a.early_box > 0.0 ? a.early_box : a.box;
+    ea.height = a.early_height > 0.0 ? a.early_height : a.height;
+    GF_CHECK(run(&ea, 0.002 * ea.dx, 0.15, 0.002, &early) == GF_OK);
     double c0 = early_force(&early, 0.02, 0.15);
     double a0 = 1.0 - c0; /* du/dt / g as t -> 0 */
     printf("# terminal phase\n");
@@ -186,13 +202,17 @@ int main(int argc, char **argv)
             umax = late.u[i], t_umax = late.t[i];
     double Re_ref = schiller_naumann_Re(AR), uT_ref = Re_ref * eta / (RHO * D) / sqrt(G * D);
     double Re = RHO * umax * sqrt(G * D) * D / eta;
-    printf("resolved settling: D/dx %g, box %g x %g D, cfl %g: early a/g = %.4f (ref 2/3, %+.1f %%), u_T/sqrt(gD) = "
-           "%.4f at t = %.2f (ref %.4f, %+.1f %%), Re_T = %.2f (ref %.2f); wall %.1f s, cpu %.1f s (early %.1f s)\n",
-           a.dx, a.box, a.height, a.cfl, a0, 100 * (a0 / (2.0 / 3.0) - 1), umax, t_umax, uT_ref,
-           100 * (umax / uT_ref - 1), Re, Re_ref, late.wall_s + early.wall_s, late.cpu_s + early.cpu_s, early.cpu_s);
+    double F_end = late.n ? late.F[late.n - 1] : NAN; /* -> 1 at terminal velocity: F_h = -m g (Izard 2014 §2.2.2) */
+    printf("resolved settling: D/dx %g, box %g x %g D, cfl %g: early a/g = %.4f at D/dx %g (ref 2/3, %+.1f %%), "
+           "u_T/sqrt(gD) = %.4f at t = %.2f (ref %.4f, %+.1f %%), Re_T = %.2f (ref %.2f), F_h/(m g) at the end %.4f; "
+           "wall %.1f s, cpu %.1f s (early %.1f s)\n",
+           a.dx, a.box, a.height, a.cfl, a0, ea.dx, 100 * (a0 / (2.0 / 3.0) - 1), umax, t_umax, uT_ref,
+           100 * (umax / uT_ref - 1), Re, Re_ref, F_end, late.wall_s + early.wall_s, late.cpu_s + early.cpu_s,
+           early.cpu_s);
     if (!strcmp(a.check, "fast")) {
         GF_CHECK_REL(a0, 2.0 / 3.0, 0.05);
-        GF_CHECK_REL(umax, uT_ref, 0.20);
+        GF_CHECK_REL(F_end, 1.0, 0.02);
+        GF_CHECK_REL(umax, uT_ref, 0.25);
     } else if (!strcmp(a.check, "full")) {
         GF_CHECK_REL(a0, 2.0 / 3.0, 0.05);
         GF_CHECK_REL(umax, uT_ref, 0.03);
