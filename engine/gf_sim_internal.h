@@ -145,6 +145,7 @@ struct gf_sim {
     long next_fluid_step;       /* step index of the next fluid step */
     int lubrication;
     double lub_eta_Pa_s, lub_roughness_m, lub_cutoff_m;
+    int lub_in_overlap;         /* 1: gap clamped at 0 in overlap (default); 0: off while overlapping */
     int in_build;
     int rotation_locked;        /* gf_sim_set_rotation_locked: inverse inertias held at 0 */
     /* sleeping grains (gf_sim_sleep.c; only with contact.sleep_speed_nd > 0) */

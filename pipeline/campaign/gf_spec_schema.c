@@ -55,6 +55,8 @@ static const gf_spec_field fields[] = {
     B("fluid", "lubrication", fluid.lubrication, "Brenner normal lubrication"),
     D("fluid", "roughness_over_R", fluid.roughness_over_R, 0, 1.0, 0, "1", "effective roughness eta_e / R"),
     D("fluid", "lub_cutoff_over_R", fluid.lub_cutoff_over_R, 0, 10.0, 0, "1", "lubrication range / R"),
+    B("fluid", "lub_overlap_off", fluid.lub_overlap_off,
+      "no lubrication while surfaces overlap (1), or the gap clamped at 0 (0: constant damping in contact)"),
     D("fluid", "d_over_dx", fluid.d_over_dx, 0, 64.0, 0, "1", "resolved tier: grid cells per diameter D/dx (8-20; 0: 16)"),
     D("output", "interval_nd", output.interval_nd, 0, 1e7, 1, "1", "output interval in sqrt(D/g)"),
     B("output", "particles", output.particles, "write particles.nc"),
