@@ -38,6 +38,7 @@
 #include "core/gf_status.h"
 
 typedef enum gf_fluid_exact_problem { GF_EXACT_POISEUILLE = 0, GF_EXACT_TAYLOR_GREEN } gf_fluid_exact_problem;
+#define GF_EXACT_SCHEME_NS2 1
 
 typedef struct gf_fluid_exact_case {
     gf_fluid_exact_problem problem;
@@ -45,6 +46,8 @@ typedef struct gf_fluid_exact_case {
     double dt;        /* fluid step (the problem's time unit); rounded down so that t_end is a whole number of steps */
     double t_end;     /* the problem's time unit */
     double re;        /* TAYLOR_GREEN: Reynolds number U/(nu k); ignored otherwise */
+    int scheme;       /* 0: the step of gf_fluid (unresolved tier); GF_EXACT_SCHEME_NS2: the resolved tier's
+                         AB2/Crank-Nicolson step of gf_fluid_ns2.h (TAYLOR_GREEN only: it has no body force) */
 } gf_fluid_exact_case;
 
 typedef struct gf_fluid_exact_result {
