@@ -38,7 +38,6 @@
 #include "core/gf_status.h"
 
 typedef enum gf_fluid_exact_problem { GF_EXACT_POISEUILLE = 0, GF_EXACT_TAYLOR_GREEN } gf_fluid_exact_problem;
-#define GF_EXACT_SCHEME_NS2 1
 
 typedef struct gf_fluid_exact_case {
     gf_fluid_exact_problem problem;
@@ -46,8 +45,6 @@ typedef struct gf_fluid_exact_case {
     double dt;        /* fluid step (the problem's time unit); rounded down so that t_end is a whole number of steps */
     double t_end;     /* the problem's time unit */
     double re;        /* TAYLOR_GREEN: Reynolds number U/(nu k); ignored otherwise */
-    int scheme;       /* 0: the step of gf_fluid (unresolved tier); GF_EXACT_SCHEME_NS2: the resolved tier's
-                         AB2/Crank-Nicolson step of gf_fluid_ns2.h (TAYLOR_GREEN only: it has no body force) */
 } gf_fluid_exact_case;
 
 typedef struct gf_fluid_exact_result {
@@ -59,6 +56,9 @@ typedef struct gf_fluid_exact_result {
 
 /* Runs the case. Errors: n < 2, dt or t_end <= 0, a failed fluid step. */
 gf_status gf_fluid_exact_run(gf_ctx *ctx, const gf_fluid_exact_case *c, gf_fluid_exact_result *out);
+/* The same with the resolved tier's AB2/Crank-Nicolson step (gf_fluid_ns2.h), no forcing; TAYLOR_GREEN only
+ * (that step has no body force). */
+gf_status gf_fluid_exact_run_ns2(gf_ctx *ctx, const gf_fluid_exact_case *c, gf_fluid_exact_result *out);
 
 /* Order between two grids: ln(e_coarse / e_fine) / ln(h_coarse / h_fine). */
 double gf_fluid_exact_order(double e_coarse, double e_fine, double h_coarse, double h_fine);
