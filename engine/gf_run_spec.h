@@ -56,6 +56,9 @@ typedef struct gf_fluid_spec {
     int lubrication;          /* Brenner normal lubrication on/off */
     double roughness_over_R;  /* eta_e / R, seed 1e-4 .. 4e-4 */
     double lub_cutoff_over_R; /* lubrication active for 0 <= gap <= cutoff R, seed 1/2 */
+    double d_over_dx;         /* resolved tier: grid cells per grain diameter D/dx (8-20); 0: 16 */
+    int lub_overlap_off;      /* 1: no lubrication while surfaces overlap (contact law alone);
+                                 0: gap clamped at 0 (constant damping 6 pi eta R_eff^2 / eta_e) */
 } gf_fluid_spec;
 
 /* The continuum method (method: continuum; engine/continuum): the mu(I) law and the grid. */

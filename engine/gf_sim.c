@@ -16,7 +16,7 @@
  *
  * Step (dry):  kick(dt/2) -> drift(dt) -> [rebuild if a grain moved > skin/2]
  *              -> contacts (+ lubrication when immersed) -> kick(dt/2)
- * Immersed (scene needs GF_NEED_FLUID and spec.fluid.model = "unresolved"):
+ * Immersed (scene needs GF_NEED_FLUID and spec.fluid.model names a coupling tier, gf_coupling_tier.h):
  * every M = floor(dt_fluid_max/dt) DEM steps, one fluid step with the grains
  * frozen (gf_coupling_fluid_step), and every DEM step adds the held fluid
  * force after the contacts (Izard 2014 §2.3.1 sub-cycling). The preparation
@@ -317,7 +317,7 @@ static void choose_substeps(gf_sim *s)
 }
 
 /* fluid: auto — the tier from the regime (St, r) of the run (coupling/gf_tier.h):
- * no fluid in the free-fall regime, the unresolved tier where pore pressure matters. */
+ * no fluid in the free-fall regime, else the first registered tier that fits. */
 static gf_status choose_tier(gf_sim *s)
 {
     gf_fluid_spec *f = &s->spec.fluid;
@@ -349,10 +349,7 @@ static gf_status setup_fluid(gf_sim *s)
         GF_TRY(choose_tier(s));
     if (strcmp(f->model, "none") == 0)
         return GF_OK;
-    if (strcmp(f->model, "unresolved") != 0)
-        return GF_FAIL(s->ctx, GF_ERR_UNSUPPORTED,
-                       "fluid.model '%s': this build runs 'none', 'unresolved' or 'auto' (the resolved tier is not "
-                       "available yet)", f->model);
+    GF_TRY(gf_coupling_check(s->ctx, &s->spec)); /* a registered tier that accepts this spec */
     if (!(f->viscosity_Pa_s > 0.0) || !(f->density_kg_m3 > 0.0))
         return GF_FAIL(s->ctx, GF_ERR_CONFIG, "fluid: density and viscosity must be > 0 when immersed (got %g, %g)",
                        f->density_kg_m3, f->viscosity_Pa_s);
@@ -372,6 +369,7 @@ gf_status gf_sim_setup_lubrication(gf_sim *s)
     s->lub_eta_Pa_s = f->viscosity_Pa_s;
     s->lub_roughness_m = f->roughness_over_R * R;
     s->lub_cutoff_m = f->lub_cutoff_over_R * R;
+    s->lub_in_overlap = !f->lub_overlap_off;
     s->extra_m = s->lub_cutoff_m; /* the neighbour reach covers the lubrication range */
     return GF_OK;
 }

@@ -16,9 +16,11 @@
  * Lubrication (Brenner 1961 with effective roughness eta_e; Izard 2014 (2.36),
  * (3.18)), normal only, on i:
  *     F = -6 pi eta_f ((u_i - u_j).n) / (gap + eta_e) (R_i R_j/(R_i+R_j))^2 n
- * active for gap <= cutoff (lub_cutoff_over_R x mean R), gap clamped at 0
- * during overlap (constant damping 6 pi eta R_eff^2/eta_e, the choice of the
- * rebound model of Izard 2014 §3.1, which the thesis leaves unstated); wall: R_eff^2 -> R_i^2.
+ * active for gap <= cutoff (lub_cutoff_over_R x mean R); during overlap either
+ * the gap is clamped at 0 (constant damping 6 pi eta R_eff^2/eta_e, the damping
+ * rebound model of Izard 2014 §3.1 assumes in contact, eq. (3.26); the default) or,
+ * with fluid.lub_overlap_off, the force is off and the contact law acts alone;
+ * wall: R_eff^2 -> R_i^2.
  *
  * OpenMP: a half list races on j, so the rows are cut into one pair-balanced
  * chunk per configured thread. Each chunk adds into the particle store the
@@ -341,7 +343,7 @@ static inline __attribute__((always_inline)) void pair_rows_impl(gf_sim *s, size
             }
             if (lub_cut > 0.0) {
                 double gap = g.overlap_m > 0.0 ? 0.0 : -g.overlap_m;
-                if (gap <= lub_cut) {
+                if (gap <= lub_cut && (s->lub_in_overlap || g.overlap_m <= 0.0)) {
                     double reff = ri * R[j] / rsum;
                     double c = -gf_lubrication_damping(s->dt_s, 6.0 * M_PI * s->lub_eta_Pa_s * reff * reff / (gap + s->lub_roughness_m),
                                             pair_meff[k]) * g.v_n_m_s;
@@ -441,7 +443,7 @@ static void wall_rows(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_si
             } else if (h[0] != 0.0 || h[1] != 0.0 || h[2] != 0.0) {
                 h[0] = h[1] = h[2] = 0.0;
             }
-            if (lub_cut > 0.0) {
+            if (lub_cut > 0.0 && (s->lub_in_overlap || overlap <= 0.0)) {
                 double gap = overlap > 0.0 ? 0.0 : -overlap;
                 double c = -gf_lubrication_damping(s->dt_s, 6.0 * M_PI * s->lub_eta_Pa_s * ri * ri / (gap + s->lub_roughness_m),
                                         p->mass_kg[i]) * vn;

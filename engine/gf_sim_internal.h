@@ -186,12 +186,13 @@ struct gf_sim {
     int forces_valid;           /* F(t) in the store matches x(t) */
     /* fluid */
     int immersed;
-    char fluid_reason[256];     /* why this fluid tier (fluid_model_reason attribute) */
+    char fluid_reason[384];     /* why this fluid tier (fluid_model_reason attribute) */
     gf_coupling *coupling;
     int n_substeps;             /* DEM steps per fluid step, re-chosen at every fluid step */
     long next_fluid_step;       /* step index of the next fluid step */
     int lubrication;
     double lub_eta_Pa_s, lub_roughness_m, lub_cutoff_m;
+    int lub_in_overlap;         /* 1: gap clamped at 0 in overlap (default); 0: off while overlapping */
     int in_build;
     int rotation_locked;        /* gf_sim_set_rotation_locked: inverse inertias held at 0 */
     /* sleeping grains (gf_sim_sleep.c; only with contact.sleep_speed_nd > 0) */

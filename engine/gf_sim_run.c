@@ -335,7 +335,7 @@ gf_status gf_sim_run(gf_sim *s)
             .spec = &s->spec,
             .scales = &s->scales,
             .resolved_yaml = s->opt.resolved_yaml,
-            .fluid_model = s->immersed ? "unresolved" : "none",
+            .fluid_model = s->immersed ? s->spec.fluid.model : "none",
             .fluid_model_reason = s->fluid_reason,
             .stages = s->immersed ? (s->lubrication ? "fluid,contacts,lubrication,coupling,integrate"
                                                     : "fluid,contacts,coupling,integrate")

@@ -1,9 +1,11 @@
 /*
  * Fluid–grain coupling, the interface the step loop sees. One object per
- * run holds the fluid solver (engine/fluid) and the coupling tier chosen by
- * spec.fluid.model: "unresolved" (locally averaged Navier–Stokes, drag
- * closure, pressure-gradient force; Anderson & Jackson 1967) now, "resolved"
- * (immersed boundary at D/10) later, behind the same calls.
+ * run holds the fluid solver (engine/fluid) and the coupling tier named by
+ * spec.fluid.model, a row of the tier registry (gf_coupling_tier.h,
+ * gf_coupling_table.c): "unresolved" (locally averaged Navier–Stokes, drag
+ * closure, pressure-gradient force; Anderson & Jackson 1967) and "resolved"
+ * (Navier–Stokes inside the grains too, immersed-boundary direct forcing at
+ * D/dx = 8-20; Uhlmann 2005, Izard 2014 §2.2), behind the same calls.
  *
  * Sub-cycling (Izard 2014 §2.3.1): the fluid advances once per dt_fluid with
  * the grains frozen, then the DEM runs M substeps with the fluid force on each
@@ -30,10 +32,16 @@ typedef struct gf_coupling_setup {
     double gravity_m_s2[3];          /* body force on the fluid (hydrostatic reference built from it) */
 } gf_coupling_setup;
 
+/* Refuses, with one line naming the value and the limit, a spec the tier it
+ * names cannot run (GF_ERR_CONFIG / GF_ERR_UNSUPPORTED); gf_coupling_create
+ * calls it too. For `grainflow check` before any run. */
+gf_status gf_coupling_check(gf_ctx *ctx, const gf_run_spec *spec);
 /* Returns owned coupling. Errors: model unknown, grid too small, unstable parameters. */
 gf_status gf_coupling_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_coupling_setup *setup,
                              gf_coupling **out);
 void gf_coupling_destroy(gf_coupling **c);
+/* The tier's name ("unresolved", "resolved"; "none" for NULL): the fluid_model attribute. */
+const char *gf_coupling_model(const gf_coupling *c);
 /* OpenMP threads for the fluid step's per-grain loops (default 1). The
  * results do not depend on it: each grain's values are computed alone, and
  * what is summed over grains (the drag spread to the cells) stays in grain

@@ -45,7 +45,7 @@ static void held_unpack(const double *v, held_grain *h)
     h->phi1_x = NAN; /* evaluated again at the first substep */
 }
 
-static gf_status save_held(const gf_coupling *c, gf_restart *r)
+static gf_status save_held(const gf_unresolved *c, gf_restart *r)
 {
     size_t n = c->n_held;
     int64_t *id = malloc((n + 1) * sizeof *id);
@@ -63,7 +63,7 @@ static gf_status save_held(const gf_coupling *c, gf_restart *r)
     return st;
 }
 
-gf_status gf_coupling_save(const gf_coupling *c, gf_restart *r)
+gf_status gf_unresolved_save(const gf_unresolved *c, gf_restart *r)
 {
     const gf_fluid *f = c->fluid;
     const gf_grid *g = &f->grid;
@@ -87,11 +87,11 @@ gf_status gf_coupling_save(const gf_coupling *c, gf_restart *r)
     return save_held(c, r);
 }
 
-static gf_status load_held(gf_coupling *c, gf_restart *r)
+static gf_status load_held(gf_unresolved *c, gf_restart *r)
 {
     size_t n = 0;
     GF_TRY(gf_restart_len(r, "coupling_held_id", &n));
-    GF_TRY(gf_coupling_reserve(c, n));
+    GF_TRY(gf_unresolved_reserve(c, n));
     int64_t *id = malloc((n + 1) * sizeof *id);
     double *v = malloc((HELD_F64 * n + 1) * sizeof *v);
     gf_status st = id && v ? GF_OK : GF_FAIL(c->ctx, GF_ERR_NOMEM, "restart: cannot read %zu held grains", n);
@@ -109,7 +109,7 @@ static gf_status load_held(gf_coupling *c, gf_restart *r)
     return st;
 }
 
-gf_status gf_coupling_load(gf_coupling *c, gf_restart *r)
+gf_status gf_unresolved_load(gf_unresolved *c, gf_restart *r)
 {
     gf_fluid *f = c->fluid;
     const gf_grid *g = &f->grid;

@@ -29,7 +29,7 @@ static double volume(const gf_particles *p, size_t i)
     return 4.0 / 3.0 * M_PI * r * r * r;
 }
 
-gf_status gf_mean_slip_prepare(gf_coupling *c, const gf_particles *p)
+gf_status gf_mean_slip_prepare(gf_unresolved *c, const gf_particles *p)
 {
     if (!c->law->fluctuation)
         return GF_OK;
@@ -58,12 +58,12 @@ gf_status gf_mean_slip_prepare(gf_coupling *c, const gf_particles *p)
     return GF_OK;
 }
 
-const double *gf_mean_slip_velocity(const gf_coupling *c, size_t i)
+const double *gf_mean_slip_velocity(const gf_unresolved *c, size_t i)
 {
     return c->law->fluctuation ? &c->mean_v[MEAN_SLIP_F64 * i] : NULL;
 }
 
-double gf_mean_slip_hold(gf_coupling *c, const gf_particles *p, size_t i, double K_mean, double eps_closure,
+double gf_mean_slip_hold(gf_unresolved *c, const gf_particles *p, size_t i, double K_mean, double eps_closure,
                          double dt_s)
 {
     double *m = &c->mean_v[MEAN_SLIP_F64 * i];
@@ -75,7 +75,7 @@ double gf_mean_slip_hold(gf_coupling *c, const gf_particles *p, size_t i, double
     return K_mean;
 }
 
-void gf_mean_slip_target(const gf_coupling *c, const gf_particles *p, size_t i, const double uf[3], double target[3])
+void gf_mean_slip_target(const gf_unresolved *c, const gf_particles *p, size_t i, const double uf[3], double target[3])
 {
     const double *m = &c->mean_v[MEAN_SLIP_F64 * i];
     const double v[3] = {p->vx_m_s[i], p->vy_m_s[i], p->vz_m_s[i]};
@@ -83,7 +83,7 @@ void gf_mean_slip_target(const gf_coupling *c, const gf_particles *p, size_t i, 
         target[a] = uf[a] + m[3] * (v[a] - m[a]);
 }
 
-void gf_mean_slip_exchange(const gf_coupling *c, const gf_particles *p, size_t i, double K_held,
+void gf_mean_slip_exchange(const gf_unresolved *c, const gf_particles *p, size_t i, double K_held,
                            double value[GF_AVERAGE_LANES])
 {
     const double *m = c->law->fluctuation ? &c->mean_v[MEAN_SLIP_F64 * i] : NULL;

@@ -93,6 +93,7 @@
  * is computed in the DEM pair loop.
  */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -100,6 +101,7 @@
 #include "coupling/gf_average.h"
 #include "coupling/gf_coupling.h"
 #include "coupling/gf_coupling_diag.h"
+#include "coupling/gf_coupling_tier.h"
 #include "coupling/gf_coupling_unresolved.h"
 #include "coupling/gf_drag.h"
 #include "fluid/gf_fluid.h"
@@ -163,7 +165,7 @@ static double oseen_factor_exact(double R)
     return sum / (4.0 / 3.0 * sqrt(M_PI) / 2.0);
 }
 
-static double oseen_factor(const gf_coupling *c, double R)
+static double oseen_factor(const gf_unresolved *c, double R)
 {
     if (!(R > 0.0))
         return 1.0;
@@ -177,7 +179,7 @@ static double oseen_factor(const gf_coupling *c, double R)
     return (1.0 - w) * c->oseen[j] + w * c->oseen[j + 1];
 }
 
-static gf_status calibrate_self_mobility(gf_ctx *ctx, gf_coupling *c)
+static gf_status calibrate_self_mobility(gf_ctx *ctx, gf_unresolved *c)
 {
     for (int j = 0; j < OSEEN_N; ++j)
         c->oseen[j] = oseen_factor_exact(pow(10.0, OSEEN_LOG_RE0 + j * OSEEN_DLOG_RE));
@@ -229,7 +231,7 @@ static gf_status calibrate_self_mobility(gf_ctx *ctx, gf_coupling *c)
 }
 
 /* Pressure reference: the face opposite to gravity on a non-periodic gravity axis (the free-surface side). */
-static void pressure_reference_axis(gf_coupling *c)
+static void pressure_reference_axis(gf_unresolved *c)
 {
     const gf_grid *g = &c->fluid->grid;
     const double *gv = c->setup.gravity_m_s2;
@@ -244,7 +246,7 @@ static void pressure_reference_axis(gf_coupling *c)
     }
 }
 
-gf_status gf_coupling_set_gravity(gf_coupling *c, const double g[3])
+gf_status gf_unresolved_set_gravity(gf_unresolved *c, const double g[3])
 {
     for (int d = 0; d < 3; ++d)
         if (!isfinite(g[d]))
@@ -262,12 +264,10 @@ static gf_grid_bc map_bc(gf_fluid_bc b)
     return b == GF_BC_PERIODIC ? GF_GRID_PERIODIC : b == GF_BC_FREE_SLIP ? GF_GRID_FREE_SLIP : GF_GRID_NO_SLIP;
 }
 
-gf_status gf_coupling_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_coupling_setup *setup, gf_coupling **out)
+gf_status gf_unresolved_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_coupling_setup *setup, gf_unresolved **out)
 {
     *out = NULL;
     const gf_fluid_spec *fs = &spec->fluid;
-    if (strcmp(fs->model, "unresolved") != 0 && strcmp(fs->model, "auto") != 0)
-        return GF_FAIL(ctx, GF_ERR_UNSUPPORTED, "fluid.model '%s': this build couples 'unresolved' only", fs->model);
     if (!(fs->density_kg_m3 > 0.0) || !(fs->viscosity_Pa_s > 0.0))
         return GF_FAIL(ctx, GF_ERR_CONFIG, "fluid: density (%g kg/m3) and viscosity (%g Pa s) must be > 0 for an "
                        "immersed run", fs->density_kg_m3, fs->viscosity_Pa_s);
@@ -282,7 +282,7 @@ gf_status gf_coupling_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_coup
     if (!(D > 0.0))
         return GF_FAIL(ctx, GF_ERR_CONFIG, "grains.diameter_m = %g must be > 0", D);
 
-    gf_coupling *c = calloc(1, sizeof *c);
+    gf_unresolved *c = calloc(1, sizeof *c);
     if (!c)
         return GF_FAIL(ctx, GF_ERR_NOMEM, "coupling: out of memory");
     c->ctx = ctx;
@@ -323,7 +323,7 @@ gf_status gf_coupling_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_coup
     c->sigma_m = fmax(hmax > 0.0 ? hmax : fs->cell_over_D * D, D);
     st = calibrate_self_mobility(ctx, c);
     if (st != GF_OK) {
-        gf_coupling_destroy(&c);
+        gf_unresolved_destroy(&c);
         return st;
     }
 
@@ -338,7 +338,7 @@ gf_status gf_coupling_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_coup
     /* a cell's lanes are one cache line: 64-byte aligned */
     ok &= (c->lanes = aligned_alloc(64, g->n_cells * GF_AVERAGE_LANES * sizeof(double))) != NULL;
     if (!ok) {
-        gf_coupling_destroy(&c);
+        gf_unresolved_destroy(&c);
         return GF_FAIL(ctx, GF_ERR_NOMEM, "coupling: out of memory for %zu cells", g->n_cells);
     }
     for (size_t i = 0; i < g->n_cells; ++i)
@@ -355,16 +355,16 @@ gf_status gf_coupling_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_coup
     return GF_OK;
 }
 
-void gf_coupling_set_threads(gf_coupling *c, int n_threads)
+void gf_unresolved_set_threads(gf_unresolved *c, int n_threads)
 {
     c->n_threads = n_threads > 1 ? n_threads : 1;
 }
 
-void gf_coupling_destroy(gf_coupling **pc)
+void gf_unresolved_destroy(gf_unresolved **pc)
 {
     if (!pc || !*pc)
         return;
-    gf_coupling *c = *pc;
+    gf_unresolved *c = *pc;
     gf_fluid_destroy(&c->fluid);
     for (int a = 0; a < 3; ++a) {
         free(c->uc[a]);
@@ -380,7 +380,7 @@ void gf_coupling_destroy(gf_coupling **pc)
     *pc = NULL;
 }
 
-gf_status gf_coupling_reserve(gf_coupling *c, size_t n)
+gf_status gf_unresolved_reserve(gf_unresolved *c, size_t n)
 {
     if (n <= c->cap)
         return GF_OK;
@@ -410,7 +410,7 @@ static double grain_speed_max(const gf_particles *p)
 }
 
 /* sum_d |u_d|max / h_d over the fluid faces: dt times this is the upwind CFL number */
-static double advective_rate(const gf_coupling *c)
+static double advective_rate(const gf_unresolved *c)
 {
     const gf_grid *g = &c->fluid->grid;
     double s = 0.0;
@@ -423,7 +423,7 @@ static double advective_rate(const gf_coupling *c)
     return s;
 }
 
-static double min_cell(const gf_coupling *c)
+static double min_cell(const gf_unresolved *c)
 {
     const gf_grid *g = &c->fluid->grid;
     double h = 1e300;
@@ -459,7 +459,7 @@ static double grain_volume(const gf_particles *p, size_t i)
     return 4.0 / 3.0 * M_PI * r * r * r;
 }
 
-static double pore_pressure_limit(const gf_coupling *c, const gf_particles *p)
+static double pore_pressure_limit(const gf_unresolved *c, const gf_particles *p)
 {
     const gf_grid *g = &c->fluid->grid;
     double tau = 1e30;
@@ -505,7 +505,7 @@ static double pore_pressure_limit(const gf_coupling *c, const gf_particles *p)
     return PORE_PRESSURE_TAU_FACTOR * tau;
 }
 
-double gf_coupling_dt_max_s(const gf_coupling *c, const gf_particles *p)
+double gf_unresolved_dt_max_s(const gf_unresolved *c, const gf_particles *p)
 {
     double cfl = c->spec.fluid.cfl, h = min_cell(c);
     double rate = advective_rate(c);
@@ -542,7 +542,7 @@ static int has_glued(const gf_particles *p)
 }
 
 /* eps^{n+1} from the grains; kernels cached per grain. */
-static void build_fluid_fraction(gf_coupling *c, const gf_particles *p)
+static void build_fluid_fraction(gf_unresolved *c, const gf_particles *p)
 {
     gf_fluid *f = c->fluid;
     const gf_grid *g = &f->grid;
@@ -573,7 +573,7 @@ static void build_fluid_fraction(gf_coupling *c, const gf_particles *p)
 }
 
 /* Weight balance or imposed mean gradient G (Pa/m) for this step. */
-static void mean_pressure_gradient(gf_coupling *c, const gf_particles *p)
+static void mean_pressure_gradient(gf_unresolved *c, const gf_particles *p)
 {
     if (c->user_gradp)
         return;
@@ -598,7 +598,7 @@ static void mean_pressure_gradient(gf_coupling *c, const gf_particles *p)
 }
 
 /* Drag coefficient of grain i with the self-induced-velocity correction; slip from the measured u_f. */
-static double grain_drag(const gf_coupling *c, const gf_particles *p, size_t i, const double uf[3], double eps_closure,
+static double grain_drag(const gf_unresolved *c, const gf_particles *p, size_t i, const double uf[3], double eps_closure,
                          double self_share)
 {
     double D = 2.0 * p->radius_m[i];
@@ -615,7 +615,7 @@ static double grain_drag(const gf_coupling *c, const gf_particles *p, size_t i, 
     return K * corr;
 }
 
-static void cell_fields(gf_coupling *c)
+static void cell_fields(gf_unresolved *c)
 {
     gf_fluid *f = c->fluid;
     const gf_grid *g = &f->grid;
@@ -624,7 +624,7 @@ static void cell_fields(gf_coupling *c)
 }
 
 /* Cell-centred gradient of p' (central, from the face differences; zero across walls). */
-static void pressure_gradient(gf_coupling *c)
+static void pressure_gradient(gf_unresolved *c)
 {
     gf_fluid *f = c->fluid;
     const gf_grid *g = &f->grid;
@@ -648,7 +648,7 @@ static void pressure_gradient(gf_coupling *c)
 }
 
 /* Shift p' so that its mean over the reference layer (free-surface side) is 0. */
-static void reference_pressure(gf_coupling *c)
+static void reference_pressure(gf_unresolved *c)
 {
     gf_fluid *f = c->fluid;
     const gf_grid *g = &f->grid;
@@ -681,7 +681,7 @@ static void reference_pressure(gf_coupling *c)
  * that feedback would grow); the drift then decays within a step or two,
  * restoring the zero-momentum frame in which settling velocities are defined.
  */
-static void fix_mixture_momentum(gf_coupling *c, const gf_particles *p)
+static void fix_mixture_momentum(gf_unresolved *c, const gf_particles *p)
 {
     gf_fluid *f = c->fluid;
     const gf_grid *g = &f->grid;
@@ -708,7 +708,7 @@ static void fix_mixture_momentum(gf_coupling *c, const gf_particles *p)
     }
 }
 
-gf_status gf_coupling_fluid_step(gf_coupling *c, const gf_particles *p, double dt_s)
+gf_status gf_unresolved_fluid_step(gf_unresolved *c, const gf_particles *p, double dt_s)
 {
     gf_ctx *ctx = c->ctx;
     double t0 = gf_wtime();
@@ -721,13 +721,13 @@ gf_status gf_coupling_fluid_step(gf_coupling *c, const gf_particles *p, double d
     if (rate * dt_s > 1.0)
         return GF_FAIL(ctx, GF_ERR_NUMERIC, "fluid step dt = %.3g s exceeds the advective CFL stability limit %.3g s "
                        "(CFL number %.2f > 1); take dt <= gf_coupling_dt_max_s = %.3g s", dt_s, 1.0 / rate,
-                       rate * dt_s, gf_coupling_dt_max_s(c, p));
+                       rate * dt_s, gf_unresolved_dt_max_s(c, p));
     double vmax = grain_speed_max(p), h = min_cell(c);
     if (vmax * dt_s > h)
         return GF_FAIL(ctx, GF_ERR_NUMERIC, "fluid step dt = %.3g s lets grains move %.2f cells (|v|max = %.3g m/s, "
                        "limit 1 cell); take dt <= gf_coupling_dt_max_s = %.3g s", dt_s, vmax * dt_s / h, vmax,
-                       gf_coupling_dt_max_s(c, p));
-    GF_TRY(gf_coupling_reserve(c, p->n_local));
+                       gf_unresolved_dt_max_s(c, p));
+    GF_TRY(gf_unresolved_reserve(c, p->n_local));
 
     /* 1. fluid fraction from the grains as they are now */
     memcpy(f->eps_old, f->eps, g->n_cells * sizeof(double));
@@ -786,7 +786,7 @@ gf_status gf_coupling_fluid_step(gf_coupling *c, const gf_particles *p, double d
     fix_mixture_momentum(c, p);
     if (gf_fluid_nonfinite(f))
         return GF_FAIL(ctx, GF_ERR_NUMERIC, "fluid state became non-finite after a step of %.3g s (CFL number %.2f, "
-                       "dt_max %.3g s)", dt_s, rate * dt_s, gf_coupling_dt_max_s(c, p));
+                       "dt_max %.3g s)", dt_s, rate * dt_s, gf_unresolved_dt_max_s(c, p));
 
     /* 4. held fluid velocity and non-drag forces at each grain */
     cell_fields(c);
@@ -841,7 +841,7 @@ static int cmp_id(const void *a, const void *b)
 /* The held fluid force on grain i (hg: its held values), added to p->f:
  * exact exponential relaxation over one DEM step under the total force (see
  * the opening comment), F_add = phi1 K (u - v) + phi1 F_fluid,other + (phi1 - 1)(F_already + m g). */
-static void add_held_force(const gf_coupling *c, held_grain *hg, gf_particles *p, size_t i)
+static void add_held_force(const gf_unresolved *c, held_grain *hg, gf_particles *p, size_t i)
 {
     if (p->flags[i] & GF_P_GLUED)
         return;
@@ -859,13 +859,13 @@ static void add_held_force(const gf_coupling *c, held_grain *hg, gf_particles *p
         *f[a] += K * (hg->uf[a] - v[a]) + phi1 * hg->f_other_N[a] + (phi1 - 1.0) * (*f[a] + m * c->setup.gravity_m_s2[a]);
 }
 
-int gf_coupling_forces_in_order(const gf_coupling *c, const gf_particles *p)
+int gf_unresolved_forces_in_order(const gf_unresolved *c, const gf_particles *p)
 {
     return c->first_step ||
            (c->held_epoch_known && c->held_epoch == p->order_epoch && c->n_held == p->n_local);
 }
 
-void gf_coupling_add_forces_range(gf_coupling *c, gf_particles *p, size_t i0, size_t i1)
+void gf_unresolved_add_forces_range(gf_unresolved *c, gf_particles *p, size_t i0, size_t i1)
 {
     if (c->first_step)
         return;
@@ -873,7 +873,7 @@ void gf_coupling_add_forces_range(gf_coupling *c, gf_particles *p, size_t i0, si
         add_held_force(c, &c->held[i], p, i);
 }
 
-gf_status gf_coupling_add_forces(gf_coupling *c, gf_particles *p)
+gf_status gf_unresolved_add_forces(gf_unresolved *c, gf_particles *p)
 {
     if (c->first_step)
         return GF_OK;  /* no fluid step yet: the fluid is at rest and hydrostatic, nothing held */
@@ -919,7 +919,7 @@ gf_status gf_coupling_add_forces(gf_coupling *c, gf_particles *p)
 
 /* --- probes and outputs ----------------------------------------------------------------------------- */
 
-double gf_coupling_excess_pressure_Pa(const gf_coupling *c, const double x_m[3])
+double gf_unresolved_excess_pressure_Pa(const gf_unresolved *c, const double x_m[3])
 {
     const gf_grid *g = &c->fluid->grid;
     int i0[3];
@@ -955,7 +955,7 @@ double gf_coupling_excess_pressure_Pa(const gf_coupling *c, const double x_m[3])
     return v;
 }
 
-int gf_coupling_fields(const gf_coupling *c, int n_cells[3], double lo_m[3], double cell_m[3],
+int gf_unresolved_fields(const gf_unresolved *c, int n_cells[3], double lo_m[3], double cell_m[3],
                        const gf_var_info **vars, const double *const **fields)
 {
     const gf_grid *g = &c->fluid->grid;
@@ -969,7 +969,7 @@ int gf_coupling_fields(const gf_coupling *c, int n_cells[3], double lo_m[3], dou
     return FLD_N;
 }
 
-double gf_coupling_fluid_flow_rate(const gf_coupling *c)
+double gf_unresolved_fluid_flow_rate(const gf_unresolved *c)
 {
     const gf_grid *g = &c->fluid->grid;
     double s = 0.0, vc = g->h_m[0] * g->h_m[1] * g->h_m[2];
@@ -978,7 +978,7 @@ double gf_coupling_fluid_flow_rate(const gf_coupling *c)
     return s / (g->h_m[0] * g->n[0]);
 }
 
-double gf_coupling_fluid_mass_kg(const gf_coupling *c)
+double gf_unresolved_fluid_mass_kg(const gf_unresolved *c)
 {
     const gf_grid *g = &c->fluid->grid;
     double s = 0.0;
@@ -989,22 +989,22 @@ double gf_coupling_fluid_mass_kg(const gf_coupling *c)
 
 /* --- diagnostics (gf_coupling_diag.h) ------------------------------------------------------------------ */
 
-void gf_coupling_get_stats(const gf_coupling *c, gf_coupling_stats *s) { *s = c->stats; }
+void gf_unresolved_get_stats(const gf_unresolved *c, gf_coupling_stats *s) { *s = c->stats; }
 
-void gf_coupling_set_mean_pressure_gradient(gf_coupling *c, const double G[3])
+void gf_unresolved_set_mean_pressure_gradient(gf_unresolved *c, const double G[3])
 {
     c->user_gradp = 1;
     for (int d = 0; d < 3; ++d)
         c->mean_gradp[d] = G[d];
 }
 
-void gf_coupling_set_dem_step(gf_coupling *c, double dt_s)
+void gf_unresolved_set_dem_step(gf_unresolved *c, double dt_s)
 {
     if (dt_s > 0.0)
         c->dt_dem_s = dt_s;
 }
 
-int gf_coupling_grain_state(const gf_coupling *c, size_t i, double *K, double uf[3], double *eps)
+int gf_unresolved_grain_state(const gf_unresolved *c, size_t i, double *K, double uf[3], double *eps)
 {
     if (i >= c->n_held)
         return 0;
@@ -1015,7 +1015,7 @@ int gf_coupling_grain_state(const gf_coupling *c, size_t i, double *K, double uf
     return 1;
 }
 
-void gf_coupling_mean_fluid_velocity(const gf_coupling *c, double u[3])
+void gf_unresolved_mean_fluid_velocity(const gf_unresolved *c, double u[3])
 {
     const gf_grid *g = &c->fluid->grid;
     double se = 0.0;
@@ -1027,4 +1027,128 @@ void gf_coupling_mean_fluid_velocity(const gf_coupling *c, double u[3])
     }
     for (int a = 0; a < 3; ++a)
         u[a] /= se;
+}
+
+/* --- the tier row (gf_coupling_tier.h): the calls above behind the table --------------------------- */
+
+static gf_unresolved *U(gf_coupling *c) { return (gf_unresolved *)c; }
+static const gf_unresolved *CU(const gf_coupling *c) { return (const gf_unresolved *)c; }
+
+static gf_status op_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_coupling_setup *setup, gf_coupling **out)
+{
+    gf_unresolved *c = NULL;
+    GF_TRY(gf_unresolved_create(ctx, spec, setup, &c));
+    *out = &c->base;
+    return GF_OK;
+}
+
+static void op_destroy(gf_coupling *c)
+{
+    gf_unresolved *u = U(c);
+    gf_unresolved_destroy(&u);
+}
+
+/* The unresolved tier is the cheapest that carries a fluid: `fluid: auto` takes it whenever the
+ * regime needs one (gf_tier.h says when). */
+static int op_auto_fits(const gf_tier_query *q, char *why, size_t n)
+{
+    (void)q;
+    snprintf(why, n, "unresolved: averaged fluid on cells of a few D, the cheapest tier with pore pressure");
+    return 1;
+}
+
+static void op_set_threads(gf_coupling *c, int n) { gf_unresolved_set_threads(U(c), n); }
+static double op_dt_max_s(const gf_coupling *c, const gf_particles *p) { return gf_unresolved_dt_max_s(CU(c), p); }
+static gf_status op_fluid_step(gf_coupling *c, const gf_particles *p, double dt_s)
+{
+    return gf_unresolved_fluid_step(U(c), p, dt_s);
+}
+static gf_status op_add_forces(gf_coupling *c, gf_particles *p) { return gf_unresolved_add_forces(U(c), p); }
+static int op_forces_in_order(const gf_coupling *c, const gf_particles *p)
+{
+    return gf_unresolved_forces_in_order(CU(c), p);
+}
+static void op_add_forces_range(gf_coupling *c, gf_particles *p, size_t i0, size_t i1)
+{
+    gf_unresolved_add_forces_range(U(c), p, i0, i1);
+}
+static double op_excess_pressure_Pa(const gf_coupling *c, const double x[3])
+{
+    return gf_unresolved_excess_pressure_Pa(CU(c), x);
+}
+static int op_fields(const gf_coupling *c, int n[3], double lo[3], double h[3], const gf_var_info **vars,
+                     const double *const **fields)
+{
+    return gf_unresolved_fields(CU(c), n, lo, h, vars, fields);
+}
+static gf_status op_set_gravity(gf_coupling *c, const double g[3]) { return gf_unresolved_set_gravity(U(c), g); }
+static gf_status op_save(const gf_coupling *c, gf_restart *r) { return gf_unresolved_save(CU(c), r); }
+static gf_status op_load(gf_coupling *c, gf_restart *r) { return gf_unresolved_load(U(c), r); }
+static double op_flow_rate(const gf_coupling *c) { return gf_unresolved_fluid_flow_rate(CU(c)); }
+static double op_fluid_mass(const gf_coupling *c) { return gf_unresolved_fluid_mass_kg(CU(c)); }
+
+const gf_coupling_tier gf_coupling_tier_unresolved = {
+    .name = "unresolved",
+    .summary = "locally averaged Navier-Stokes on cells of a few D, drag closure, pore pressure",
+    .create = op_create,
+    .destroy = op_destroy,
+    .auto_fits = op_auto_fits,
+    .set_threads = op_set_threads,
+    .dt_max_s = op_dt_max_s,
+    .fluid_step = op_fluid_step,
+    .add_forces = op_add_forces,
+    .forces_in_order = op_forces_in_order,
+    .add_forces_range = op_add_forces_range,
+    .excess_pressure_Pa = op_excess_pressure_Pa,
+    .fields = op_fields,
+    .set_gravity = op_set_gravity,
+    .save = op_save,
+    .load = op_load,
+    .fluid_flow_rate = op_flow_rate,
+    .fluid_mass_kg = op_fluid_mass,
+};
+
+/* --- diagnostics of this tier through the public handle (gf_coupling_diag.h) --------------------- */
+
+static gf_unresolved *diag_of(const gf_coupling *c)
+{
+    return c && c->tier == &gf_coupling_tier_unresolved ? (gf_unresolved *)c : NULL;
+}
+
+void gf_coupling_get_stats(const gf_coupling *c, gf_coupling_stats *s)
+{
+    const gf_unresolved *u = diag_of(c);
+    if (u)
+        gf_unresolved_get_stats(u, s);
+    else
+        memset(s, 0, sizeof *s);
+}
+
+void gf_coupling_set_mean_pressure_gradient(gf_coupling *c, const double G_Pa_m[3])
+{
+    gf_unresolved *u = diag_of(c);
+    if (u)
+        gf_unresolved_set_mean_pressure_gradient(u, G_Pa_m);
+}
+
+void gf_coupling_set_dem_step(gf_coupling *c, double dt_s)
+{
+    gf_unresolved *u = diag_of(c);
+    if (u)
+        gf_unresolved_set_dem_step(u, dt_s);
+}
+
+int gf_coupling_grain_state(const gf_coupling *c, size_t i, double *K_kg_s, double uf_m_s[3], double *eps)
+{
+    const gf_unresolved *u = diag_of(c);
+    return u ? gf_unresolved_grain_state(u, i, K_kg_s, uf_m_s, eps) : 0;
+}
+
+void gf_coupling_mean_fluid_velocity(const gf_coupling *c, double u_m_s[3])
+{
+    const gf_unresolved *u = diag_of(c);
+    if (u)
+        gf_unresolved_mean_fluid_velocity(u, u_m_s);
+    else
+        u_m_s[0] = u_m_s[1] = u_m_s[2] = NAN;
 }

@@ -26,8 +26,11 @@
  * Grains in air (r ≈ 30-60, St >> 10) fall in the "none" tier; grains in water
  * (r ≈ 2) never do. Everywhere else the fluid carries the pore pressure that
  * delays or accelerates a collapse (Rondon et al. 2011; Izard 2014 §5.5), so
- * the tier is "unresolved" (the only fluid tier the engine has; "resolved"
- * will be chosen by a later rule for D/cell studies only).
+ * a fluid tier is needed: the registered tiers (gf_coupling_table.c) are asked
+ * in their registry order, cheapest first, and the first whose auto_fits
+ * accepts the run is chosen; the reason names the regime and that tier's
+ * answer. The resolved tier declines (its cost grows as (D/dx)^3 per grain:
+ * it is the accuracy reference, named explicitly), so auto gives "unresolved".
  *
  * Dry input (no fluid: St = r = +inf, gf_groups_compute) gives "none".
  * Refused (GF_ERR_PHYSICS/GF_ERR_ARG, one line naming the value): St or r NaN,
@@ -42,19 +45,21 @@
 #define GF_TIER_DRY_MIN_STOKES 10.0
 #define GF_TIER_DRY_MIN_R 10.0
 
-typedef enum gf_tier { GF_TIER_NONE = 0, GF_TIER_UNRESOLVED } gf_tier;
+/* GF_TIER_FLUID: a registered coupling tier, named by gf_tier_choice.model.
+ * GF_TIER_UNRESOLVED is its older name (the registry's first row). */
+typedef enum gf_tier { GF_TIER_NONE = 0, GF_TIER_FLUID = 1, GF_TIER_UNRESOLVED = GF_TIER_FLUID } gf_tier;
 
 typedef struct gf_tier_choice {
     gf_tier tier;
-    const char *model;   /* "none" or "unresolved": the value for spec.fluid.model */
-    char reason[200];    /* one line, recorded as the fluid_model_reason attribute */
+    const char *model;   /* "none" or a coupling tier's name: the value for spec.fluid.model */
+    char reason[320];    /* one line, recorded as the fluid_model_reason attribute */
 } gf_tier_choice;
 
 /* Tier for (St, r); out->reason says why, with the numbers. */
 gf_status gf_tier_choose(gf_ctx *ctx, double stokes_St, double density_ratio_r, gf_tier_choice *out);
 /* Same, from the scales of a run (stokes_St, density_ratio_r). */
 gf_status gf_tier_from_scales(gf_ctx *ctx, const gf_scales *scales, gf_tier_choice *out);
-/* "none", "unresolved". */
+/* "none", or the name of the first registered coupling tier. */
 const char *gf_tier_name(gf_tier tier);
 
 #endif

@@ -20,7 +20,7 @@
 
 #include "fluid/gf_fluid.h"
 
-static double advecting_velocity(const gf_grid *g, const double *const u[3], int a, int b, int i, int j, int k)
+double gf_fluid_advecting_velocity(const gf_grid *g, const double *const u[3], int a, int b, int i, int j, int k)
 {
     /* component b at the face of u_a: mean of the four b-faces around it */
     int idx[3] = {i, j, k};
@@ -60,7 +60,7 @@ void gf_fluid_advect(gf_fluid *f, double dt_s)
                     for (int d = 0; d < 3; ++d) {
                         if (g->n[d] == 1 && g->periodic[d])
                             continue;  /* a single periodic cell: no variation along d */
-                        double vd = d == a ? u[fi] : advecting_velocity(g, uu, a, d, i, j, k);
+                        double vd = d == a ? u[fi] : gf_fluid_advecting_velocity(g, uu, a, d, i, j, k);
                         double nb = gf_grid_face_neighbour(g, u, a, i, j, k, d, vd > 0.0 ? -1 : +1);
                         adv += vd > 0.0 ? vd * (u[fi] - nb) / g->h_m[d] : vd * (nb - u[fi]) / g->h_m[d];
                     }

@@ -70,6 +70,8 @@ void gf_fluid_advect(gf_fluid *f, double dt_s);
 gf_status gf_fluid_viscous(gf_ctx *ctx, gf_fluid *f, double dt_s);
 /* Step 3: implicit drag + projection (gf_project.c): u = u^{n+1}, p += phi. Uses eps, eps_old, beta, beta_v. */
 gf_status gf_fluid_project(gf_ctx *ctx, gf_fluid *f, double dt_s);
+/* Component b of the velocity at the face (i,j,k) of component a: the mean of the four b-faces around it. */
+double gf_fluid_advecting_velocity(const gf_grid *g, const double *const u[3], int a, int b, int i, int j, int k);
 /* Largest |u| component over the faces, m/s. */
 double gf_fluid_max_speed(const gf_fluid *f);
 /* 0 when every velocity and pressure is finite. */

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 
 #include "fluid/gf_fluid.h"
+#include "fluid/gf_fluid_ns2.h"
 
 #define POIS_G 8.0 /* body force, L = nu = 1: u_max = G L^2/(8 nu) = 1 */
 
@@ -111,7 +112,35 @@ static void velocity_error(const gf_fluid_exact_case *c, const gf_fluid *f, doub
     r->err_max = mx / scale;
 }
 
-gf_status gf_fluid_exact_run(gf_ctx *ctx, const gf_fluid_exact_case *c, gf_fluid_exact_result *out)
+/* The resolved tier's step (gf_fluid_ns2.h) without forcing: AB2 rates, CN, projection. */
+static gf_status run_ns2(gf_ctx *ctx, gf_fluid *f, double dt, long steps)
+{
+    const gf_grid *g = &f->grid;
+    double *A[3], *A_old[3], *r[3];
+    int ok = 1;
+    for (int a = 0; a < 3; ++a) {
+        ok &= (A[a] = calloc(g->n_faces[a], sizeof(double))) != NULL;
+        ok &= (A_old[a] = calloc(g->n_faces[a], sizeof(double))) != NULL;
+        ok &= (r[a] = calloc(g->n_faces[a], sizeof(double))) != NULL;
+    }
+    gf_status st = ok ? GF_OK : GF_FAIL(ctx, GF_ERR_NOMEM, "fluid exact case: out of memory");
+    for (long s = 0; s < steps && st == GF_OK; ++s) {
+        gf_fluid_ns2_advection(f, A);
+        gf_fluid_ns2_rates(f, (const double *const *)A, (const double *const *)(s == 0 ? A : A_old), r);
+        st = gf_fluid_ns2_viscous(ctx, f, (const double *const *)r, NULL, dt);
+        if (st == GF_OK)
+            st = gf_fluid_ns2_project(ctx, f, dt);
+        for (int a = 0; a < 3; ++a) {
+            double *t = A_old[a];
+            A_old[a] = A[a], A[a] = t;
+        }
+    }
+    for (int a = 0; a < 3; ++a)
+        free(A[a]), free(A_old[a]), free(r[a]);
+    return st;
+}
+
+static gf_status run_case(gf_ctx *ctx, const gf_fluid_exact_case *c, int ns2, gf_fluid_exact_result *out)
 {
     if (c->n < 2 || !(c->dt > 0.0) || !(c->t_end > 0.0) || (c->problem == GF_EXACT_TAYLOR_GREEN && !(c->re > 0.0)))
         return GF_FAIL(ctx, GF_ERR_ARG, "fluid exact case: need n >= 2, dt > 0, t_end > 0, Re > 0 (n %d, dt %g, "
@@ -122,7 +151,11 @@ gf_status gf_fluid_exact_run(gf_ctx *ctx, const gf_fluid_exact_case *c, gf_fluid
     long steps = (long)ceil(c->t_end / c->dt - 1e-9);
     double dt = c->t_end / (double)steps;
     gf_status st = GF_OK;
-    for (long s = 0; s < steps && st == GF_OK; ++s) {
+    if (ns2 && c->problem == GF_EXACT_TAYLOR_GREEN)
+        st = run_ns2(ctx, f, dt, steps);
+    else if (ns2)
+        st = GF_FAIL(ctx, GF_ERR_ARG, "fluid exact case: the AB2/CN step runs Taylor-Green only");
+    for (long s = 0; s < steps && st == GF_OK && !ns2; ++s) {
         gf_fluid_advect(f, dt);                  /* work = dt (b - (u.grad)u) */
         st = gf_fluid_viscous(ctx, f, dt);       /* u** */
         if (st == GF_OK)
@@ -138,6 +171,16 @@ gf_status gf_fluid_exact_run(gf_ctx *ctx, const gf_fluid_exact_case *c, gf_fluid
     }
     gf_fluid_destroy(&f);
     return st;
+}
+
+gf_status gf_fluid_exact_run(gf_ctx *ctx, const gf_fluid_exact_case *c, gf_fluid_exact_result *out)
+{
+    return run_case(ctx, c, 0, out);
+}
+
+gf_status gf_fluid_exact_run_ns2(gf_ctx *ctx, const gf_fluid_exact_case *c, gf_fluid_exact_result *out)
+{
+    return run_case(ctx, c, 1, out);
 }
 
 double gf_fluid_exact_order(double e_coarse, double e_fine, double h_coarse, double h_fine)

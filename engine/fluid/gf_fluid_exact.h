@@ -56,6 +56,9 @@ typedef struct gf_fluid_exact_result {
 
 /* Runs the case. Errors: n < 2, dt or t_end <= 0, a failed fluid step. */
 gf_status gf_fluid_exact_run(gf_ctx *ctx, const gf_fluid_exact_case *c, gf_fluid_exact_result *out);
+/* The same with the resolved tier's AB2/Crank-Nicolson step (gf_fluid_ns2.h), no forcing; TAYLOR_GREEN only
+ * (that step has no body force). */
+gf_status gf_fluid_exact_run_ns2(gf_ctx *ctx, const gf_fluid_exact_case *c, gf_fluid_exact_result *out);
 
 /* Order between two grids: ln(e_coarse / e_fine) / ln(h_coarse / h_fine). */
 double gf_fluid_exact_order(double e_coarse, double e_fine, double h_coarse, double h_fine);

@@ -8,6 +8,7 @@
 /* --- declarations (one per scene) --- */
 extern const gf_scene_desc gf_scene_avalanche;
 extern const gf_scene_desc gf_scene_binary_collision;
+extern const gf_scene_desc gf_scene_bounce;
 extern const gf_scene_desc gf_scene_column_collapse;
 extern const gf_scene_desc gf_scene_elastic_gas;
 extern const gf_scene_desc gf_scene_friction_clamp;
@@ -20,6 +21,7 @@ extern const gf_scene_desc gf_scene_silo;
 static const gf_scene_desc *const gf_scene_table[] = {
     &gf_scene_avalanche,
     &gf_scene_binary_collision,
+    &gf_scene_bounce,
     &gf_scene_column_collapse,
     &gf_scene_elastic_gas,
     &gf_scene_friction_clamp,

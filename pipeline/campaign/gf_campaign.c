@@ -9,6 +9,7 @@
 #include "campaign/gf_groups_map.h"
 #include "campaign/gf_spec_schema.h"
 #include "campaign/gf_spec_text.h"
+#include "coupling/gf_coupling.h"
 #include "scenes/gf_scene.h"
 
 #define MAX_SETS 64
@@ -169,6 +170,23 @@ static const gf_cfg_node *scene_key_node(const loader *L, const gf_cfg_node *var
 }
 
 /* One run: variant v, grid point k. */
+/* The node of the key an engine message opens with ("fluid.d_over_dx = 4: ..."): the key when the file
+ * sets it, else its section, else fallback. The step's refusal names contact.dt_over_tc, which the file
+ * may set through contact.t_contact_nd instead. */
+static const gf_cfg_node *key_named_by(const loader *L, const char *msg, const gf_cfg_node *fallback)
+{
+    char sec[64] = "", key[64] = "";
+    if (sscanf(msg, "%63[a-z_].%63[a-zA-Z0-9_]", sec, key) != 2)
+        return fallback;
+    const gf_cfg_node *section = gf_cfg_get(L->root, sec);
+    if (!section)
+        return fallback;
+    const gf_cfg_node *node = gf_cfg_get(section, key);
+    if (!node && strcmp(key, "dt_over_tc") == 0)
+        node = gf_cfg_get(section, "t_contact_nd");
+    return node ? node : section;
+}
+
 static gf_status build_run(loader *L, int v, int k, int index, gf_campaign_run *run)
 {
     gf_ctx *ctx = L->ctx;
@@ -236,6 +254,9 @@ static gf_status build_run(loader *L, int v, int k, int index, gf_campaign_run *
         const gf_cfg_node *key = cont ? gf_cfg_get(cont, "mu_2") : NULL;
         at = (key && strstr(gf_ctx_message(ctx), "mu_2")) ? key : cont ? cont : method ? method : at;
     }
+    if (st == GF_OK && strcmp(run->spec.fluid.model, "none") != 0 && strcmp(run->spec.fluid.model, "auto") != 0 &&
+        (st = gf_coupling_check(ctx, &run->spec)) != GF_OK)
+        at = key_named_by(L, gf_ctx_message(ctx), at); /* the coupling tier's refusal, at the key it names */
     if (st != GF_OK) {
         char msg[512];
         snprintf(msg, sizeof msg, "%s", gf_ctx_message(ctx));

@@ -1,0 +1,522 @@
+/*
+ * The resolved tier ("resolved"): Navier-Stokes over the whole domain,
+ * inside the grains too, on a MAC grid of D/dx = spec.fluid.d_over_dx cells
+ * per diameter, with immersed-boundary direct forcing on every grain (Uhlmann,
+ * J. Comput. Phys. 209, 2005; Izard 2014 §2.2 and §3.1.2.1, the method of the
+ * JADIM/GraDyM coupling of Izard, Bonometti & Lacaze, J. Fluid Mech. 747, 2014).
+ *
+ * One fluid step of dt with the grains frozen (Izard 2014 §2.3.1):
+ *   1. grain-to-face maps and solid fractions alpha_i (coupling/gf_ibm.h);
+ *   2. AB2 rates and the predictor u~ (fluid/gf_fluid_ns2.h);
+ *   3. forcing f = alpha (U - u~)/dt, and each grain's force and torque from
+ *      the forcing integral, F_i = -(rho rho_p/(rho_p - rho)) int alpha_i (U_i - u~)/dt;
+ *   4. Crank-Nicolson viscous step with f, projection (FFT Poisson);
+ * then the DEM runs its substeps with F_i and T_i held (gf_coupling_add_forces),
+ * contacts and lubrication recomputed at every substep. The fluid carries the
+ * pressure in excess of the hydrostatic one, so F_i contains the buoyancy and
+ * the step loop adds m g as for a dry grain.
+ *
+ * Limits (checked by gf_resolved_check before a run and at every step):
+ *   - D/dx >= 6: below, the shell of alpha (about three cells) is as thick as
+ *     the grain's radius and the grain is no longer resolved (the thesis uses
+ *     10-40, §3.1.3.1, Table 3.2);
+ *   - rho_p/rho >= 1.7: the force formula is singular at rho_p = rho and the
+ *     thesis' lowest ratio is 1.7 (§3.1.3.1);
+ *   - advective: sum_d |u_d| dt/h <= 1 (the AB2/central step diverges beyond;
+ *     gf_coupling_dt_max_s keeps spec.fluid.cfl);
+ *   - viscous: nu dt/dx^2 <= 1, the predictor's explicit viscous term (the
+ *     one the forcing sees) spreads at most a cell per step; the thesis'
+ *     settling run sits at 0.98 (dt sqrt(g/D) = 0.04, D/dx = 20, Ar = 800).
+ * The gravity axis should be closed by walls: with a periodic gravity axis the
+ * grains' excess weight accelerates the whole fluid (no mean-pressure
+ * balance yet; the unresolved tier has one).
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/gf_timer.h"
+#include "coupling/gf_coupling_tier.h"
+#include "coupling/gf_ibm.h"
+#include "fluid/gf_fluid.h"
+#include "fluid/gf_fluid_ns2.h"
+
+#define RESOLVED_MIN_D_OVER_DX 6.0
+#define RESOLVED_DEFAULT_D_OVER_DX 16.0
+#define RESOLVED_MIN_DENSITY_RATIO 1.7
+#define RESOLVED_VISCOUS_LIMIT 1.0   /* nu dt / dx^2 */
+
+enum { RF_ALPHA, RF_U, RF_V, RF_W, RF_P, RF_N };
+
+static const gf_var_info resolved_vars[RF_N] = {
+    {"solid_fraction", "1", "solid volume fraction alpha of the immersed boundary (cell-centred)", NULL},
+    {"u_fluid", "m s-1", "fluid velocity along x (cell-centred, grains included)", NULL},
+    {"v_fluid", "m s-1", "fluid velocity along y (cell-centred, grains included)", NULL},
+    {"w_fluid", "m s-1", "fluid velocity along z (cell-centred, grains included)", NULL},
+    {"excess_pressure", "Pa", "fluid pressure minus hydrostatic", NULL},
+};
+
+typedef struct gf_resolved {
+    gf_coupling base;  /* first member: the tier row */
+    gf_ctx *ctx;
+    gf_run_spec spec;
+    gf_coupling_setup setup;
+    gf_fluid *fluid;
+    gf_ibm_map map;
+    double *A[3], *A_old[3], *r[3], *u_pred[3], *force[3], *alpha_sum[3], *aU[3];
+    double *fields[RF_N];
+    int first_step;
+    /* what the last fluid step left for the substeps, per grain */
+    int64_t *held_id;
+    double *held_F, *held_T;
+    size_t n_held, cap_held;
+    uint64_t held_epoch;
+    int held_epoch_known;
+    long n_steps;
+    double fluid_s;
+} gf_resolved;
+
+static gf_resolved *R_(gf_coupling *c) { return (gf_resolved *)c; }
+static const gf_resolved *CR(const gf_coupling *c) { return (const gf_resolved *)c; }
+
+static double d_over_dx(const gf_run_spec *spec)
+{
+    return spec->fluid.d_over_dx > 0.0 ? spec->fluid.d_over_dx : RESOLVED_DEFAULT_D_OVER_DX;
+}
+
+/* --- checks -------------------------------------------------------------------------------------- */
+
+static gf_status resolved_check(gf_ctx *ctx, const gf_run_spec *spec)
+{
+    const gf_fluid_spec *fs = &spec->fluid;
+    double n = d_over_dx(spec);
+    if (!(fs->density_kg_m3 > 0.0) || !(fs->viscosity_Pa_s > 0.0))
+        return GF_FAIL(ctx, GF_ERR_CONFIG, "fluid: density (%g kg/m3) and viscosity (%g Pa s) must be > 0 for the "
+                       "resolved tier", fs->density_kg_m3, fs->viscosity_Pa_s);
+    if (!(n >= RESOLVED_MIN_D_OVER_DX) || n > 64.0)
+        return GF_FAIL(ctx, GF_ERR_CONFIG, "fluid.d_over_dx = %g: the resolved tier needs D/dx >= %g (the solid "
+                       "fraction's shell is ~3 cells; Izard 2014 uses 10-40) and at most 64", n, RESOLVED_MIN_D_OVER_DX);
+    double r = spec->grains.density_kg_m3 / fs->density_kg_m3;
+    if (!(r >= RESOLVED_MIN_DENSITY_RATIO))
+        return GF_FAIL(ctx, GF_ERR_CONFIG, "grains.density_kg_m3 / fluid.density_kg_m3 = %.4g: the resolved tier's "
+                       "force rho rho_p/(rho_p - rho) int f is singular at 1 and needs rho_p/rho >= %g (Izard 2014 "
+                       "§3.1.3.1)", r, RESOLVED_MIN_DENSITY_RATIO);
+    if (!(fs->cfl > 0.0 && fs->cfl <= 1.0))
+        return GF_FAIL(ctx, GF_ERR_CONFIG, "fluid.cfl = %g must be in (0, 1]", fs->cfl);
+    /* the fluid step is a whole number (>= 1) of DEM steps: a DEM step beyond the fluid's limits would
+     * force a fluid step that breaks them */
+    double D = spec->grains.diameter_m, h = D / n, nu = fs->viscosity_Pa_s / fs->density_kg_m3;
+    double dt_dem = gf_run_spec_dt_s(spec);
+    double dt_visc = RESOLVED_VISCOUS_LIMIT * h * h / nu;
+    double dt_adv = spec->gravity_m_s2 > 0.0 ? h / sqrt(spec->gravity_m_s2 * D) : INFINITY;
+    if (dt_dem > dt_visc)
+        return GF_FAIL(ctx, GF_ERR_NUMERIC, "contact.dt_over_tc: the DEM step %.3g s exceeds the resolved fluid "
+                       "step's viscous limit nu dt/dx^2 <= %g, dt <= %.3g s at D/dx = %g (shorten t_c or dt/t_c, or "
+                       "coarsen the grid)", dt_dem, RESOLVED_VISCOUS_LIMIT, dt_visc, n);
+    if (dt_dem > dt_adv)
+        return GF_FAIL(ctx, GF_ERR_NUMERIC, "contact.dt_over_tc: the DEM step %.3g s exceeds the resolved fluid "
+                       "step's advective limit sqrt(gD) dt/dx <= 1, dt <= %.3g s at D/dx = %g", dt_dem, dt_adv, n);
+    return GF_OK;
+}
+
+/* The resolved tier is the accuracy reference, chosen by name: `fluid: auto` never picks it. */
+static int resolved_auto_fits(const gf_tier_query *q, char *why, size_t n)
+{
+    (void)q;
+    snprintf(why, n, "resolved: grain-resolved, cost ~ (D/dx)^3 cells per grain: chosen by name only");
+    return 0;
+}
+
+/* --- set-up ---------------------------------------------------------------------------------------- */
+
+static gf_grid_bc map_bc(gf_fluid_bc b)
+{
+    return b == GF_BC_PERIODIC ? GF_GRID_PERIODIC : b == GF_BC_FREE_SLIP ? GF_GRID_FREE_SLIP : GF_GRID_NO_SLIP;
+}
+
+static gf_status grid_params(gf_ctx *ctx, const gf_run_spec *spec, const gf_coupling_setup *setup,
+                             gf_fluid_params *fp)
+{
+    double h = spec->grains.diameter_m / d_over_dx(spec);
+    *fp = (gf_fluid_params){.density_kg_m3 = spec->fluid.density_kg_m3, .viscosity_Pa_s = spec->fluid.viscosity_Pa_s};
+    for (int d = 0; d < 3; ++d) {
+        double L = setup->hi_m[d] - setup->lo_m[d];
+        long n = lround(L / h);
+        if (n < 1 || fabs(L / n - h) > 0.01 * h)
+            return GF_FAIL(ctx, GF_ERR_CONFIG, "resolved tier: box edge %d (%.6g m = %.4g D) is not a whole number of "
+                           "cells D/%g", d, L, L / spec->grains.diameter_m, d_over_dx(spec));
+        if (setup->bc[d][0] == GF_BC_PERIODIC && L < spec->grains.diameter_m + 2.0 * GF_IBM_REACH_CELLS * h)
+            return GF_FAIL(ctx, GF_ERR_CONFIG, "resolved tier: periodic box edge %d = %.4g D is shorter than a grain "
+                           "and its forcing shell", d, L / spec->grains.diameter_m);
+        fp->n_cells[d] = (int)n;
+        fp->lo_m[d] = setup->lo_m[d];
+        fp->hi_m[d] = setup->hi_m[d];
+        fp->bc[d][0] = map_bc(setup->bc[d][0]);
+        fp->bc[d][1] = map_bc(setup->bc[d][1]);
+    }
+    if ((double)fp->n_cells[0] * fp->n_cells[1] * fp->n_cells[2] > 1.2e8)
+        return GF_FAIL(ctx, GF_ERR_CAPACITY, "resolved tier: grid %dx%dx%d is too large for one process",
+                       fp->n_cells[0], fp->n_cells[1], fp->n_cells[2]);
+    return GF_OK;
+}
+
+static void resolved_destroy(gf_coupling *cc)
+{
+    gf_resolved *c = R_(cc);
+    if (!c)
+        return;
+    gf_fluid_destroy(&c->fluid);
+    gf_ibm_free(&c->map);
+    for (int a = 0; a < 3; ++a) {
+        free(c->A[a]), free(c->A_old[a]), free(c->r[a]), free(c->u_pred[a]);
+        free(c->force[a]), free(c->alpha_sum[a]), free(c->aU[a]);
+    }
+    for (int v = 0; v < RF_N; ++v)
+        free(c->fields[v]);
+    free(c->held_id), free(c->held_F), free(c->held_T);
+    free(c);
+}
+
+static gf_status resolved_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_coupling_setup *setup,
+                                 gf_coupling **out)
+{
+    *out = NULL;
+    gf_fluid_params fp;
+    GF_TRY(grid_params(ctx, spec, setup, &fp));
+    gf_resolved *c = calloc(1, sizeof *c);
+    if (!c)
+        return GF_FAIL(ctx, GF_ERR_NOMEM, "resolved tier: out of memory");
+    c->ctx = ctx;
+    c->spec = *spec;
+    c->setup = *setup;
+    c->first_step = 1;
+    gf_status st = gf_fluid_create(ctx, &fp, &c->fluid);
+    if (st != GF_OK) {
+        free(c);
+        return st;
+    }
+    const gf_grid *g = &c->fluid->grid;
+    int ok = 1;
+    for (int a = 0; a < 3; ++a) {
+        size_t n = g->n_faces[a];
+        ok &= (c->A[a] = calloc(n, sizeof(double))) != NULL;
+        ok &= (c->A_old[a] = calloc(n, sizeof(double))) != NULL;
+        ok &= (c->r[a] = calloc(n, sizeof(double))) != NULL;
+        ok &= (c->u_pred[a] = calloc(n, sizeof(double))) != NULL;
+        ok &= (c->force[a] = calloc(n, sizeof(double))) != NULL;
+        ok &= (c->alpha_sum[a] = calloc(n, sizeof(double))) != NULL;
+        ok &= (c->aU[a] = calloc(n, sizeof(double))) != NULL;
+    }
+    for (int v = 0; v < RF_N; ++v)
+        ok &= (c->fields[v] = calloc(g->n_cells, sizeof(double))) != NULL;
+    if (!ok) {
+        resolved_destroy(&c->base);
+        return GF_FAIL(ctx, GF_ERR_NOMEM, "resolved tier: out of memory for %zu cells", g->n_cells);
+    }
+    gf_log(ctx, GF_LOG_INFO, "coupling: resolved, %dx%dx%d cells of %.3g m (D/dx = %g)", g->n[0], g->n[1], g->n[2],
+           g->h_m[0], d_over_dx(spec));
+    *out = &c->base;
+    return GF_OK;
+}
+
+/* --- limits ---------------------------------------------------------------------------------------- */
+
+static double advective_rate(const gf_resolved *c, const gf_particles *p)
+{
+    const gf_grid *g = &c->fluid->grid;
+    double s = 0.0;
+    for (int a = 0; a < 3; ++a) {
+        double m = 0.0;
+        for (size_t q = 0; q < g->n_faces[a]; ++q)
+            m = fmax(m, fabs(c->fluid->u[a][q]));
+        if (p) {
+            const double *v = a == 0 ? p->vx_m_s : a == 1 ? p->vy_m_s : p->vz_m_s;
+            for (size_t i = 0; i < p->n_local; ++i)
+                m = fmax(m, fabs(v[i]));
+        }
+        s += m / g->h_m[a];
+    }
+    return s;
+}
+
+static double resolved_dt_max_s(const gf_coupling *cc, const gf_particles *p)
+{
+    const gf_resolved *c = CR(cc);
+    const gf_grid *g = &c->fluid->grid;
+    double h = g->h_m[0], nu = c->fluid->mu_Pa_s / c->fluid->rho_kg_m3, cfl = c->spec.fluid.cfl;
+    double rate = advective_rate(c, p);
+    /* before anything moves: the grains' free-fall speed over D, so the step sized at t = 0 holds */
+    double gm = sqrt(c->setup.gravity_m_s2[0] * c->setup.gravity_m_s2[0] +
+                     c->setup.gravity_m_s2[1] * c->setup.gravity_m_s2[1] +
+                     c->setup.gravity_m_s2[2] * c->setup.gravity_m_s2[2]);
+    double D = c->spec.grains.diameter_m;
+    double rate0 = gm > 0.0 ? sqrt(gm * D) / h : 0.0;
+    double dt = cfl / fmax(fmax(rate, rate0), 1e-300);
+    return fmin(dt, 0.5 * RESOLVED_VISCOUS_LIMIT * h * h / nu);
+}
+
+static gf_status check_step(const gf_resolved *c, const gf_particles *p, double dt_s)
+{
+    const gf_grid *g = &c->fluid->grid;
+    double h = g->h_m[0], nu = c->fluid->mu_Pa_s / c->fluid->rho_kg_m3;
+    if (!(dt_s > 0.0) || !isfinite(dt_s))
+        return GF_FAIL(c->ctx, GF_ERR_ARG, "resolved fluid step: dt = %g s must be > 0", dt_s);
+    double rate = advective_rate(c, p);
+    if (rate * dt_s > 1.0)
+        return GF_FAIL(c->ctx, GF_ERR_NUMERIC, "resolved fluid step dt = %.3g s breaks the advective limit "
+                       "sum |u| dt/dx = %.2f > 1 (take dt <= %.3g s)", dt_s, rate * dt_s, 1.0 / rate);
+    if (nu * dt_s / (h * h) > RESOLVED_VISCOUS_LIMIT)
+        return GF_FAIL(c->ctx, GF_ERR_NUMERIC, "resolved fluid step dt = %.3g s breaks the viscous limit "
+                       "nu dt/dx^2 = %.2f > %g (take dt <= %.3g s)", dt_s, nu * dt_s / (h * h),
+                       RESOLVED_VISCOUS_LIMIT, RESOLVED_VISCOUS_LIMIT * h * h / nu);
+    return GF_OK;
+}
+
+/* --- fluid step -------------------------------------------------------------------------------------- */
+
+static gf_status reserve_held(gf_resolved *c, size_t n)
+{
+    if (n <= c->cap_held)
+        return GF_OK;
+    size_t cap = n + n / 2 + 8;
+    int64_t *id = realloc(c->held_id, cap * sizeof *id);
+    if (id)
+        c->held_id = id;
+    double *F = realloc(c->held_F, 3 * cap * sizeof *F);
+    if (F)
+        c->held_F = F;
+    double *T = realloc(c->held_T, 3 * cap * sizeof *T);
+    if (T)
+        c->held_T = T;
+    if (!id || !F || !T)
+        return GF_FAIL(c->ctx, GF_ERR_NOMEM, "resolved tier: out of memory for %zu grains", n);
+    c->cap_held = cap;
+    return GF_OK;
+}
+
+static void output_fields(gf_resolved *c)
+{
+    gf_fluid *f = c->fluid;
+    const gf_grid *g = &f->grid;
+    const double *const as[3] = {c->alpha_sum[0], c->alpha_sum[1], c->alpha_sum[2]};
+    gf_ibm_cell_fraction(g, as, c->fields[RF_ALPHA]);
+    for (int a = 0; a < 3; ++a)
+        gf_grid_cell_velocity(g, a, f->u[a], c->fields[RF_U + a]);
+    memcpy(c->fields[RF_P], f->p_Pa, g->n_cells * sizeof(double));
+}
+
+static gf_status resolved_fluid_step(gf_coupling *cc, const gf_particles *p, double dt_s)
+{
+    gf_resolved *c = R_(cc);
+    double t0 = gf_wtime();
+    gf_fluid *f = c->fluid;
+    GF_TRY(check_step(c, p, dt_s));
+    GF_TRY(gf_ibm_build(c->ctx, &c->map, &f->grid, p));
+    GF_TRY(reserve_held(c, p->n_local));
+    gf_fluid_ns2_advection(f, c->A);
+    const double *const A[3] = {c->A[0], c->A[1], c->A[2]};
+    const double *const A_old[3] = {c->A_old[0], c->A_old[1], c->A_old[2]};
+    gf_fluid_ns2_rates(f, A, c->first_step ? A : A_old, c->r);
+    const double *const r[3] = {c->r[0], c->r[1], c->r[2]};
+    gf_fluid_ns2_predict(f, r, dt_s, c->u_pred);
+    const double *const up[3] = {c->u_pred[0], c->u_pred[1], c->u_pred[2]};
+    gf_ibm_force(&c->map, &f->grid, p, up, dt_s, f->rho_kg_m3, c->force, c->alpha_sum, c->aU, c->held_F, c->held_T);
+    for (size_t i = 0; i < p->n_local; ++i)
+        c->held_id[i] = p->id[i];
+    c->n_held = p->n_local;
+    c->held_epoch = p->order_epoch, c->held_epoch_known = 1;
+    const double *const force[3] = {c->force[0], c->force[1], c->force[2]};
+    GF_TRY(gf_fluid_ns2_viscous(c->ctx, f, r, force, dt_s));
+    GF_TRY(gf_fluid_ns2_project(c->ctx, f, dt_s));
+    for (int a = 0; a < 3; ++a) { /* A^n becomes A^{n-1} */
+        double *t = c->A_old[a];
+        c->A_old[a] = c->A[a];
+        c->A[a] = t;
+    }
+    c->first_step = 0;
+    output_fields(c);
+    if (gf_fluid_nonfinite(f))
+        return GF_FAIL(c->ctx, GF_ERR_NUMERIC, "resolved fluid step: non-finite velocity or pressure");
+    c->n_steps++;
+    c->fluid_s += gf_wtime() - t0;
+    return GF_OK;
+}
+
+/* --- forces on the grains ------------------------------------------------------------------------------- */
+
+static void add_held(const gf_resolved *c, size_t h, gf_particles *p, size_t i)
+{
+    if (p->flags[i] & GF_P_GLUED)
+        return;
+    p->fx_N[i] += c->held_F[3 * h], p->fy_N[i] += c->held_F[3 * h + 1], p->fz_N[i] += c->held_F[3 * h + 2];
+    p->tx_N_m[i] += c->held_T[3 * h], p->ty_N_m[i] += c->held_T[3 * h + 1], p->tz_N_m[i] += c->held_T[3 * h + 2];
+}
+
+static int resolved_forces_in_order(const gf_coupling *cc, const gf_particles *p)
+{
+    const gf_resolved *c = CR(cc);
+    return c->first_step || (c->held_epoch_known && c->held_epoch == p->order_epoch && c->n_held == p->n_local);
+}
+
+static void resolved_add_forces_range(gf_coupling *cc, gf_particles *p, size_t i0, size_t i1)
+{
+    gf_resolved *c = R_(cc);
+    if (c->first_step)
+        return;
+    for (size_t i = i0; i < i1; ++i)
+        add_held(c, i, p, i);
+}
+
+static gf_status resolved_add_forces(gf_coupling *cc, gf_particles *p)
+{
+    gf_resolved *c = R_(cc);
+    if (c->first_step)
+        return GF_OK; /* no fluid step yet: the fluid is at rest, nothing held */
+    if (resolved_forces_in_order(cc, p)) {
+        resolved_add_forces_range(cc, p, 0, p->n_local);
+        return GF_OK;
+    }
+    /* the store was reordered since the fluid step: match by id (few grains: a linear search each) */
+    for (size_t i = 0; i < p->n_local; ++i)
+        for (size_t h = 0; h < c->n_held; ++h)
+            if (c->held_id[h] == p->id[i]) {
+                add_held(c, h, p, i);
+                break;
+            }
+    return GF_OK;
+}
+
+/* --- outputs, probes, settings ----------------------------------------------------------------------------- */
+
+static double resolved_excess_pressure(const gf_coupling *cc, const double x[3])
+{
+    const gf_resolved *c = CR(cc);
+    const gf_grid *g = &c->fluid->grid;
+    int q[3];
+    for (int d = 0; d < 3; ++d) {
+        int m = (int)floor((x[d] - g->lo_m[d]) / g->h_m[d]);
+        q[d] = m < 0 ? 0 : (m >= g->n[d] ? g->n[d] - 1 : m);
+    }
+    return c->fluid->p_Pa[gf_grid_cell(g, q[0], q[1], q[2])];
+}
+
+static int resolved_fields(const gf_coupling *cc, int n[3], double lo[3], double h[3], const gf_var_info **vars,
+                           const double *const **fields)
+{
+    const gf_resolved *c = CR(cc);
+    const gf_grid *g = &c->fluid->grid;
+    for (int d = 0; d < 3; ++d)
+        n[d] = g->n[d], lo[d] = g->lo_m[d], h[d] = g->h_m[d];
+    *vars = resolved_vars;
+    *fields = (const double *const *)c->fields;
+    return RF_N;
+}
+
+static gf_status resolved_set_gravity(gf_coupling *cc, const double g[3])
+{
+    gf_resolved *c = R_(cc);
+    for (int d = 0; d < 3; ++d)
+        if (!isfinite(g[d]))
+            return GF_FAIL(c->ctx, GF_ERR_ARG, "coupling: gravity component %d is not finite", d);
+    memcpy(c->setup.gravity_m_s2, g, 3 * sizeof(double));
+    return GF_OK;
+}
+
+static double resolved_fluid_mass(const gf_coupling *cc)
+{
+    const gf_resolved *c = CR(cc);
+    const gf_grid *g = &c->fluid->grid;
+    double s = 0.0;
+    for (size_t q = 0; q < g->n_cells; ++q)
+        s += 1.0 - c->fields[RF_ALPHA][q];
+    return c->fluid->rho_kg_m3 * s * g->h_m[0] * g->h_m[1] * g->h_m[2];
+}
+
+static double resolved_flow_rate(const gf_coupling *cc)
+{
+    const gf_resolved *c = CR(cc);
+    const gf_grid *g = &c->fluid->grid;
+    double s = 0.0;
+    for (size_t q = 0; q < g->n_cells; ++q)
+        s += (1.0 - c->fields[RF_ALPHA][q]) * c->fields[RF_U][q];
+    return s * g->h_m[0] * g->h_m[1] * g->h_m[2] / (g->h_m[0] * g->n[0]);
+}
+
+/* --- checkpoint --------------------------------------------------------------------------------------------- */
+
+static const char *const face_names[3][2] = {{"resolved_u", "resolved_adv_u"},
+                                             {"resolved_v", "resolved_adv_v"},
+                                             {"resolved_w", "resolved_adv_w"}};
+
+static gf_status resolved_save(const gf_coupling *cc, gf_restart *r)
+{
+    const gf_resolved *c = CR(cc);
+    const gf_grid *g = &c->fluid->grid;
+    int64_t counts[5] = {g->n[0], g->n[1], g->n[2], c->first_step, c->n_steps};
+    GF_TRY(gf_restart_put_i64(r, "resolved_counts", 5, counts));
+    for (int a = 0; a < 3; ++a) {
+        GF_TRY(gf_restart_put_f64(r, face_names[a][0], g->n_faces[a], c->fluid->u[a]));
+        GF_TRY(gf_restart_put_f64(r, face_names[a][1], g->n_faces[a], c->A_old[a]));
+    }
+    GF_TRY(gf_restart_put_f64(r, "resolved_p", g->n_cells, c->fluid->p_Pa));
+    for (int v = 0; v < RF_N; ++v)
+        GF_TRY(gf_restart_put_f64(r, resolved_vars[v].name, g->n_cells, c->fields[v]));
+    GF_TRY(gf_restart_put_i64(r, "resolved_held_id", c->n_held, c->held_id));
+    GF_TRY(gf_restart_put_f64(r, "resolved_held_F", 3 * c->n_held, c->held_F));
+    return gf_restart_put_f64(r, "resolved_held_T", 3 * c->n_held, c->held_T);
+}
+
+static gf_status resolved_load(gf_coupling *cc, gf_restart *r)
+{
+    gf_resolved *c = R_(cc);
+    const gf_grid *g = &c->fluid->grid;
+    if (!gf_restart_has(r, "resolved_counts"))
+        return GF_FAIL(c->ctx, GF_ERR_CONFIG, "restart: the checkpoint holds no resolved-tier fluid state (a dry run "
+                       "or another tier wrote it)");
+    int64_t counts[5];
+    GF_TRY(gf_restart_get_i64(r, "resolved_counts", 5, counts));
+    if (counts[0] != g->n[0] || counts[1] != g->n[1] || counts[2] != g->n[2])
+        return GF_FAIL(c->ctx, GF_ERR_CONFIG, "restart: the checkpoint's grid is %lldx%lldx%lld cells, this spec "
+                       "builds %dx%dx%d", (long long)counts[0], (long long)counts[1], (long long)counts[2], g->n[0],
+                       g->n[1], g->n[2]);
+    for (int a = 0; a < 3; ++a) {
+        GF_TRY(gf_restart_get_f64(r, face_names[a][0], g->n_faces[a], c->fluid->u[a]));
+        GF_TRY(gf_restart_get_f64(r, face_names[a][1], g->n_faces[a], c->A_old[a]));
+    }
+    GF_TRY(gf_restart_get_f64(r, "resolved_p", g->n_cells, c->fluid->p_Pa));
+    for (int v = 0; v < RF_N; ++v)
+        GF_TRY(gf_restart_get_f64(r, resolved_vars[v].name, g->n_cells, c->fields[v]));
+    size_t n = 0;
+    GF_TRY(gf_restart_len(r, "resolved_held_id", &n));
+    GF_TRY(reserve_held(c, n));
+    GF_TRY(gf_restart_get_i64(r, "resolved_held_id", n, c->held_id));
+    GF_TRY(gf_restart_get_f64(r, "resolved_held_F", 3 * n, c->held_F));
+    GF_TRY(gf_restart_get_f64(r, "resolved_held_T", 3 * n, c->held_T));
+    c->n_held = n;
+    c->held_epoch_known = 0; /* matched by id at the first substep */
+    c->first_step = (int)counts[3];
+    c->n_steps = (long)counts[4];
+    return GF_OK;
+}
+
+const gf_coupling_tier gf_coupling_tier_resolved = {
+    .name = "resolved",
+    .summary = "Navier-Stokes inside the grains too, immersed-boundary direct forcing at D/dx = 8-20",
+    .create = resolved_create,
+    .destroy = resolved_destroy,
+    .check = resolved_check,
+    .auto_fits = resolved_auto_fits,
+    .dt_max_s = resolved_dt_max_s,
+    .fluid_step = resolved_fluid_step,
+    .add_forces = resolved_add_forces,
+    .forces_in_order = resolved_forces_in_order,
+    .add_forces_range = resolved_add_forces_range,
+    .excess_pressure_Pa = resolved_excess_pressure,
+    .fields = resolved_fields,
+    .set_gravity = resolved_set_gravity,
+    .save = resolved_save,
+    .load = resolved_load,
+    .fluid_flow_rate = resolved_flow_rate,
+    .fluid_mass_kg = resolved_fluid_mass,
+};

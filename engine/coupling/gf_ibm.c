@@ -1,0 +1,201 @@
+/* Immersed boundary of the resolved tier: solid fraction, maps, forcing; equations and sources in gf_ibm.h. */
+#include "coupling/gf_ibm.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+double gf_ibm_alpha(double s_m, const double n[3], double dx_m)
+{
+    double lambda = fabs(n[0]) + fabs(n[1]) + fabs(n[2]);
+    double phi = 0.065 * (1.0 - lambda * lambda) + 0.39;
+    return 0.5 - 0.5 * tanh(s_m / (lambda * phi * M_SQRT2 * dx_m));
+}
+
+void gf_ibm_free(gf_ibm_map *m)
+{
+    for (int a = 0; a < 3; ++a) {
+        free(m->start[a]);
+        free(m->e[a]);
+    }
+    memset(m, 0, sizeof *m);
+}
+
+static gf_status reserve_grains(gf_ctx *ctx, gf_ibm_map *m, size_t n)
+{
+    if (n + 1 <= m->cap_grains)
+        return GF_OK;
+    size_t cap = n + n / 2 + 8;
+    for (int a = 0; a < 3; ++a) {
+        size_t *s = realloc(m->start[a], cap * sizeof *s);
+        if (!s)
+            return GF_FAIL(ctx, GF_ERR_NOMEM, "ibm: out of memory for %zu grains", n);
+        m->start[a] = s;
+    }
+    m->cap_grains = cap;
+    return GF_OK;
+}
+
+static gf_status push(gf_ctx *ctx, gf_ibm_map *m, int a, const gf_ibm_entry *e)
+{
+    if (m->n_e[a] == m->cap_e[a]) {
+        size_t cap = m->cap_e[a] ? 2 * m->cap_e[a] : 4096;
+        gf_ibm_entry *q = realloc(m->e[a], cap * sizeof *q);
+        if (!q)
+            return GF_FAIL(ctx, GF_ERR_NOMEM, "ibm: out of memory for %zu face entries", cap);
+        m->e[a] = q;
+        m->cap_e[a] = cap;
+    }
+    m->e[a][m->n_e[a]++] = *e;
+    return GF_OK;
+}
+
+/* Face index m of component a along axis d mapped into the grid (wrap on periodic axes), -1 when it is not an
+ * unknown (outside, or a wall face). */
+static int face_index(const gf_grid *g, int a, int d, int m)
+{
+    if (g->periodic[d]) {
+        int n = g->n[d];
+        m %= n;
+        return m < 0 ? m + n : m;
+    }
+    if (d == a)
+        return (m >= 1 && m <= g->n[d] - 1) ? m : -1;
+    return (m >= 0 && m < g->n[d]) ? m : -1;
+}
+
+/* The faces of component a around one grain. */
+static gf_status map_grain(gf_ctx *ctx, gf_ibm_map *m, const gf_grid *g, int a, const double xc[3], double R)
+{
+    double h = g->h_m[0], reach = R + GF_IBM_REACH_CELLS * h;
+    int m0[3], m1[3];
+    for (int d = 0; d < 3; ++d) {
+        double off = d == a ? 0.0 : 0.5;
+        m0[d] = (int)ceil((xc[d] - reach - g->lo_m[d]) / g->h_m[d] - off);
+        m1[d] = (int)floor((xc[d] + reach - g->lo_m[d]) / g->h_m[d] - off);
+    }
+    for (int k = m0[2]; k <= m1[2]; ++k) {
+        int kk = face_index(g, a, 2, k);
+        if (kk < 0)
+            continue;
+        for (int j = m0[1]; j <= m1[1]; ++j) {
+            int jj = face_index(g, a, 1, j);
+            if (jj < 0)
+                continue;
+            for (int i = m0[0]; i <= m1[0]; ++i) {
+                int ii = face_index(g, a, 0, i);
+                if (ii < 0)
+                    continue;
+                int q[3] = {i, j, k};
+                gf_ibm_entry e;
+                double r2 = 0.0;
+                for (int d = 0; d < 3; ++d) {
+                    e.r_m[d] = g->lo_m[d] + (q[d] + (d == a ? 0.0 : 0.5)) * g->h_m[d] - xc[d];
+                    r2 += e.r_m[d] * e.r_m[d];
+                }
+                double r = sqrt(r2);
+                double n[3] = {1.0, 0.0, 0.0};
+                if (r > 0.0)
+                    for (int d = 0; d < 3; ++d)
+                        n[d] = e.r_m[d] / r;
+                double lambda = fabs(n[0]) + fabs(n[1]) + fabs(n[2]);
+                double width = lambda * (0.065 * (1.0 - lambda * lambda) + 0.39) * M_SQRT2 * h;
+                if (r - R > GF_IBM_SHELL_WIDTHS * width)
+                    continue;
+                e.alpha = gf_ibm_alpha(r - R, n, h);
+                e.face = gf_grid_face(g, a, ii, jj, kk);
+                GF_TRY(push(ctx, m, a, &e));
+            }
+        }
+    }
+    return GF_OK;
+}
+
+gf_status gf_ibm_build(gf_ctx *ctx, gf_ibm_map *m, const gf_grid *g, const gf_particles *p)
+{
+    size_t n = p->n_local;
+    GF_TRY(reserve_grains(ctx, m, n));
+    m->n_grains = n;
+    for (int a = 0; a < 3; ++a) {
+        m->n_e[a] = 0;
+        for (size_t i = 0; i < n; ++i) {
+            m->start[a][i] = m->n_e[a];
+            const double xc[3] = {p->x_m[i], p->y_m[i], p->z_m[i]};
+            GF_TRY(map_grain(ctx, m, g, a, xc, p->radius_m[i]));
+        }
+        m->start[a][n] = m->n_e[a];
+    }
+    return GF_OK;
+}
+
+/* Velocity component a of grain i's rigid motion at offset r. */
+static double rigid_velocity(const gf_particles *p, size_t i, int a, const double r[3])
+{
+    const double w[3] = {p->wx_rad_s[i], p->wy_rad_s[i], p->wz_rad_s[i]};
+    const double v[3] = {p->vx_m_s[i], p->vy_m_s[i], p->vz_m_s[i]};
+    int b = (a + 1) % 3, c = (a + 2) % 3;
+    return v[a] + w[b] * r[c] - w[c] * r[b];
+}
+
+void gf_ibm_force(const gf_ibm_map *m, const gf_grid *g, const gf_particles *p, const double *const u_pred[3],
+                  double dt_s, double rho_f, double *const force_out[3], double *const alpha_sum[3],
+                  double *const aU[3], double *F_N, double *T_Nm)
+{
+    double dV = g->h_m[0] * g->h_m[1] * g->h_m[2];
+    for (int a = 0; a < 3; ++a) {
+        memset(alpha_sum[a], 0, g->n_faces[a] * sizeof(double));
+        memset(aU[a], 0, g->n_faces[a] * sizeof(double));
+        memset(force_out[a], 0, g->n_faces[a] * sizeof(double));
+        for (size_t i = 0; i < m->n_grains; ++i)
+            for (size_t q = m->start[a][i]; q < m->start[a][i + 1]; ++q) {
+                const gf_ibm_entry *e = &m->e[a][q];
+                alpha_sum[a][e->face] += e->alpha;
+                aU[a][e->face] += e->alpha * rigid_velocity(p, i, a, e->r_m);
+            }
+        for (size_t fi = 0; fi < g->n_faces[a]; ++fi) {
+            double s = alpha_sum[a][fi];
+            if (s > 0.0)
+                force_out[a][fi] = (s < 1.0 ? s : 1.0) * (aU[a][fi] / s - u_pred[a][fi]) / dt_s;
+        }
+        gf_grid_sync_periodic(g, a, force_out[a]);
+        gf_grid_sync_periodic(g, a, alpha_sum[a]);
+    }
+    /* each grain's integral over its own alpha_i (Izard 2014 eqs. (2.32)-(2.33)) */
+    for (size_t i = 0; i < m->n_grains; ++i) {
+        double R = p->radius_m[i];
+        double rho_p = p->mass_kg[i] / (4.0 / 3.0 * M_PI * R * R * R);
+        double factor = -rho_f * rho_p / (rho_p - rho_f) * dV / dt_s;
+        double F[3] = {0, 0, 0}, T[3] = {0, 0, 0};
+        for (int a = 0; a < 3; ++a) {
+            int b = (a + 1) % 3, c = (a + 2) % 3;
+            for (size_t q = m->start[a][i]; q < m->start[a][i + 1]; ++q) {
+                const gf_ibm_entry *e = &m->e[a][q];
+                double fa = e->alpha * (rigid_velocity(p, i, a, e->r_m) - u_pred[a][e->face]);
+                F[a] += fa;
+                T[b] += e->r_m[c] * fa; /* r x (f_a e_a) = f_a (r_c e_b - r_b e_c), (a, b, c) cyclic */
+                T[c] -= e->r_m[b] * fa;
+            }
+        }
+        for (int d = 0; d < 3; ++d) {
+            F_N[3 * i + d] = factor * F[d];
+            T_Nm[3 * i + d] = factor * T[d];
+        }
+    }
+}
+
+void gf_ibm_cell_fraction(const gf_grid *g, const double *const alpha_sum[3], double *alpha_cell)
+{
+    for (int k = 0; k < g->n[2]; ++k)
+        for (int j = 0; j < g->n[1]; ++j)
+            for (int i = 0; i < g->n[0]; ++i) {
+                double s = 0.0;
+                for (int a = 0; a < 3; ++a) {
+                    int q[3] = {i, j, k};
+                    s += alpha_sum[a][gf_grid_face(g, a, q[0], q[1], q[2])];
+                    q[a] += 1;
+                    s += alpha_sum[a][gf_grid_face(g, a, q[0], q[1], q[2])];
+                }
+                s /= 6.0;
+                alpha_cell[gf_grid_cell(g, i, j, k)] = s < 1.0 ? s : 1.0;
+            }
+}

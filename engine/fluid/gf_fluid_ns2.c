@@ -1,0 +1,167 @@
+/* Second-order (AB2/CN) Navier-Stokes step of the resolved tier; scheme and sources in gf_fluid_ns2.h. */
+#include "fluid/gf_fluid_ns2.h"
+
+#include <math.h>
+#include <string.h>
+
+/* Visits every free face of component a: body(fi, i, j, k). */
+#define FOR_FREE_FACES(g, a, fi, i, j, k)                                        \
+    for (int k = 0; k < (g)->nf[a][2]; ++k)                                      \
+        for (int j = 0; j < (g)->nf[a][1]; ++j)                                  \
+            for (int i = 0; i < (g)->nf[a][0]; ++i)                              \
+                for (size_t fi = gf_grid_face(g, a, i, j, k), once_ = 1; once_; once_ = 0) \
+                    if (gf_grid_face_free(g, a, (a) == 0 ? i : (a) == 1 ? j : k))
+
+/* 1 when face (i,j,k) of component a has all its stencil neighbours inside the arrays, no boundary rule
+ * needed: the fast path of the loops below (the generic gf_grid calls handle the rest, the same values). */
+static int interior_face(const gf_grid *g, int a, int i, int j, int k)
+{
+    const int idx[3] = {i, j, k};
+    for (int d = 0; d < 3; ++d) {
+        if (d == a ? (idx[d] < 1 || idx[d] > g->n[d] - 1) : (idx[d] < 1 || idx[d] > g->n[d] - 2))
+            return 0;
+    }
+    return 1;
+}
+
+static double advection_generic(const gf_grid *g, const double *const uu[3], int a, size_t fi, int i, int j, int k)
+{
+    const double *u = uu[a];
+    double adv = 0.0;
+    for (int d = 0; d < 3; ++d) {
+        if (g->n[d] == 1 && g->periodic[d])
+            continue;
+        double vd = d == a ? u[fi] : gf_fluid_advecting_velocity(g, uu, a, d, i, j, k);
+        double up = gf_grid_face_neighbour(g, u, a, i, j, k, d, +1);
+        double dn = gf_grid_face_neighbour(g, u, a, i, j, k, d, -1);
+        adv += vd * (up - dn) / (2.0 * g->h_m[d]);
+    }
+    return adv;
+}
+
+/* Interior face: strides of the face arrays instead of the boundary-aware neighbour calls. */
+static double advection_interior(const gf_grid *g, const double *const uu[3], int a, size_t fi, int i, int j, int k)
+{
+    const double *u = uu[a];
+    const size_t s[3] = {1, (size_t)g->nf[a][0], (size_t)g->nf[a][0] * (size_t)g->nf[a][1]};
+    double adv = 0.0;
+    for (int d = 0; d < 3; ++d) {
+        double vd = u[fi];
+        if (d != a) { /* component d at this face: the four d-faces around it (cells m-1, m along a) */
+            const size_t sd[3] = {1, (size_t)g->nf[d][0], (size_t)g->nf[d][0] * (size_t)g->nf[d][1]};
+            size_t q = gf_grid_face(g, d, i, j, k);
+            vd = 0.25 * (uu[d][q] + uu[d][q + sd[d]] + uu[d][q - sd[a]] + uu[d][q - sd[a] + sd[d]]);
+        }
+        adv += vd * (u[fi + s[d]] - u[fi - s[d]]) / (2.0 * g->h_m[d]);
+    }
+    return adv;
+}
+
+void gf_fluid_ns2_advection(const gf_fluid *f, double *const A[3])
+{
+    const gf_grid *g = &f->grid;
+    const double *const uu[3] = {f->u[0], f->u[1], f->u[2]};
+    for (int a = 0; a < 3; ++a) {
+        memset(A[a], 0, g->n_faces[a] * sizeof(double));
+        FOR_FREE_FACES(g, a, fi, i, j, k)
+        A[a][fi] = -(interior_face(g, a, i, j, k) ? advection_interior(g, uu, a, fi, i, j, k)
+                                                   : advection_generic(g, uu, a, fi, i, j, k));
+        gf_grid_sync_periodic(g, a, A[a]);
+    }
+}
+
+static double laplacian(const gf_grid *g, const double *u, int a, size_t fi, int i, int j, int k)
+{
+    if (!interior_face(g, a, i, j, k))
+        return gf_grid_face_laplacian(g, u, a, i, j, k);
+    const size_t s[3] = {1, (size_t)g->nf[a][0], (size_t)g->nf[a][0] * (size_t)g->nf[a][1]};
+    double l = 0.0;
+    for (int d = 0; d < 3; ++d)
+        l += (u[fi + s[d]] - 2.0 * u[fi] + u[fi - s[d]]) / (g->h_m[d] * g->h_m[d]);
+    return l;
+}
+
+static double pressure_gradient(const gf_grid *g, const double *p, int a, int i, int j, int k)
+{
+    int idx[3] = {i, j, k}, lo[3] = {i, j, k}, hi[3] = {i, j, k};
+    lo[a] = gf_grid_wrap(g, a, idx[a] - 1);
+    hi[a] = gf_grid_wrap(g, a, idx[a]);
+    return (p[gf_grid_cell(g, hi[0], hi[1], hi[2])] - p[gf_grid_cell(g, lo[0], lo[1], lo[2])]) / g->h_m[a];
+}
+
+void gf_fluid_ns2_rates(const gf_fluid *f, const double *const A[3], const double *const A_old[3], double *const r[3])
+{
+    const gf_grid *g = &f->grid;
+    double rho = f->rho_kg_m3, nu = f->mu_Pa_s / rho;
+    for (int a = 0; a < 3; ++a) {
+        memset(r[a], 0, g->n_faces[a] * sizeof(double));
+        FOR_FREE_FACES(g, a, fi, i, j, k)
+        {
+            double adv = 1.5 * A[a][fi] - 0.5 * A_old[a][fi];
+            r[a][fi] = adv + nu * laplacian(g, f->u[a], a, fi, i, j, k) -
+                       pressure_gradient(g, f->p_Pa, a, i, j, k) / rho;
+        }
+        gf_grid_sync_periodic(g, a, r[a]);
+    }
+}
+
+void gf_fluid_ns2_predict(const gf_fluid *f, const double *const r[3], double dt_s, double *const u_pred[3])
+{
+    const gf_grid *g = &f->grid;
+    for (int a = 0; a < 3; ++a)
+        for (size_t q = 0; q < g->n_faces[a]; ++q)
+            u_pred[a][q] = f->u[a][q] + dt_s * r[a][q];
+}
+
+gf_status gf_fluid_ns2_viscous(gf_ctx *ctx, gf_fluid *f, const double *const r[3], const double *const force[3],
+                               double dt_s)
+{
+    const gf_grid *g = &f->grid;
+    double nu = f->mu_Pa_s / f->rho_kg_m3;
+    for (int a = 0; a < 3; ++a) {
+        double *w = f->work[a];
+        for (size_t q = 0; q < g->n_faces[a]; ++q)
+            w[q] = dt_s * (r[a][q] + (force ? force[a][q] : 0.0));
+        /* wall faces stay 0: r and force are 0 there */
+        gf_helmholtz_solve(f->visc[a], 0.5 * dt_s * nu, w);
+        double s = 0.0;
+        for (size_t q = 0; q < g->n_faces[a]; ++q) {
+            w[q] += f->u[a][q];
+            s += w[q] * w[q];
+        }
+        if (!isfinite(s))
+            return GF_FAIL(ctx, GF_ERR_NUMERIC, "resolved fluid step: non-finite velocity (component %d)", a);
+    }
+    return GF_OK;
+}
+
+gf_status gf_fluid_ns2_project(gf_ctx *ctx, gf_fluid *f, double dt_s)
+{
+    const gf_grid *g = &f->grid;
+    double rho = f->rho_kg_m3;
+    double *rhs = f->tmp[0], *phi = f->tmp[1];
+    const double *const w[3] = {f->work[0], f->work[1], f->work[2]};
+    gf_grid_divergence(g, w, NULL, rhs);
+    for (size_t c = 0; c < g->n_cells; ++c)
+        rhs[c] *= rho / dt_s;
+    gf_poisson_solve_const(f->poisson, rhs, phi);
+    for (size_t c = 0; c < g->n_cells; ++c) {
+        if (!isfinite(phi[c]))
+            return GF_FAIL(ctx, GF_ERR_NUMERIC, "resolved fluid step: non-finite pressure (check the fluid step "
+                           "against its advective limit)");
+        f->p_Pa[c] += phi[c];
+    }
+    for (int a = 0; a < 3; ++a) {
+        memcpy(f->u[a], f->work[a], g->n_faces[a] * sizeof(double));
+        FOR_FREE_FACES(g, a, fi, i, j, k)
+        f->u[a][fi] -= dt_s / rho * pressure_gradient(g, phi, a, i, j, k);
+        gf_grid_sync_periodic(g, a, f->u[a]);
+    }
+    const double *const uu[3] = {f->u[0], f->u[1], f->u[2]};
+    gf_grid_divergence(g, uu, NULL, rhs);
+    double res = 0.0;
+    for (size_t c = 0; c < g->n_cells; ++c)
+        res = fmax(res, fabs(rhs[c]) * dt_s);
+    f->last_mass_residual = res;
+    return GF_OK;
+}
