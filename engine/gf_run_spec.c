@@ -30,7 +30,7 @@ void gf_run_spec_defaults(gf_run_spec *s)
     s->output = (gf_output_spec){.interval_nd = 1.0, .particles = 1, .fields = 1, .probes = 1,
                                  .diagnostics = 1, .checkpoint_interval_nd = 0.0};
     snprintf(s->method, sizeof s->method, "dem");
-    /* mu_s, mu_2: this DEM's own steady chute (docs/validation-dem.md), so that the two methods
+    /* mu_s, mu_2: this DEM's own steady chute (docs/notes/validation-dem.md), so that the two methods
      * compare like with like; I0 of Jop et al. 2005. */
     s->continuum = (gf_continuum_spec){.mu_s = 0.280, .mu_2 = 0.703, .I0 = 0.279, .phi = 0.6,
                                        .cell_over_D = 0.5, .gdot_min_nd = 1e-4};

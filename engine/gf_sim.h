@@ -41,11 +41,11 @@ typedef struct gf_sim_options {
      * paths with the plain ones (engine/gf_sim_tuning.h); zero: the defaults. */
     gf_sim_tuning tuning;
 } gf_sim_options;
-/* Default near skin, a fraction of contact.skin_over_D (docs/benchmarks.md, "Near list"). */
+/* Default near skin, a fraction of contact.skin_over_D (docs/notes/benchmarks.md, "Near list"). */
 #define GF_SIM_NEAR_SKIN_DEFAULT 0.05
 
 /* Work a run leaves out because its spec and scene do not need it (issue #6),
- * decided once at gf_sim_create (engine/gf_sim_skips.c; docs/benchmarks.md):
+ * decided once at gf_sim_create (engine/gf_sim_skips.c; docs/notes/benchmarks.md):
  *   GF_SKIP_TANGENTIAL   mu_c = 0 on grains and walls: no tangential force or
  *                        history, no torque, no rotation (exact);
  *   GF_SKIP_LUBRICATION  the spec names a viscous fluid and asks for

@@ -118,7 +118,7 @@ gf_status gf_sim_checkpoint(gf_sim *s, const char *path)
  * continued on two, or the reverse) is sorted into this run's at once: the
  * threads' chunks are contiguous ranges of the store, and in the other order
  * the cut between them is a jagged surface whose grains cross between the
- * cores' caches at every step (docs/benchmarks.md, "Two cores: the cut
+ * cores' caches at every step (docs/notes/benchmarks.md, "Two cores: the cut
  * between the chunks"; a settled bed may not reach its next scheduled sort
  * for thousands of steps). The run is then not the bitwise continuation of
  * the checkpointed one, which it could not be anyway: its chunks differ. The

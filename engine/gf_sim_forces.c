@@ -491,7 +491,7 @@ static gf_drift_d2 finish_runs(gf_sim *s, size_t i0, size_t i1, int in_runs)
 gf_drift_d2 gf_sim_finish_rows(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_sim_accum *acc)
 {
     wall_rows(s, i0, i1, f, acc);
-    const double t0 = gf_wtime(); /* two clock reads per batch of >= 64 rows: no measurable cost (benchmarks.md) */
+    const double t0 = gf_wtime(); /* two clock reads per batch of >= 64 rows: no measurable cost (docs/notes/benchmarks.md) */
     const gf_drift_d2 d2 = finish_runs(s, i0, i1, 0);
     acc->finish_s += gf_wtime() - t0;
     return d2;

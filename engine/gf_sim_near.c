@@ -27,7 +27,7 @@
  * pairs per contact instead of 2. What it costs: the drift measures each
  * grain's displacement from a second reference (three more reads per grain
  * and step), and a near build is one pass over the chunk's part of the list.
- * Measured in docs/benchmarks.md ("Near list").
+ * Measured in docs/notes/benchmarks.md ("Near list").
  */
 #include <stdlib.h>
 #include <string.h>

@@ -15,7 +15,7 @@
  *   3. scatter: the forces and torques are added to i (row sums) and
  *      subtracted from j in list order, exactly the order of the generic
  *      loop (gf_sim_forces.c), so the sums are bitwise the same.
- * Measured on the settled bed of 1e4 grains: docs/benchmarks.md.
+ * Measured on the settled bed of 1e4 grains: docs/notes/benchmarks.md.
  * Glued and sleeping grains (rare) take the decisions of the generic loop in
  * the scan; pairs of two frozen grains are skipped with their history kept.
  */
@@ -37,7 +37,7 @@
 #define GF_PAIR_BLOCK 256
 /* Software prefetch in the scan (see scan_impl), from this many grains on:
  * below, the store stays in the last-level cache and the prefetches are
- * only instructions (docs/benchmarks.md, "Prefetching the partners"). */
+ * only instructions (docs/notes/benchmarks.md, "Prefetching the partners"). */
 #define GF_PAIR_PREFETCH_MIN_GRAINS 25000
 /* How many pairs ahead the scan prefetches a partner's position. */
 #define GF_PAIR_PREFETCH_AHEAD 16
@@ -87,7 +87,7 @@ typedef struct pair_view {
  * Into the L2 only (locality 2, prefetcht1): a block's ~200 candidates make
  * ~3500 requests, several times the 512 lines of a 32 kB L1, so lines sent
  * to the L1 pushed out each other and the lines the passes were reading
- * (docs/benchmarks.md, "Prefetching into the L2"). */
+ * (docs/notes/benchmarks.md, "Prefetching into the L2"). */
 static inline __attribute__((always_inline)) void prefetch_candidate(const gf_sim *s, const pair_view *v, int32_t j,
                                                                      size_t k)
 {
@@ -298,7 +298,7 @@ static void scatter(const pair_view *v, const pair_block *b, size_t nc, double *
  * next step's drift (gf_sim_finish_rows), while their lines are still in the
  * caches. Batches of whole cache lines of doubles (8 grains). prefetch: the
  * finish's own arrays for a batch as long again are requested, so that they
- * arrive while the next rows run (docs/benchmarks.md, "Prefetching into the
+ * arrive while the next rows run (docs/notes/benchmarks.md, "Prefetching into the
  * L2"). */
 static void finish_rows(gf_sim *s, size_t *done, size_t upto, double *const f[6], gf_sim_accum *acc,
                         gf_drift_d2 *d2, int last, int prefetch, size_t i1)

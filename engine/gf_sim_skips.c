@@ -3,7 +3,7 @@
  * gf_sim_create from the spec and the scene, recorded (gf_sim_skips, the
  * `skipped_work` attribute of every output file) and measured side by side
  * with the skip off (gf_sim_tuning.keep_all_work; workflows/bench/skips.sh,
- * docs/benchmarks.md).
+ * docs/notes/benchmarks.md).
  *
  *  - Tangential (GF_SKIP_TANGENTIAL), when mu_c = 0 between grains and on
  *    every wall. The Coulomb cap |F_t| <= mu |F_n| (Cundall & Strack 1979;

@@ -29,7 +29,7 @@
  * it lie together in memory. Those grains are read by one core and written
  * by the other at every step; in 3-D Morton order the cut is a jagged surface
  * and, on the settled bed of 1e4 grains, twice as many grains cross it,
- * spread over many more cache lines (docs/benchmarks.md, "Two cores: the cut
+ * spread over many more cache lines (docs/notes/benchmarks.md, "Two cores: the cut
  * between the chunks").
  *
  * Determinism and restart: the order is a function of the positions, the
@@ -74,7 +74,7 @@ static uint32_t spread2(uint32_t v)
  * periodic axis (the wrap is one more cut between the first and the last
  * chunk). The grains near a cut are read by one core and written by the
  * other at every step; between the two cores of the test machine a cache
- * line takes ~240 ns (gf-core-latency, docs/benchmarks.md). */
+ * line takes ~240 ns (gf-core-latency, docs/notes/benchmarks.md). */
 static int cut_axis(const gf_sim *s, size_t n)
 {
     double lo[3] = {DBL_MAX, DBL_MAX, DBL_MAX}, hi[3] = {-DBL_MAX, -DBL_MAX, -DBL_MAX};

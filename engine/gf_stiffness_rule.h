@@ -21,7 +21,7 @@
  * The rule bounds static (confined) overlaps. A collision at speed v
  * overlaps by v sqrt(m* / k_n), which the rule does not bound; the run-time
  * guard of gf_sim (overlap > 0.1 D stops the run) still applies, and the
- * dynamic overlap is measured in docs/benchmarks.md. Nor does the rule undo
+ * dynamic overlap is measured in docs/notes/benchmarks.md. Nor does the rule undo
  * overlaps that a scene's preparation locked in by friction: column_collapse
  * prepares with t_c = 0.02 sqrt(D/g) (gf_packing.h) and a settled column
  * keeps ~0.006 D of them under any stiffer run contacts, so targets below
@@ -33,7 +33,7 @@
 #include "gf_run_spec.h"
 
 /* The largest contact force of a static pack / p D^2: measured 2.1-4.6 in
- * the settled columns of tests/stress/test_stiffness_rule.c (docs/benchmarks.md). */
+ * the settled columns of tests/stress/test_stiffness_rule.c (docs/notes/benchmarks.md). */
 #define GF_STIFFNESS_CHAIN_FACTOR 6.0
 
 /* Static pressure at the base of a column of height H_m: phi rho_p g H. */

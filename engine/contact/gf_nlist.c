@@ -325,7 +325,7 @@ static void carry_history(gf_nlist *nl, const int64_t *id)
 /* Cost of the rows before i in the force pass, in units of the scan of one
  * candidate: each candidate 1, each contact (pair or wall; a pair within the
  * lubrication range counts as one) GF_NLIST_CONTACT_COST more, each row 2.
- * Measured on the settled 1e4 bed (docs/benchmarks.md): ~6 ns to scan a
+ * Measured on the settled 1e4 bed (docs/notes/benchmarks.md): ~6 ns to scan a
  * candidate, ~24 ns more for a contact's force and scatter, and the floor's
  * wall contacts about as dear as pairs; counting candidates alone left the
  * bottom chunk (its contacts pressed by the weight above, and the floor)

@@ -11,7 +11,7 @@
  * then evicts its own lines, and loads that follow stores 4 KiB apart may
  * stall on a false store-forwarding match ("4K aliasing" in the x86 vendors'
  * optimisation manuals). Staggering the arrays by one line each puts
- * element i of up to 64 arrays in distinct sets (docs/benchmarks.md, "Per-grain
+ * element i of up to 64 arrays in distinct sets (docs/notes/benchmarks.md, "Per-grain
  * arrays staggered by a cache line": about +5 % on a bed of 1e5 grains).
  */
 #ifndef GF_SOA_H

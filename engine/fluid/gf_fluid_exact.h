@@ -4,7 +4,7 @@
  * (advection, implicit viscous step, projection; eps = 1, no drag) on them
  * and returns the velocity error. Used for the convergence order in cell
  * size (tests/fluid/test_fluid_order.c, the accuracy benchmark's
- * fluid_cell_order case, docs/benchmarks.md).
+ * fluid_cell_order case, docs/notes/benchmarks.md).
  *
  *  POISEUILLE  start-up of plane Poiseuille flow: fluid at rest at t = 0
  *              between no-slip walls y = 0 and y = L, driven by a uniform

@@ -8,7 +8,7 @@
  * grains, so that the wall friction is under control"); a plane floor y = 0
  * and a lid well above the fill. The thesis does not say how its glued
  * grains are arranged, and the wall friction they mobilise depends on it
- * (docs/validation-dem.md, row 6: f_p 0.28 on the lattice, 0.34 on the
+ * (docs/notes/validation-dem.md, row 6: f_p 0.28 on the lattice, 0.34 on the
  * random wall). Default (random_walls = 1), a random wall as the rough
  * bases of the other scenes: a layer of glued grains placed by random
  * sequential adsorption (add_random_wall), backed half a grain behind by a
@@ -38,7 +38,7 @@
  * lattice twice the fill height with the run's friction, free rotations and
  * no drag (gf_packing's free pour), at whatever packing they reach (0.60
  * here). With the default 0.05 D floor drop the rebound of that pour leaves
- * the wall friction reversed in the upper column (docs/validation-dem.md,
+ * the wall friction reversed in the upper column (docs/notes/validation-dem.md,
  * row 6, measured), hence the tuned filling by default.
  * done(): mean kinetic energy per mobile grain below 1e-6 m g D (static).
  *

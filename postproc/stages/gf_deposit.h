@@ -29,7 +29,7 @@
  *            collapse, and it bounds the shapes the heap can take (a
  *            straight-flanked triangle no higher than H0 holding it has a
  *            flank no steeper than atan(H0^2 / (2 area)): 14 deg at a = 0.5,
- *            docs/validation-collapse.md, "What mass conservation allows")
+ *            docs/notes/validation-collapse.md, "What mass conservation allows")
  *   shape  = trapezoid when the flank line reaches H_inf at a distance
  *            L_top from the wall with L_top >= max(2 D, 0.1 R_inf), i.e. a
  *            plateau of the full height extends over a finite length at the

@@ -2,10 +2,10 @@
  * Dry granular column collapse in the continuum mu(I) solver, two-phase
  * (granular material and a light Newtonian phase, VOF), 2-D, after Lagree,
  * Staron & Popinet (JFM 686, 2011), side by side with this project's DEM
- * figures (docs/validation-dem.md, "Dry collapse": mean (R_inf - R0)/R0 over
+ * figures (docs/notes/validation-dem.md, "Dry collapse": mean (R_inf - R0)/R0 over
  * packing seeds 1-8 of 0.539, 1.383, 2.94 at a = 0.5, 1, 2; R0 = 16 D).
  * Units D = g = rho_s = 1; phi = 0.6; mu_s = 0.280, mu_2 = 0.703 (this DEM's own
- * steady chute, docs/validation-dem.md), I0 = 0.279; air 1/100 of the bulk
+ * steady chute, docs/notes/validation-dem.md), I0 = 0.279; air 1/100 of the bulk
  * density, viscosity 1e-3. Back wall at x = 0, no-slip floor and walls, open top.
  * Usage: validate_continuum_collapse a [cell_over_D] [t_end] [out.csv]
  * Prints the run-out, the final height, the mass drift and the CPU time; the
