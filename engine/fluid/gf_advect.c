@@ -14,7 +14,7 @@
  * below the physical one wherever the cell Reynolds number |u| h / nu < 2,
  * which holds in the viscous and Stokes regimes this tier targets (collapse
  * Re_p < 2.5, Izard 2014 §5.2); at Re_p ~ 20 with h ~ 2.5 D it is not, and the
- * sphere-scale flow is then over-damped (see docs/validation.md).
+ * sphere-scale flow is then over-damped (see docs/notes/validation-fluid.md).
  */
 #include <string.h>
 

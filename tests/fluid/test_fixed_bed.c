@@ -8,7 +8,7 @@
  * Closure beetstra (fitted to fixed random arrays): G within 10 % of
  * Carman–Kozeny at phi = 0.4 and 0.5 (issue #4). The Ergun errors, and
  * di_felice's (not asserted: built for mobile suspensions, ~30 % low), are
- * printed for docs/validation.md; with argument "ergun" a moderate-Re run
+ * printed for docs/notes/validation-fluid.md; with argument "ergun" a moderate-Re run
  * (Re ~ 10) compares with the full Ergun law.
  */
 #include <stdlib.h>

@@ -11,7 +11,7 @@
  * chi = 3.7 gives n = chi + 1 = 4.7 with the model-A pressure-gradient force
  * (gf_drag.h). With argument "mean_slip" the same check holds the mean-slip
  * closure, Di Felice on the suspension's mean slip (asserted alike). With argument "beetstra" the same run reports Beetstra's
- * fixed-array closure (not asserted; docs/validation.md).
+ * fixed-array closure (not asserted; docs/notes/validation-fluid.md).
  *
  * Set-up: ~16 D periodic cube, cells of 2 D, grains on a jittered simple
  * cubic lattice at phi (random sequential addition jams below 0.4). The mean

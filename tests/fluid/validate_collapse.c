@@ -2,7 +2,7 @@
  * Immersed column collapse, dense vs loose (Rondon, Pouliquen & Aussillous,
  * PoF 23, 2011; Izard 2014 ch. 5), through the full
  * step loop with the unresolved tier. Run by tests/fluid/validate_fluid.sh,
- * which writes docs/validation.md; mode "check" is the ctest test
+ * which writes docs/notes/validation-fluid.md; mode "check" is the ctest test
  * collapse_dense_loose (labels slow, open).
  *
  * Set-up: the column_collapse scene at a = 0.5 (key a=X), R0 = 16 D (the

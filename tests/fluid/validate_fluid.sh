@@ -1,5 +1,5 @@
 #!/bin/sh
-# Regenerates docs/validation.md from the fluid-tier validation runs.
+# Regenerates docs/notes/validation-fluid.md from the fluid-tier validation runs.
 # Usage: tests/fluid/validate_fluid.sh [BUILD_DIR] [--no-collapse]
 # (BUILD_DIR defaults to build-fluid; the collapse runs take about 30 minutes on two cores.)
 set -e
@@ -7,7 +7,7 @@ SRC=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${1:-$SRC/build-fluid}
 case "$BUILD" in /*) ;; *) BUILD=$SRC/$BUILD ;; esac
 T=$BUILD/tests/fluid
-OUT=$SRC/docs/validation.md
+OUT=$SRC/docs/notes/validation-fluid.md
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
 export GF_SOURCE_DIR=$SRC GF_SHARED_DIR=$SRC/../shared GF_BINARY_DIR=$BUILD
