@@ -149,8 +149,8 @@ static void check_rebound(void)
     gf_ctx ctx;
     GF_CHECK_OK(run_stage("bounce_rebound", &tr, 1, &row, &ctx), &ctx);
     const double St = 8000.0 * V0 * D / (9.0 * 0.25), StT = 8500.0 * V0 * D / (9.0 * 0.25), e = VR / V0;
-    printf("rebound: V_I %.6f (%.6f), V_R %.6f (%.6f), e %.5f (%.5f), St %.4f (%.4f), St_T %.4f (%.4f), "
-           "contact %.6g s (%.6g), eps/eps_max %.5f (%.5f)\n",
+    printf("rebound: V_I %.6f (%.6f), V_R %.6f (%.6f), e %.7f (%.7f), St %.4f (%.4f), St_T %.4f (%.4f), "
+           "contact %.8g s (%.8g), eps/eps_max %.5f (%.5f)\n",
            gf_post_row_get(&row, "bounce_V_I"), V0, gf_post_row_get(&row, "bounce_V_R"), VR,
            gf_post_row_get(&row, "bounce_e"), e, gf_post_row_get(&row, "bounce_St"), St,
            gf_post_row_get(&row, "bounce_St_T"), StT, gf_post_row_get(&row, "bounce_contact_s"), TC,
