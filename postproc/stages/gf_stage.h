@@ -101,8 +101,8 @@ extern const int gf_stage_count;
 const gf_stage_info *gf_stage_find(const char *name);
 
 gf_stage_fn gf_stage_flow_rate, gf_stage_regime, gf_stage_deposit, gf_stage_pore_pressure, gf_stage_profiles,
-    gf_stage_energy;
+    gf_stage_energy, gf_stage_bounce;
 extern const gf_post_col gf_stage_flow_rate_cols[], gf_stage_regime_cols[], gf_stage_deposit_cols[],
-    gf_stage_pore_pressure_cols[], gf_stage_profiles_cols[], gf_stage_energy_cols[];
+    gf_stage_pore_pressure_cols[], gf_stage_profiles_cols[], gf_stage_energy_cols[], gf_stage_bounce_cols[];
 
 #endif

@@ -32,6 +32,10 @@ const gf_stage_info gf_stage_table[] = {
      "summary row, post_profiles.nc", gf_stage_profiles_cols},
     {"energy", 1, gf_stage_energy, "diagnostics.nc: ecx_per_grain; particles.nc: radius, glued",
      "summary row, post_energy.nc", gf_stage_energy_cols},
+    {"bounce", 1, gf_stage_bounce,
+     "diagnostics.nc: gap_over_D and sphere_velocity_y (a sphere above a wall), time; attributes: grains, fluid, "
+     "restitution, t_contact_s",
+     "summary row", gf_stage_bounce_cols},
 };
 const int gf_stage_count = (int)(sizeof gf_stage_table / sizeof gf_stage_table[0]);
 

@@ -9,12 +9,14 @@
  * St ~ 60, and the thesis finds eps = -V_R/V_T = 0.63 (eps/eps_max = 0.65; Gondret
  * et al. measure ~0.6 near St 60); without lubrication 0.98 (several bounces).
  *
- * Measured, sampling every DEM step near the wall:
- *   V_T  the largest approach speed before the gap reaches R (terminal or nearly),
- *   V_I  the approach speed when the sphere first touches (gap 0),
- *   V_R  the largest rebound speed after that first contact,
- *   St = (rho_p + rho/2) V_T D / (9 eta) (Izard eq. (3.19)), e = V_R/V_I, eps = V_R/V_T,
- *   the contact time (gap < 0 during the first contact).
+ * Measured, sampling every DEM step near the wall, with the definitions of the
+ * `bounce` post stage (postproc/stages/gf_bounce_measure.h, one definition for both):
+ *   V_T  the largest approach speed while the gap exceeds R (terminal or nearly),
+ *   V_I  the approach speed just before the first contact (last sample with gap > 0),
+ *   V_R  the first maximum of the upward velocity after that contact starts,
+ *   St = (rho_p + rho/2) V_T D / (9 eta) (Izard eq. (3.19)), St_I = rho_p V_I D / (9 eta)
+ *   (Gondret et al. 2002), e = V_R/V_I, eps = V_R/V_T, the contact time (gap <= 0 during
+ *   the first contact).
  * Usage: resolved_bounce [dx=D/dx] [box=] [height=] [depth=] [end=] [ratio=] [Ar=] [eta_e=] [lub=0|1] [overlap_off=0|1]
  *        [check=st60]
  *   check=st60: eps within +-0.05 of the thesis' 0.63 (slow, label open until it passes).
@@ -28,6 +30,30 @@
 #include "core/gf_timer.h"
 #include "gf_sim.h"
 #include "gf_test.h"
+#include "stages/gf_bounce_measure.h"
+
+/* the sampled trace: time, vertical velocity, gap to the wall */
+typedef struct trace {
+    double *t, *v, *gap;
+    size_t n, cap;
+} trace;
+
+static int trace_push(trace *tr, double t, double v, double gap)
+{
+    if (tr->n == tr->cap) {
+        size_t cap = tr->cap ? 2 * tr->cap : 4096;
+        double *a = realloc(tr->t, cap * sizeof *a), *b = a ? realloc(tr->v, cap * sizeof *b) : NULL;
+        double *c = b ? realloc(tr->gap, cap * sizeof *c) : NULL;
+        if (a) tr->t = a;
+        if (b) tr->v = b;
+        if (!c)
+            return -1;
+        tr->gap = c, tr->cap = cap;
+    }
+    tr->t[tr->n] = t, tr->v[tr->n] = v, tr->gap[tr->n] = gap;
+    tr->n++;
+    return 0;
+}
 
 typedef struct args {
     double dx, box, height, depth, end, ratio, Ar, eta_e;
@@ -105,8 +131,8 @@ int main(int argc, char **argv)
         return gf_test_finish();
     const double tg = sqrt(D / g), ug = sqrt(g * D), R = 0.5 * D;
     const gf_particles *p = gf_sim_particles(sim);
-    double VT = 0.0, VI = NAN, VR = 0.0, t_in = NAN, t_out = NAN, next_print = 0.0;
-    int touched = 0, left = 0;
+    double next_print = 0.0;
+    trace tr = {0};
     double t0 = gf_wtime(), c0 = (double)clock() / CLOCKS_PER_SEC;
     printf("# t sqrt(g/D)   u_y/sqrt(gD)   gap/D\n");
     while (gf_sim_time_s(sim) < a.end * tg) {
@@ -120,27 +146,29 @@ int main(int argc, char **argv)
         }
         double t = gf_sim_time_s(sim), v = p->vy_m_s[0];
         gap = p->y_m[0] - R;
-        if (!touched && gap > R)
-            VT = fmax(VT, -v);
-        if (!touched && gap <= 0.0) {
-            touched = 1, t_in = t, VI = -v;
+        if (trace_push(&tr, t, v, gap) != 0) {
+            GF_CHECK(!"out of memory for the trace");
+            break;
         }
-        if (touched && !left && gap > 0.0)
-            left = 1, t_out = t;
-        if (touched)
-            VR = fmax(VR, v);
         if (t >= next_print) {
             printf("%.4f %.5f %.5f\n", t / tg, v / ug, gap / D);
             next_print = t + (gap > 0.6 * D ? 0.25 : 0.02) * tg;
         }
     }
+    gf_bounce b;
+    gf_bounce_measure(tr.t, tr.v, tr.gap, tr.n, R, &b);
+    double VT = b.V_T, VI = b.V_I, e = b.e, eps = b.eps;
     double St = (a.ratio + 0.5) * rho * VT * D / (9.0 * eta), Re = rho * VT * D / eta;
-    double e = VR / VI, eps = VR / VT;
+    double St_I = a.ratio * rho * VI * D / (9.0 * eta);
     printf("resolved bounce: D/dx %g, box %g x %g D, rho_p/rho %g, Ar %g, eta_e/R %g, lubrication %d (in overlap %d): V_T = %.4f sqrt(gD) "
-           "(Re %.1f, St %.1f), V_I/V_T = %.3f, e = V_R/V_I = %.3f, eps = V_R/V_T = %.3f (eps/eps_max %.3f), contact "
+           "(Re %.1f, St %.1f, St_I %.1f), V_I/V_T = %.3f, e = V_R/V_I = %.3f, eps = V_R/V_T = %.3f (eps/eps_max %.3f), contact "
            "%.3g t_c; wall %.0f s, cpu %.0f s\n",
-           a.dx, a.box, a.height, a.ratio, a.Ar, a.eta_e, a.lub, !a.overlap_off, VT / ug, Re, St, VI / VT, e, eps, eps / 0.97,
-           (t_out - t_in) / gf_run_spec_t_contact_s(&spec), gf_wtime() - t0, (double)clock() / CLOCKS_PER_SEC - c0);
+           a.dx, a.box, a.height, a.ratio, a.Ar, a.eta_e, a.lub, !a.overlap_off, VT / ug, Re, St, St_I, VI / VT, e, eps,
+           eps / 0.97, b.contact_s / gf_run_spec_t_contact_s(&spec), gf_wtime() - t0,
+           (double)clock() / CLOCKS_PER_SEC - c0);
+    free(tr.t);
+    free(tr.v);
+    free(tr.gap);
     /* the end comes early once the sphere is back at rest on the wall after its rebound */
     if (!strcmp(a.check, "st60"))
         GF_CHECK_ABS(eps, 0.63, 0.05);

@@ -1,0 +1,58 @@
+/*
+ * One sphere-wall bounce measured from its trace: definitions in
+ * gf_bounce_measure.h (Izard 2014 §3.1.3, eq. (3.19); Gondret et al. 2002).
+ */
+#include "stages/gf_bounce_measure.h"
+
+#include <math.h>
+
+/* Time at which the gap crosses zero between samples a and b (linear). */
+static double zero_crossing(const double *t, const double *gap, size_t a, size_t b)
+{
+    double d = gap[a] - gap[b];
+    return d != 0.0 ? t[a] + (t[b] - t[a]) * gap[a] / d : t[b];
+}
+
+void gf_bounce_measure(const double *t, const double *v, const double *gap, size_t n, double R, gf_bounce *b)
+{
+    *b = (gf_bounce){.V_T = NAN, .V_I = NAN, .V_R = NAN, .e = NAN, .eps = NAN, .t_in_s = NAN, .t_out_s = NAN,
+                     .contact_s = NAN};
+    size_t k1 = 0;
+    while (k1 < n && !(gap[k1] <= 0.0))
+        ++k1;
+    double vt = 0.0;
+    for (size_t k = 0; k < k1; ++k)
+        if (gap[k] > R && -v[k] > vt)
+            vt = -v[k];
+    if (k1 > 0)
+        b->V_T = vt;
+    if (k1 == n || k1 == 0)
+        return;   /* never touched, or in contact from the first sample: no approach to measure */
+    b->touched = 1;
+    b->V_I = -v[k1 - 1];
+    b->t_in_s = zero_crossing(t, gap, k1 - 1, k1);
+    size_t k2 = k1;
+    while (k2 < n && gap[k2] <= 0.0)
+        ++k2;
+    b->n_in_contact = k2 - k1;
+    if (k2 < n) {
+        b->left = 1;
+        b->t_out_s = zero_crossing(t, gap, k2 - 1, k2);
+        b->contact_s = b->t_out_s - b->t_in_s;
+    }
+    /* the first maximum of the upward velocity: the first upward sample, then
+       on while the velocity still grows */
+    size_t j = k1;
+    while (j < n && !(v[j] > 0.0))
+        ++j;
+    if (j < n) {
+        while (j + 1 < n && v[j + 1] > v[j])
+            ++j;
+        b->rebounded = 1;
+        b->V_R = v[j];
+    } else {
+        b->V_R = 0.0;
+    }
+    b->e = b->V_I > 0.0 ? b->V_R / b->V_I : NAN;
+    b->eps = b->V_T > 0.0 ? b->V_R / b->V_T : NAN;
+}
