@@ -25,6 +25,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "gf_bench_args.h"
 #include "gf_bench_clock.h"
 #include "gf_lammps_data.h"
 #include "gf_sim.h"
@@ -38,26 +39,12 @@ typedef struct silo_args {
 static int parse(int argc, char **argv, silo_args *a)
 {
     *a = (silo_args){.orifice = 6.0, .fill = 25.4, .width = 25.0, .transient = 5.0, .window = 20.0};
-    for (int i = 1; i < argc; i += 2) {
-        const char *k = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!v)
-            return 0;
-        if (!strcmp(k, "--orifice"))
-            a->orifice = atof(v);
-        else if (!strcmp(k, "--fill"))
-            a->fill = atof(v);
-        else if (!strcmp(k, "--width"))
-            a->width = atof(v);
-        else if (!strcmp(k, "--transient"))
-            a->transient = atof(v);
-        else if (!strcmp(k, "--window"))
-            a->window = atof(v);
-        else if (!strcmp(k, "--lammps-data"))
-            a->lammps = v;
-        else
-            return 0;
-    }
-    return a->orifice >= 2.0 && a->fill > 0.0 && a->width > a->orifice && a->transient >= 0.0 && a->window > 0.0;
+    const gf_bench_flag flags[] = {
+        {"--orifice", GF_BENCH_REAL, &a->orifice},     {"--fill", GF_BENCH_REAL, &a->fill},
+        {"--width", GF_BENCH_REAL, &a->width},         {"--transient", GF_BENCH_REAL, &a->transient},
+        {"--window", GF_BENCH_REAL, &a->window},       {"--lammps-data", GF_BENCH_PATH, &a->lammps},
+    };
+    return gf_bench_parse_flags(argc, argv, flags, sizeof flags / sizeof *flags) && a->orifice >= 2.0 && a->fill > 0.0 && a->width > a->orifice && a->transient >= 0.0 && a->window > 0.0;
 }
 
 static gf_status make_spec(gf_ctx *ctx, const silo_args *a, gf_run_spec *s)
@@ -119,12 +106,9 @@ int main(int argc, char **argv)
     gf_ctx ctx = {0};
     gf_run_spec spec;
     gf_sim *sim = NULL;
-    gf_sim_options opt = {.n_threads = 1};
     const gf_scene_desc *desc = gf_scene_find("silo");
-    if (make_spec(&ctx, &a, &spec) != GF_OK || gf_sim_create(&ctx, &spec, &opt, &sim) != GF_OK) {
-        fprintf(stderr, "gf-bench-silo: %s\n", ctx.last_msg);
+    if (!gf_bench_start(&ctx, make_spec(&ctx, &a, &spec), &spec, "gf-bench-silo", &sim))
         return 1;
-    }
     if (a.lammps && !(gf_bench_write_lammps(sim, a.lammps) && append_geometry(sim, &a, a.lammps))) {
         fprintf(stderr, "gf-bench-silo: cannot write %s\n", a.lammps);
         gf_sim_destroy(&sim);
