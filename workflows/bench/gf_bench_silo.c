@@ -30,6 +30,7 @@
 #include "gf_lammps_data.h"
 #include "gf_sim.h"
 #include "scenes/gf_scene.h"
+#include "scenes/gf_silo_thesis.h"
 
 typedef struct silo_args {
     double orifice, fill, width, transient, window;
@@ -49,15 +50,7 @@ static int parse(int argc, char **argv, silo_args *a)
 
 static gf_status make_spec(gf_ctx *ctx, const silo_args *a, gf_run_spec *s)
 {
-    gf_run_spec_defaults(s);
-    snprintf(s->scene, sizeof s->scene, "silo");
-    s->grains = (gf_grains_spec){.diameter_m = 0.5e-3, .polydispersity = 0.0, .density_kg_m3 = 2500.0};
-    s->contact.t_contact_nd = 4.97e-3;
-    s->contact.restitution = 0.885;
-    s->contact.friction = s->contact.wall_friction = 0.5;
-    s->contact.kt_over_kn = 2.0 / 7.0;
-    s->output.particles = s->output.fields = s->output.probes = s->output.diagnostics = 0;
-    snprintf(s->fluid.model, sizeof s->fluid.model, "none");
+    gf_silo_thesis_spec(s);
     GF_TRY(gf_run_spec_set_param(ctx, s, "width_x_over_d", a->width));
     GF_TRY(gf_run_spec_set_param(ctx, s, "width_z_over_d", a->width));
     GF_TRY(gf_run_spec_set_param(ctx, s, "orifice_x_over_d", a->orifice));
