@@ -14,6 +14,13 @@
 #include "core/gf_build_info.h"
 #include "gf_test.h"
 
+const gf_var_info nc_test_fluid_fields[NC_TEST_N_FLUID_FIELDS] = {
+    {"fluid_fraction", "1", "fluid volume fraction of the cell", NULL},
+    {"u_fluid", "m s-1", "cell-centred fluid velocity along x", NULL},
+    {"v_fluid", "m s-1", "cell-centred fluid velocity along y", NULL},
+    {"w_fluid", "m s-1", "cell-centred fluid velocity along z", NULL},
+    {"excess_pressure", "Pa", "fluid pressure minus hydrostatic", NULL}};
+
 void nc_test_run_init(nc_test_run *run)
 {
     memset(run, 0, sizeof *run);

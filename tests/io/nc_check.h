@@ -18,6 +18,11 @@ typedef struct nc_test_run {
     char yaml[512];
 } nc_test_run;
 
+/* The fluid fields of an immersed run as the writer declares them: fraction,
+ * cell-centred velocity along x, y, z, excess pressure. */
+enum { NC_TEST_N_FLUID_FIELDS = 5 };
+extern const gf_var_info nc_test_fluid_fields[NC_TEST_N_FLUID_FIELDS];
+
 /* Immersed column collapse, St = 0.5, r = 2: a run as the pipeline would pass it. */
 void nc_test_run_init(nc_test_run *run);
 
