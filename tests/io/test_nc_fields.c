@@ -34,23 +34,11 @@ static void test_fields_round_trip(const char *python)
 {
     nc_test_run run;
     nc_test_run_init(&run);
-    gf_ctx ctx = {0};
     int n_cells[3] = {NX, NY, NZ};
     char path[1100];
     snprintf(path, sizeof path, "%s/fields.nc", nc_test_dir("fields"));
-    gf_nc_writer *w = NULL;
-    GF_CHECK_OK(gf_nc_fields_open(&ctx, path, &run.meta, n_cells, lo, h, nc_test_fluid_fields, NV, &w), &ctx);
-    static double f[NV][NZ * NY * NX];
-    for (int it = 0; it < NT; ++it) {
-        for (int iv = 0; iv < NV; ++iv)
-            for (int k = 0; k < NZ; ++k)
-                for (int j = 0; j < NY; ++j)
-                    for (int i = 0; i < NX; ++i)
-                        f[iv][(k * NY + j) * NX + i] = value(iv, i, j, k, it);
-        const double *ptr[NV] = {f[0], f[1], f[2], f[3], f[4]};
-        GF_CHECK_OK(gf_nc_fields_append(w, 0.5 * it, ptr), &ctx);
-    }
-    GF_CHECK_OK(gf_nc_writer_close(&w), &ctx);
+    const double times[NT] = {0.0, 0.5};
+    nc_test_write_fluid_fields(path, &run.meta, n_cells, lo, h, NT, times, value);
 
     size_t n;
     static const char *const cn[3] = {"x", "y", "z"};

@@ -83,25 +83,14 @@ static void write_particles(const char *path, int n_records)
     gf_particles_destroy(&p);
 }
 
+static double field_of_record(int iv, int i, int j, int k, int it) { return field(iv, i, j, k, times[it]); }
+
 static void write_fields(const char *path)
 {
     nc_test_run run;
     nc_test_run_init(&run);
-    gf_ctx ctx = {0};
-    int n_cells[3] = {NX, NY, NZ};
-    gf_nc_writer *w = NULL;
-    GF_CHECK_OK(gf_nc_fields_open(&ctx, path, &run.meta, n_cells, lo, h, nc_test_fluid_fields, NV, &w), &ctx);
-    static double f[NV][NZ * NY * NX];
-    for (int it = 0; it < NT; ++it) {
-        for (int iv = 0; iv < NV; ++iv)
-            for (int k = 0; k < NZ; ++k)
-                for (int j = 0; j < NY; ++j)
-                    for (int i = 0; i < NX; ++i)
-                        f[iv][(k * NY + j) * NX + i] = field(iv, i, j, k, times[it]);
-        const double *ptr[NV] = {f[0], f[1], f[2], f[3], f[4]};
-        GF_CHECK_OK(gf_nc_fields_append(w, times[it], ptr), &ctx);
-    }
-    GF_CHECK_OK(gf_nc_writer_close(&w), &ctx);
+    const int n_cells[3] = {NX, NY, NZ};
+    nc_test_write_fluid_fields(path, &run.meta, n_cells, lo, h, NT, times, field_of_record);
 }
 
 /* ------------------------------------------------------------ reading the sidecar */
