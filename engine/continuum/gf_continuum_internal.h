@@ -57,5 +57,11 @@ static inline double gf_continuum_rho(const gf_continuum *s, int a, size_t q)
 }
 /* (p(cell above) - p(cell below))/h_a at face idx of component a, p = 0 on outflow faces. */
 double gf_continuum_pressure_gradient(const gf_continuum *s, const double *p, int a, const int idx[3]);
+/* Largest |u_a| over component a's faces. */
+double gf_continuum_max_speed(const gf_continuum *s, int a);
+/* Discrete divergence of u at cell (i,j,k): sum over the components of the face difference over h_a. */
+double gf_continuum_cell_divergence(const gf_continuum *s, int i, int j, int k);
+/* The projection's correction u -= dt / rho grad phi on every unknown face (rho per face under two phases). */
+void gf_continuum_correct_velocity(gf_continuum *s, const double *phi, double dt);
 
 #endif

@@ -108,12 +108,8 @@ void gf_continuum_advect(gf_continuum *s, double dt)
 {
     const gf_grid *g = &s->g;
     double cfl = 0.0;
-    for (int b = 0; b < s->n_comp; ++b) {
-        double vmax = 0.0;
-        for (size_t q = 0; q < g->n_faces[b]; ++q)
-            vmax = fmax(vmax, fabs(s->u[b][q]));
-        cfl = fmax(cfl, vmax / g->h_m[b]);
-    }
+    for (int b = 0; b < s->n_comp; ++b)
+        cfl = fmax(cfl, gf_continuum_max_speed(s, b) / g->h_m[b]);
     double gamma = fmin(1.2 * dt * cfl, 1.0);
     for (int a = 0; a < s->n_comp; ++a)
         for (size_t q = 0; q < g->n_faces[a]; ++q)

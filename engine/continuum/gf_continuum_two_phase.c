@@ -73,29 +73,12 @@ gf_status gf_continuum_project_variable(gf_continuum *s, double dt)
     const gf_grid *g = &s->g;
     for (int k = 0; k < g->n[2]; ++k)
         for (int j = 0; j < g->n[1]; ++j)
-            for (int i = 0; i < g->n[0]; ++i) {
-                double div = 0.0;
-                for (int a = 0; a < s->n_comp; ++a) {
-                    int hi[3] = {i, j, k};
-                    hi[a] += 1;
-                    div += (s->u[a][gf_grid_face(g, a, hi[0], hi[1], hi[2])] - s->u[a][gf_grid_face(g, a, i, j, k)]) /
-                           g->h_m[a];
-                }
-                s->div_cell[gf_grid_cell(g, i, j, k)] = div / dt;
-            }
+            for (int i = 0; i < g->n[0]; ++i)
+                s->div_cell[gf_grid_cell(g, i, j, k)] = gf_continuum_cell_divergence(s, i, j, k) / dt;
     assemble_pressure(s);
     GF_TRY(gf_cont_lu_factor(s->ctx, s->lu_p));
     GF_TRY(gf_cont_lu_solve(s->ctx, s->lu_p, s->div_cell, s->c_new)); /* c_new: scratch for phi */
-    for (int a = 0; a < s->n_comp; ++a)
-        for (int k = 0; k < g->nf[a][2]; ++k)
-            for (int j = 0; j < g->nf[a][1]; ++j)
-                for (int i = 0; i < g->nf[a][0]; ++i) {
-                    size_t q = gf_grid_face(g, a, i, j, k);
-                    if (s->unknown[a][q] < 0)
-                        continue;
-                    int idx[3] = {i, j, k};
-                    s->u[a][q] -= dt / s->rho_face[a][q] * gf_continuum_pressure_gradient(s, s->c_new, a, idx);
-                }
+    gf_continuum_correct_velocity(s, s->c_new, dt);
     for (size_t c = 0; c < g->n_cells; ++c)
         s->p_cell[c] += s->c_new[c];
     for (int a = 0; a < s->n_comp; ++a)
@@ -165,12 +148,8 @@ void gf_continuum_advect_fraction(gf_continuum *s, double dt)
 {
     const gf_grid *g = &s->g;
     double courant = 0.0;
-    for (int a = 0; a < s->n_comp; ++a) {
-        double vmax = 0.0;
-        for (size_t q = 0; q < g->n_faces[a]; ++q)
-            vmax = fmax(vmax, fabs(s->u[a][q]));
-        courant += dt * vmax / g->h_m[a];
-    }
+    for (int a = 0; a < s->n_comp; ++a)
+        courant += dt * gf_continuum_max_speed(s, a) / g->h_m[a];
     int n_sub = (int)ceil(courant / 0.2);
     if (n_sub < 1)
         n_sub = 1;

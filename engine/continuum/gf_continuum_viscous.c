@@ -310,6 +310,41 @@ double gf_continuum_pressure_gradient(const gf_continuum *s, const double *p, in
     return (p_hi - p_lo) / g->h_m[a];
 }
 
+double gf_continuum_max_speed(const gf_continuum *s, int a)
+{
+    double vmax = 0.0;
+    for (size_t q = 0; q < s->g.n_faces[a]; ++q)
+        vmax = fmax(vmax, fabs(s->u[a][q]));
+    return vmax;
+}
+
+double gf_continuum_cell_divergence(const gf_continuum *s, int i, int j, int k)
+{
+    const gf_grid *g = &s->g;
+    double div = 0.0;
+    for (int a = 0; a < s->n_comp; ++a) {
+        int hi[3] = {i, j, k};
+        hi[a] += 1;
+        div += (s->u[a][gf_grid_face(g, a, hi[0], hi[1], hi[2])] - s->u[a][gf_grid_face(g, a, i, j, k)]) / g->h_m[a];
+    }
+    return div;
+}
+
+void gf_continuum_correct_velocity(gf_continuum *s, const double *phi, double dt)
+{
+    const gf_grid *g = &s->g;
+    for (int a = 0; a < s->n_comp; ++a)
+        for (int k = 0; k < g->nf[a][2]; ++k)
+            for (int j = 0; j < g->nf[a][1]; ++j)
+                for (int i = 0; i < g->nf[a][0]; ++i) {
+                    size_t q = gf_grid_face(g, a, i, j, k);
+                    if (s->unknown[a][q] < 0)
+                        continue;
+                    int idx[3] = {i, j, k};
+                    s->u[a][q] -= dt / gf_continuum_rho(s, a, q) * gf_continuum_pressure_gradient(s, phi, a, idx);
+                }
+}
+
 /*
  * Incremental projection (Goda 1979; van Kan 1986): the predictor carries
  * -grad p^n, the Poisson equation gives the increment phi, p^{n+1} = p^n + phi.
@@ -323,27 +358,10 @@ void gf_continuum_project(gf_continuum *s, double dt)
     double rho = s->p.density_kg_m3;
     for (int k = 0; k < g->n[2]; ++k)
         for (int j = 0; j < g->n[1]; ++j)
-            for (int i = 0; i < g->n[0]; ++i) {
-                double div = 0.0;
-                for (int a = 0; a < s->n_comp; ++a) {
-                    int lo[3] = {i, j, k}, hi[3] = {i, j, k};
-                    hi[a] += 1;
-                    div += (s->u[a][gf_grid_face(g, a, hi[0], hi[1], hi[2])] -
-                            s->u[a][gf_grid_face(g, a, lo[0], lo[1], lo[2])]) / g->h_m[a];
-                }
-                s->div_cell[gf_grid_cell(g, i, j, k)] = rho / dt * div;
-            }
+            for (int i = 0; i < g->n[0]; ++i)
+                s->div_cell[gf_grid_cell(g, i, j, k)] = rho / dt * gf_continuum_cell_divergence(s, i, j, k);
     gf_cont_poisson_solve(s->poisson, s->div_cell, s->div_cell);  /* div_cell: the increment phi */
-    for (int a = 0; a < s->n_comp; ++a)
-        for (int k = 0; k < g->nf[a][2]; ++k)
-            for (int j = 0; j < g->nf[a][1]; ++j)
-                for (int i = 0; i < g->nf[a][0]; ++i) {
-                    size_t q = gf_grid_face(g, a, i, j, k);
-                    if (s->unknown[a][q] < 0)
-                        continue;
-                    int idx[3] = {i, j, k};
-                    s->u[a][q] -= dt / rho * gf_continuum_pressure_gradient(s, s->div_cell, a, idx);
-                }
+    gf_continuum_correct_velocity(s, s->div_cell, dt);
     for (size_t c = 0; c < g->n_cells; ++c)
         s->p_cell[c] += s->div_cell[c];
     for (int a = 0; a < s->n_comp; ++a)

@@ -15,6 +15,7 @@
 #include "coupling/gf_coupling_diag.h"
 #include "gf_run_spec.h"
 #include "particles/gf_particles.h"
+#include "gf_test.h"
 
 typedef struct coupled_loop {
     gf_coupling *c;
@@ -40,6 +41,20 @@ static inline void spec_fluid(gf_run_spec *s, double D, double rho_p, double rho
     s->fluid.viscosity_Pa_s = mu;
     s->fluid.cell_over_D = cell_over_D;
     s->fluid.cfl = 0.3;
+}
+
+/* L->c: the coupling of spec over the fully periodic cube [0, Lb]^3, the
+ * fluid's body force L->g; L->p: an empty store for 4096 grains (checked). */
+static inline void periodic_cube(gf_ctx *ctx, const gf_run_spec *spec, double Lb, coupled_loop *L)
+{
+    gf_coupling_setup su = {.gravity_m_s2 = {L->g[0], L->g[1], L->g[2]}};
+    for (int d = 0; d < 3; ++d) {
+        su.hi_m[d] = L->hi[d] = Lb;
+        su.bc[d][0] = su.bc[d][1] = GF_BC_PERIODIC;
+        L->periodic[d] = 1;
+    }
+    GF_CHECK_OK(gf_coupling_create(ctx, spec, &su, &L->c), ctx);
+    GF_CHECK_OK(gf_particles_create(ctx, 4096, &L->p), ctx);
 }
 
 static inline gf_status loop_step(coupled_loop *L)

@@ -12,13 +12,11 @@
  */
 #include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 #include "gf_sim.h"
 #include "gf_test.h"
-#include "gf_test_sim.h"
+#include "gf_test_restart.h"
 
 #define D 7.6e-3
 #define RHO_P 2500.0
@@ -41,34 +39,17 @@ static gf_run_spec collapse_spec(gf_ctx *ctx, const char *model)
     return spec;
 }
 
-static gf_status restart_from(gf_ctx *ctx, const gf_run_spec *spec, const char *path, gf_sim **out)
-{
-    gf_sim_options opt;
-    memset(&opt, 0, sizeof opt);
-    opt.n_threads = 1;
-    opt.restart_path = path;
-    return gf_sim_create(ctx, spec, &opt, out);
-}
-
 int main(void)
 {
     gf_ctx ctx = {0};
     char path[512];
-    snprintf(path, sizeof path, "%s/coupling_restart_%d.h5", getenv("GF_BINARY_DIR") ? getenv("GF_BINARY_DIR") : "/tmp",
-             (int)getpid());
+    gf_test_checkpoint_path(path, sizeof path, "coupling_restart");
     gf_run_spec spec = collapse_spec(&ctx, "unresolved");
-    gf_sim_options opt = {.n_threads = 1};
     gf_sim *ref = NULL, *b = NULL;
-    GF_CHECK_OK(gf_sim_create(&ctx, &spec, &opt, &ref), &ctx);
-    if (!ref)
-        return gf_test_finish();
     const long N = 4001;
-    GF_CHECK_OK(gf_sim_advance(ref, N), &ctx);
-    GF_CHECK_OK(gf_sim_checkpoint(ref, path), &ctx);
-    GF_CHECK_OK(gf_sim_advance(ref, N), &ctx);
-    GF_CHECK_OK(restart_from(&ctx, &spec, path, &b), &ctx);
+    if (!gf_test_split_run(&ctx, &spec, N, path, &ref, &b))
+        return gf_test_finish();
     if (b) {
-        GF_CHECK_OK(gf_sim_advance(b, N), &ctx);
         gf_particles *p = gf_sim_particles(ref), *q = gf_sim_particles(b);
         size_t n = p->n_local;
         int ok = gf_test_same_motion(p, q);
@@ -93,16 +74,7 @@ int main(void)
     gf_sim_destroy(&ref);
     /* a dry run's checkpoint holds no fluid: an immersed restart from it is refused, naming why */
     gf_run_spec dry = collapse_spec(&ctx, "none");
-    gf_sim *d = NULL;
-    GF_CHECK_OK(gf_sim_create(&ctx, &dry, &opt, &d), &ctx);
-    if (d) {
-        GF_CHECK_OK(gf_sim_checkpoint(d, path), &ctx);
-        gf_sim_destroy(&d);
-        gf_status st = restart_from(&ctx, &spec, path, &b);
-        printf("immersed restart from a dry checkpoint: %s\n", ctx.last_msg);
-        GF_CHECK(st == GF_ERR_CONFIG && strstr(ctx.last_msg, "no fluid state") != NULL);
-        gf_sim_destroy(&b);
-    }
+    gf_test_restart_refused(&ctx, &spec, &dry, 0, path, "no fluid state", "immersed restart from a dry checkpoint");
     remove(path);
     return gf_test_finish();
 }

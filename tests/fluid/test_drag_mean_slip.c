@@ -30,15 +30,8 @@ static double decay_rate(const char *drag, double D, double rp, double rf, doubl
     double a = D * cbrt(M_PI / (6 * phi));
     int n = 14;  /* even: the checkerboard is periodic */
     double Lb = n * a;
-    gf_coupling_setup su = {.gravity_m_s2 = {0, 0, 0}};
     coupled_loop L = {.g = {0, 0, 0}, .substeps = 5, .dt_f_max = 1.0};
-    for (int d = 0; d < 3; ++d) {
-        su.hi_m[d] = L.hi[d] = Lb;
-        su.bc[d][0] = su.bc[d][1] = GF_BC_PERIODIC;
-        L.periodic[d] = 1;
-    }
-    GF_CHECK_OK(gf_coupling_create(&ctx, &spec, &su, &L.c), &ctx);
-    GF_CHECK_OK(gf_particles_create(&ctx, 4096, &L.p), &ctx);
+    periodic_cube(&ctx, &spec, Lb, &L);
     for (int k = 0; k < n; ++k)
         for (int j = 0; j < n; ++j)
             for (int i = 0; i < n; ++i) {

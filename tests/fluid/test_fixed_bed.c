@@ -27,15 +27,8 @@ static double bed_flow(const char *drag, double phi, double G, double D, double 
     double a = D * cbrt(M_PI / (6 * phi));
     int n = (int)lround(12 * D / a);
     double Lb = n * a;
-    gf_coupling_setup su = {.gravity_m_s2 = {0, 0, -9.81}};
     coupled_loop L = {.g = {0, 0, -9.81}, .substeps = 1, .dt_f_max = 1.0};
-    for (int d = 0; d < 3; ++d) {
-        su.hi_m[d] = L.hi[d] = Lb;
-        su.bc[d][0] = su.bc[d][1] = GF_BC_PERIODIC;
-        L.periodic[d] = 1;
-    }
-    GF_CHECK_OK(gf_coupling_create(&ctx, &spec, &su, &L.c), &ctx);
-    GF_CHECK_OK(gf_particles_create(&ctx, 4096, &L.p), &ctx);
+    periodic_cube(&ctx, &spec, Lb, &L);
     gf_rng rng;
     gf_rng_seed(&rng, 5);
     double jit = 0.45 * (a - D);

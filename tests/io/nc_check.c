@@ -14,6 +14,41 @@
 #include "core/gf_build_info.h"
 #include "gf_test.h"
 
+const gf_var_info nc_test_fluid_fields[NC_TEST_N_FLUID_FIELDS] = {
+    {"fluid_fraction", "1", "fluid volume fraction of the cell", NULL},
+    {"u_fluid", "m s-1", "cell-centred fluid velocity along x", NULL},
+    {"v_fluid", "m s-1", "cell-centred fluid velocity along y", NULL},
+    {"w_fluid", "m s-1", "cell-centred fluid velocity along z", NULL},
+    {"excess_pressure", "Pa", "fluid pressure minus hydrostatic", NULL}};
+
+void nc_test_write_fluid_fields(const char *path, const gf_nc_meta *meta, const int n_cells[3], const double lo[3],
+                                const double h[3], int nt, const double *times, nc_test_field_fn value)
+{
+    gf_ctx ctx = {0};
+    gf_nc_writer *w = NULL;
+    const size_t nx = (size_t)n_cells[0], ny = (size_t)n_cells[1], nz = (size_t)n_cells[2];
+    double *f = malloc(NC_TEST_N_FLUID_FIELDS * nz * ny * nx * sizeof *f);
+    if (!f) {
+        GF_CHECK(f != NULL);
+        return;
+    }
+    const double *ptr[NC_TEST_N_FLUID_FIELDS];
+    for (int iv = 0; iv < NC_TEST_N_FLUID_FIELDS; ++iv)
+        ptr[iv] = f + iv * nz * ny * nx;
+    GF_CHECK_OK(gf_nc_fields_open(&ctx, path, meta, n_cells, lo, h, nc_test_fluid_fields, NC_TEST_N_FLUID_FIELDS, &w),
+                &ctx);
+    for (int it = 0; it < nt; ++it) {
+        for (int iv = 0; iv < NC_TEST_N_FLUID_FIELDS; ++iv)
+            for (size_t k = 0; k < nz; ++k)
+                for (size_t j = 0; j < ny; ++j)
+                    for (size_t i = 0; i < nx; ++i)
+                        f[iv * nz * ny * nx + (k * ny + j) * nx + i] = value(iv, (int)i, (int)j, (int)k, it);
+        GF_CHECK_OK(gf_nc_fields_append(w, times[it], ptr), &ctx);
+    }
+    GF_CHECK_OK(gf_nc_writer_close(&w), &ctx);
+    free(f);
+}
+
 void nc_test_run_init(nc_test_run *run)
 {
     memset(run, 0, sizeof *run);

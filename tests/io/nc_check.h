@@ -18,6 +18,18 @@ typedef struct nc_test_run {
     char yaml[512];
 } nc_test_run;
 
+/* The fluid fields of an immersed run as the writer declares them: fraction,
+ * cell-centred velocity along x, y, z, excess pressure. */
+enum { NC_TEST_N_FLUID_FIELDS = 5 };
+extern const gf_var_info nc_test_fluid_fields[NC_TEST_N_FLUID_FIELDS];
+
+/* Writes path as the fluid fields of meta's run on an n_cells grid (origin lo,
+ * cells h): nt records, record it at times[it] holding value(iv, i, j, k, it)
+ * in cell (i, j, k) of field iv (each call checked). */
+typedef double (*nc_test_field_fn)(int iv, int i, int j, int k, int it);
+void nc_test_write_fluid_fields(const char *path, const gf_nc_meta *meta, const int n_cells[3], const double lo[3],
+                                const double h[3], int nt, const double *times, nc_test_field_fn value);
+
 /* Immersed column collapse, St = 0.5, r = 2: a run as the pipeline would pass it. */
 void nc_test_run_init(nc_test_run *run);
 

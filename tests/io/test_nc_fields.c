@@ -34,28 +34,11 @@ static void test_fields_round_trip(const char *python)
 {
     nc_test_run run;
     nc_test_run_init(&run);
-    gf_ctx ctx = {0};
-    gf_var_info vars[NV] = {{"fluid_fraction", "1", "fluid volume fraction of the cell", NULL},
-                            {"u_fluid", "m s-1", "cell-centred fluid velocity along x", NULL},
-                            {"v_fluid", "m s-1", "cell-centred fluid velocity along y", NULL},
-                            {"w_fluid", "m s-1", "cell-centred fluid velocity along z", NULL},
-                            {"excess_pressure", "Pa", "fluid pressure minus hydrostatic", NULL}};
     int n_cells[3] = {NX, NY, NZ};
     char path[1100];
     snprintf(path, sizeof path, "%s/fields.nc", nc_test_dir("fields"));
-    gf_nc_writer *w = NULL;
-    GF_CHECK_OK(gf_nc_fields_open(&ctx, path, &run.meta, n_cells, lo, h, vars, NV, &w), &ctx);
-    static double f[NV][NZ * NY * NX];
-    for (int it = 0; it < NT; ++it) {
-        for (int iv = 0; iv < NV; ++iv)
-            for (int k = 0; k < NZ; ++k)
-                for (int j = 0; j < NY; ++j)
-                    for (int i = 0; i < NX; ++i)
-                        f[iv][(k * NY + j) * NX + i] = value(iv, i, j, k, it);
-        const double *ptr[NV] = {f[0], f[1], f[2], f[3], f[4]};
-        GF_CHECK_OK(gf_nc_fields_append(w, 0.5 * it, ptr), &ctx);
-    }
-    GF_CHECK_OK(gf_nc_writer_close(&w), &ctx);
+    const double times[NT] = {0.0, 0.5};
+    nc_test_write_fluid_fields(path, &run.meta, n_cells, lo, h, NT, times, value);
 
     size_t n;
     static const char *const cn[3] = {"x", "y", "z"};
@@ -66,9 +49,8 @@ static void test_fields_round_trip(const char *python)
             GF_CHECK(c[i] == centre(a, (int)i));
         free(c);
     }
-    static const char *const vn[NV] = {"fluid_fraction", "u_fluid", "v_fluid", "w_fluid", "excess_pressure"};
     for (int iv = 0; iv < NV; ++iv) {
-        double *d = nc_read_doubles(path, vn[iv], &n);
+        double *d = nc_read_doubles(path, nc_test_fluid_fields[iv].name, &n);
         GF_CHECK(d && n == (size_t)NT * NZ * NY * NX);
         int n_exact = 0;
         for (int it = 0; d && it < NT; ++it)
@@ -76,7 +58,7 @@ static void test_fields_round_trip(const char *python)
                 for (int j = 0; j < NY; ++j)
                     for (int i = 0; i < NX; ++i)
                         n_exact += d[((it * NZ + k) * NY + j) * NX + i] == value(iv, i, j, k, it);
-        gf_test_check(n_exact == NT * NZ * NY * NX, __FILE__, __LINE__, "%s: %d of %d values exact", vn[iv], n_exact,
+        gf_test_check(n_exact == NT * NZ * NY * NX, __FILE__, __LINE__, "%s: %d of %d values exact", nc_test_fluid_fields[iv].name, n_exact,
                       NT * NZ * NY * NX);
         free(d);
     }

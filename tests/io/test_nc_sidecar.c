@@ -56,7 +56,6 @@ static double field(int iv, int i, int j, int k, double t)
     default: return 9.81 * 1000.0 * (0.01 - y) * (1 + 0.1 * t);
     }
 }
-static const char *const field_names[NV] = {"fluid_fraction", "u_fluid", "v_fluid", "w_fluid", "excess_pressure"};
 
 static void write_particles(const char *path, int n_records)
 {
@@ -84,30 +83,14 @@ static void write_particles(const char *path, int n_records)
     gf_particles_destroy(&p);
 }
 
+static double field_of_record(int iv, int i, int j, int k, int it) { return field(iv, i, j, k, times[it]); }
+
 static void write_fields(const char *path)
 {
     nc_test_run run;
     nc_test_run_init(&run);
-    gf_ctx ctx = {0};
-    gf_var_info vars[NV] = {{"fluid_fraction", "1", "fluid volume fraction of the cell", NULL},
-                            {"u_fluid", "m s-1", "cell-centred fluid velocity along x", NULL},
-                            {"v_fluid", "m s-1", "cell-centred fluid velocity along y", NULL},
-                            {"w_fluid", "m s-1", "cell-centred fluid velocity along z", NULL},
-                            {"excess_pressure", "Pa", "fluid pressure minus hydrostatic", NULL}};
-    int n_cells[3] = {NX, NY, NZ};
-    gf_nc_writer *w = NULL;
-    GF_CHECK_OK(gf_nc_fields_open(&ctx, path, &run.meta, n_cells, lo, h, vars, NV, &w), &ctx);
-    static double f[NV][NZ * NY * NX];
-    for (int it = 0; it < NT; ++it) {
-        for (int iv = 0; iv < NV; ++iv)
-            for (int k = 0; k < NZ; ++k)
-                for (int j = 0; j < NY; ++j)
-                    for (int i = 0; i < NX; ++i)
-                        f[iv][(k * NY + j) * NX + i] = field(iv, i, j, k, times[it]);
-        const double *ptr[NV] = {f[0], f[1], f[2], f[3], f[4]};
-        GF_CHECK_OK(gf_nc_fields_append(w, times[it], ptr), &ctx);
-    }
-    GF_CHECK_OK(gf_nc_writer_close(&w), &ctx);
+    const int n_cells[3] = {NX, NY, NZ};
+    nc_test_write_fluid_fields(path, &run.meta, n_cells, lo, h, NT, times, field_of_record);
 }
 
 /* ------------------------------------------------------------ reading the sidecar */
@@ -311,12 +294,19 @@ static int steps(xmlDoc *doc, xmlNode **grids, int max, int n_expect)
     return n;
 }
 
-static void check_particles_sidecar(const char *dir, int n_records)
+/* dir/name parsed as XML (checked); NULL when it does not parse. Owner: the caller (xmlFreeDoc). */
+static xmlDoc *read_sidecar(const char *dir, const char *name)
 {
     char path[2048];
-    snprintf(path, sizeof path, "%s/particles.xmf", dir);
+    snprintf(path, sizeof path, "%s/%s", dir, name);
     xmlDoc *doc = xmlReadFile(path, NULL, XML_PARSE_NONET);
     gf_test_check(doc != NULL, __FILE__, __LINE__, "%s parses as XML", path);
+    return doc;
+}
+
+static void check_particles_sidecar(const char *dir, int n_records)
+{
+    xmlDoc *doc = read_sidecar(dir, "particles.xmf");
     if (!doc)
         return;
     xmlNode *grids[NT];
@@ -359,10 +349,7 @@ static void check_particles_sidecar(const char *dir, int n_records)
 
 static void check_fields_sidecar(const char *dir)
 {
-    char path[2048];
-    snprintf(path, sizeof path, "%s/fields.xmf", dir);
-    xmlDoc *doc = xmlReadFile(path, NULL, XML_PARSE_NONET);
-    gf_test_check(doc != NULL, __FILE__, __LINE__, "%s parses as XML", path);
+    xmlDoc *doc = read_sidecar(dir, "fields.xmf");
     if (!doc)
         return;
     xmlNode *grids[NT];
@@ -384,7 +371,7 @@ static void check_fields_sidecar(const char *dir)
         free(origin), free(spacing);
         for (int iv = 0; iv < NV; ++iv) {
             size_t m;
-            double *v = read_attribute(grids[it], field_names[iv], dir, &m);
+            double *v = read_attribute(grids[it], nc_test_fluid_fields[iv].name, dir, &m);
             GF_CHECK(v && m == NX * NY * NZ);
             for (int k = 0; v && m == NX * NY * NZ && k < NZ; ++k)
                 for (int j = 0; j < NY; ++j)

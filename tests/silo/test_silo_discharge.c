@@ -29,18 +29,11 @@
 #include "gf_sim.h"
 #include "gf_test.h"
 #include "scenes/gf_scene.h"
+#include "scenes/gf_silo_thesis.h"
 
 static void silo_spec(gf_run_spec *s)
 {
-    gf_run_spec_defaults(s);
-    snprintf(s->scene, sizeof s->scene, "silo");
-    s->grains = (gf_grains_spec){.diameter_m = 0.5e-3, .polydispersity = 0.0, .density_kg_m3 = 2500.0};
-    s->contact.t_contact_nd = 4.97e-3;
-    s->contact.restitution = 0.885;
-    s->contact.friction = s->contact.wall_friction = 0.5;
-    s->contact.kt_over_kn = 2.0 / 7.0;
-    s->output.particles = s->output.fields = s->output.probes = s->output.diagnostics = 0;
-    snprintf(s->fluid.model, sizeof s->fluid.model, "none");
+    gf_silo_thesis_spec(s);
     gf_run_spec_set_param(NULL, s, "width_x_over_d", 10);
     gf_run_spec_set_param(NULL, s, "width_z_over_d", 10);
     gf_run_spec_set_param(NULL, s, "height_over_d", 20);

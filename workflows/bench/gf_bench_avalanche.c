@@ -41,6 +41,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "gf_bench_args.h"
 #include "gf_bench_clock.h"
 #include "gf_lammps_data.h"
 #include "gf_sim.h"
@@ -67,29 +68,16 @@ static int parse(int argc, char **argv, chute_args *a)
 {
     *a = (chute_args){.seed = 31, .angle_deg = 27.5, .bed_D = 12.0, .length_D = 6.0, .width_D = 6.0,
                       .tc_nd = 3.1e-3, .eps = 0.5, .spin_nd = 200.0, .avg_nd = 50.0, .every_nd = 1.0};
-    for (int i = 1; i < argc; i += 2) {
-        const char *k = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!v)
-            return 0;
-        double *num[] = {&a->angle_deg, &a->bed_D, &a->length_D, &a->width_D, &a->tc_nd,
-                         &a->eps,       &a->spin_nd, &a->avg_nd,  &a->every_nd};
-        const char *names[] = {"--angle", "--bed", "--length", "--width", "--tc", "--eps", "--spin", "--avg", "--every"};
-        int known = 0;
-        for (int q = 0; q < 9; ++q)
-            if (!strcmp(k, names[q]))
-                *num[q] = atof(v), known = 1;
-        if (!strcmp(k, "--seed"))
-            a->seed = atol(v), known = 1;
-        else if (!strcmp(k, "--window"))
-            a->window = atoi(v), known = 1;
-        else if (!strcmp(k, "--lammps-data"))
-            a->lammps = v, known = 1;
-        else if (!strcmp(k, "--measure-dump"))
-            a->dump = v, known = 1;
-        if (!known)
-            return 0;
-    }
-    return a->seed > 0 && a->bed_D > 0.0 && a->length_D > 0.0 && a->width_D > 0.0 && a->tc_nd > 0.0 &&
+    const gf_bench_flag flags[] = {
+        {"--angle", GF_BENCH_REAL, &a->angle_deg}, {"--bed", GF_BENCH_REAL, &a->bed_D},
+        {"--length", GF_BENCH_REAL, &a->length_D}, {"--width", GF_BENCH_REAL, &a->width_D},
+        {"--tc", GF_BENCH_REAL, &a->tc_nd},        {"--eps", GF_BENCH_REAL, &a->eps},
+        {"--spin", GF_BENCH_REAL, &a->spin_nd},    {"--avg", GF_BENCH_REAL, &a->avg_nd},
+        {"--every", GF_BENCH_REAL, &a->every_nd},  {"--seed", GF_BENCH_LONG, &a->seed},
+        {"--window", GF_BENCH_INT, &a->window},    {"--lammps-data", GF_BENCH_PATH, &a->lammps},
+        {"--measure-dump", GF_BENCH_PATH, &a->dump},
+    };
+    return gf_bench_parse_flags(argc, argv, flags, sizeof flags / sizeof *flags) && a->seed > 0 && a->bed_D > 0.0 && a->length_D > 0.0 && a->width_D > 0.0 && a->tc_nd > 0.0 &&
            a->spin_nd >= 0.0 && a->every_nd > 0.0 && a->avg_nd >= a->every_nd && a->window >= 0;
 }
 
@@ -329,11 +317,8 @@ int main(int argc, char **argv)
     gf_ctx ctx = {0};
     gf_run_spec spec;
     gf_sim *sim = NULL;
-    gf_sim_options opt = {.n_threads = 1};
-    if (make_spec(&ctx, &a, &spec) != GF_OK || gf_sim_create(&ctx, &spec, &opt, &sim) != GF_OK) {
-        fprintf(stderr, "gf-bench-avalanche: %s\n", ctx.last_msg);
+    if (!gf_bench_start(&ctx, make_spec(&ctx, &a, &spec), &spec, "gf-bench-avalanche", &sim))
         return 1;
-    }
     gf_measure_domain dom;
     gf_sim_box(sim, dom.lo_m, dom.hi_m, dom.periodic);
     int ok = 1;

@@ -29,6 +29,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "gf_bench_args.h"
 #include "gf_bench_clock.h"
 #include "gf_lammps_data.h"
 #include "gf_sim.h"
@@ -43,28 +44,13 @@ typedef struct collapse_args {
 static int parse(int argc, char **argv, collapse_args *a)
 {
     *a = (collapse_args){.seed = 1, .aspect = 1.0, .length_D = 16.0, .width_D = 3.0};
-    for (int i = 1; i < argc; i += 2) {
-        const char *k = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!v)
-            return 0;
-        if (!strcmp(k, "--seed"))
-            a->seed = atol(v);
-        else if (!strcmp(k, "--aspect"))
-            a->aspect = atof(v);
-        else if (!strcmp(k, "--length"))
-            a->length_D = atof(v);
-        else if (!strcmp(k, "--width"))
-            a->width_D = atof(v);
-        else if (!strcmp(k, "--end-time"))
-            a->end_nd = atof(v);
-        else if (!strcmp(k, "--lammps-data"))
-            a->lammps = v;
-        else if (!strcmp(k, "--dump"))
-            a->dump = v;
-        else
-            return 0;
-    }
-    return a->seed > 0 && a->aspect > 0.0 && a->length_D > 0.0 && a->width_D > 0.0;
+    const gf_bench_flag flags[] = {
+        {"--seed", GF_BENCH_LONG, &a->seed},          {"--aspect", GF_BENCH_REAL, &a->aspect},
+        {"--length", GF_BENCH_REAL, &a->length_D},    {"--width", GF_BENCH_REAL, &a->width_D},
+        {"--end-time", GF_BENCH_REAL, &a->end_nd},    {"--lammps-data", GF_BENCH_PATH, &a->lammps},
+        {"--dump", GF_BENCH_PATH, &a->dump},
+    };
+    return gf_bench_parse_flags(argc, argv, flags, sizeof flags / sizeof *flags) && a->seed > 0 && a->aspect > 0.0 && a->length_D > 0.0 && a->width_D > 0.0;
 }
 
 static gf_status make_spec(gf_ctx *ctx, const collapse_args *a, gf_run_spec *s)
@@ -153,12 +139,9 @@ int main(int argc, char **argv)
     gf_ctx ctx = {0};
     gf_run_spec spec;
     gf_sim *sim = NULL;
-    gf_sim_options opt = {.n_threads = 1};
     const gf_scene_desc *d = gf_scene_find("column_collapse");
-    if (make_spec(&ctx, &a, &spec) != GF_OK || gf_sim_create(&ctx, &spec, &opt, &sim) != GF_OK) {
-        fprintf(stderr, "gf-bench-collapse: %s\n", ctx.last_msg);
+    if (!gf_bench_start(&ctx, make_spec(&ctx, &a, &spec), &spec, "gf-bench-collapse", &sim))
         return 1;
-    }
     int ok = 1;
     if (a.lammps && !(gf_bench_write_lammps(sim, a.lammps) && append_geometry(sim, &a, a.lammps)))
         fprintf(stderr, "gf-bench-collapse: cannot write %s\n", a.lammps), ok = 0;

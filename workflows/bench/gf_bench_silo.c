@@ -25,10 +25,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "gf_bench_args.h"
 #include "gf_bench_clock.h"
 #include "gf_lammps_data.h"
 #include "gf_sim.h"
 #include "scenes/gf_scene.h"
+#include "scenes/gf_silo_thesis.h"
 
 typedef struct silo_args {
     double orifice, fill, width, transient, window;
@@ -38,39 +40,17 @@ typedef struct silo_args {
 static int parse(int argc, char **argv, silo_args *a)
 {
     *a = (silo_args){.orifice = 6.0, .fill = 25.4, .width = 25.0, .transient = 5.0, .window = 20.0};
-    for (int i = 1; i < argc; i += 2) {
-        const char *k = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!v)
-            return 0;
-        if (!strcmp(k, "--orifice"))
-            a->orifice = atof(v);
-        else if (!strcmp(k, "--fill"))
-            a->fill = atof(v);
-        else if (!strcmp(k, "--width"))
-            a->width = atof(v);
-        else if (!strcmp(k, "--transient"))
-            a->transient = atof(v);
-        else if (!strcmp(k, "--window"))
-            a->window = atof(v);
-        else if (!strcmp(k, "--lammps-data"))
-            a->lammps = v;
-        else
-            return 0;
-    }
-    return a->orifice >= 2.0 && a->fill > 0.0 && a->width > a->orifice && a->transient >= 0.0 && a->window > 0.0;
+    const gf_bench_flag flags[] = {
+        {"--orifice", GF_BENCH_REAL, &a->orifice},     {"--fill", GF_BENCH_REAL, &a->fill},
+        {"--width", GF_BENCH_REAL, &a->width},         {"--transient", GF_BENCH_REAL, &a->transient},
+        {"--window", GF_BENCH_REAL, &a->window},       {"--lammps-data", GF_BENCH_PATH, &a->lammps},
+    };
+    return gf_bench_parse_flags(argc, argv, flags, sizeof flags / sizeof *flags) && a->orifice >= 2.0 && a->fill > 0.0 && a->width > a->orifice && a->transient >= 0.0 && a->window > 0.0;
 }
 
 static gf_status make_spec(gf_ctx *ctx, const silo_args *a, gf_run_spec *s)
 {
-    gf_run_spec_defaults(s);
-    snprintf(s->scene, sizeof s->scene, "silo");
-    s->grains = (gf_grains_spec){.diameter_m = 0.5e-3, .polydispersity = 0.0, .density_kg_m3 = 2500.0};
-    s->contact.t_contact_nd = 4.97e-3;
-    s->contact.restitution = 0.885;
-    s->contact.friction = s->contact.wall_friction = 0.5;
-    s->contact.kt_over_kn = 2.0 / 7.0;
-    s->output.particles = s->output.fields = s->output.probes = s->output.diagnostics = 0;
-    snprintf(s->fluid.model, sizeof s->fluid.model, "none");
+    gf_silo_thesis_spec(s);
     GF_TRY(gf_run_spec_set_param(ctx, s, "width_x_over_d", a->width));
     GF_TRY(gf_run_spec_set_param(ctx, s, "width_z_over_d", a->width));
     GF_TRY(gf_run_spec_set_param(ctx, s, "orifice_x_over_d", a->orifice));
@@ -119,12 +99,9 @@ int main(int argc, char **argv)
     gf_ctx ctx = {0};
     gf_run_spec spec;
     gf_sim *sim = NULL;
-    gf_sim_options opt = {.n_threads = 1};
     const gf_scene_desc *desc = gf_scene_find("silo");
-    if (make_spec(&ctx, &a, &spec) != GF_OK || gf_sim_create(&ctx, &spec, &opt, &sim) != GF_OK) {
-        fprintf(stderr, "gf-bench-silo: %s\n", ctx.last_msg);
+    if (!gf_bench_start(&ctx, make_spec(&ctx, &a, &spec), &spec, "gf-bench-silo", &sim))
         return 1;
-    }
     if (a.lammps && !(gf_bench_write_lammps(sim, a.lammps) && append_geometry(sim, &a, a.lammps))) {
         fprintf(stderr, "gf-bench-silo: cannot write %s\n", a.lammps);
         gf_sim_destroy(&sim);
