@@ -28,7 +28,7 @@
 #include "particles/gf_packing.h"
 
 /* Version of the preparation protocol in the cache key. */
-#define GF_PACKING_PROTOCOL 1
+#define GF_PACKING_PROTOCOL 2
 
 /* gf_packing_build through the cache in dir (created when missing; NULL:
  * no cache, plain gf_packing_build). res->reused tells whether the deposit

@@ -13,6 +13,7 @@ extern const gf_scene_desc gf_scene_column_collapse;
 extern const gf_scene_desc gf_scene_elastic_gas;
 extern const gf_scene_desc gf_scene_friction_clamp;
 extern const gf_scene_desc gf_scene_janssen;
+extern const gf_scene_desc gf_scene_packing_preparation;
 extern const gf_scene_desc gf_scene_settled_bed;
 extern const gf_scene_desc gf_scene_settling;
 extern const gf_scene_desc gf_scene_silo;
@@ -26,6 +27,7 @@ static const gf_scene_desc *const gf_scene_table[] = {
     &gf_scene_elastic_gas,
     &gf_scene_friction_clamp,
     &gf_scene_janssen,
+    &gf_scene_packing_preparation,
     &gf_scene_settled_bed,
     &gf_scene_settling,
     &gf_scene_silo,
