@@ -55,14 +55,19 @@
  * 0.597 (interior), in 1-4 deposits of 2-4 s each; the global estimate is
  * 0.02 below the interior one (walls and the trimmed top).
  *
- * The preparation DEM is a small self-contained soft-sphere integrator
- * (linear spring-dashpot, tangential spring with a Coulomb cap, symplectic
- * Euler, cell-list Verlet table with tangential history, plane walls, glued
- * obstacles, periodic x and z): the preparation has its own friction,
- * restitution and drag that the run must not see, and it does not depend on
- * the run's stages. Its contacts are as stiff as t_c = 0.02 sqrt(D/g), so the
- * scene re-equilibrates with the run's contacts before t = 0 and records the
- * Phi it then measures.
+ * The deposits run in the engine (one DEM): each settling phase is a gf_sim
+ * of the scene packing_preparation (the container: box, floor, plane walls
+ * without friction) holding the grains and the glued obstacles
+ * (scenes/gf_packing_settle.h). What the preparation changes is stated as
+ * the phase's settings, not as other code: its contacts (linear law, t_c =
+ * 0.02 sqrt(D/g), restitution 0.3, friction mu_prep, dt = t_c/15), rotations
+ * locked (gf_sim_set_rotation_locked), and the drag F = -m u / tau_prep,
+ * applied as the exact decay u exp(-t/tau_prep) once per t_c (operator
+ * splitting; t_c/tau_prep = 0.01). The engine has one grain-grain friction,
+ * so during the deposition the obstacles take mu_prep too (see
+ * mu_obstacles). Its contacts are softer than a run's, so the scene
+ * re-equilibrates with the run's contacts before t = 0 and records the Phi
+ * it then measures.
  */
 #ifndef GF_PACKING_H
 #define GF_PACKING_H
@@ -101,8 +106,9 @@ typedef struct gf_packing_spec {
     double density_kg_m3;
     double gravity_m_s2;          /* |g|, along -y */
     const gf_particles *obstacles;/* glued grains present during the deposition (rough base, walls); may be NULL */
-    double mu_obstacles;          /* grain-obstacle friction during the deposition; 0: mu_prep (rough walls
-                                     that must carry their load, as in a silo, use the run's mu_c) */
+    double mu_obstacles;          /* grain-obstacle friction the scene asks for the deposition; the engine's
+                                     one grain-grain friction gives the obstacles mu_prep (or mu_natural, or
+                                     relax.mu) whatever this says: it only keys the cache (gf_packing_cache.h) */
     uint64_t seed;
 } gf_packing_spec;
 

@@ -166,7 +166,9 @@ gf_status gf_packing_settle(gf_ctx *ctx, const gf_packing_spec *sp, const gf_pac
         return GF_OK;
     gf_run_spec rs;
     GF_TRY(phase_spec(ctx, sp, ph, grains, &rs));
-    gf_sim_options opt = {0};
+    /* one thread: a deposit is the same whatever the machine, so that a campaign's runs may share it
+     * (io/gf_packing_cache.h); the engine's sums over contacts follow its per-thread chunks */
+    gf_sim_options opt = {.n_threads = 1};
     gf_sim *sim = NULL;
     GF_TRY(gf_sim_create(ctx, &rs, &opt, &sim));
     int64_t first_id = 0;
