@@ -268,7 +268,7 @@ gf_status gf_packing_build(gf_ctx *ctx, const gf_packing_spec *sp, gf_particles 
     clock_gettime(CLOCK_MONOTONIC, &t0);
     double tol = sp->tolerance > 0.0 ? sp->tolerance : 0.005;
     int max_it = sp->max_iterations > 0 ? sp->max_iterations : 8;
-    const double MU_MAX = 0.4;
+    const double MU_MAX = 0.4, MU_NOISE = 0.02;
     gf_particles *best = NULL;
     double best_phi = NAN, best_mu = NAN, best_err = INFINITY;
     int it = 0;
@@ -279,10 +279,11 @@ gf_status gf_packing_build(gf_ctx *ctx, const gf_packing_spec *sp, gf_particles 
         /* bracket [mu_lo, mu_hi] with Phi(mu_lo) >= target >= Phi(mu_hi); Phi decreases with mu */
         double mu_lo = 0.0, phi_lo = NAN, mu_hi = MU_MAX, phi_hi = NAN;
         double mu = mu_guess(sp->phi_target);
+        gf_packing_spec draw = *sp; /* the deposit's lattice: the spec's seed, then new ones (below) */
         for (it = 1; it <= max_it; ++it) {
             gf_particles *s = NULL;
             double phi;
-            gf_status st = deposit(ctx, sp, mu, &s, &phi);
+            gf_status st = deposit(ctx, &draw, mu, &s, &phi);
             if (st != GF_OK) {
                 gf_particles_destroy(&best);
                 return st;
@@ -326,6 +327,11 @@ gf_status gf_packing_build(gf_ctx *ctx, const gf_packing_spec *sp, gf_particles 
             } else {
                 next = fmax(0.0, mu - 0.05);
             }
+            /* a bracket narrower than MU_NOISE: across it Phi changes less than one deposit's scatter
+             * (a small control box samples few grains), so the next deposits are new draws of the
+             * loose lattice (another seed, derived from the spec's) rather than the same one again */
+            if (!isnan(phi_lo) && !isnan(phi_hi) && mu_hi - mu_lo < MU_NOISE)
+                draw.seed += 0x9e3779b97f4a7c15ull;
             mu = next;
         }
         if (best_err > tol) {

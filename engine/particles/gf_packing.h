@@ -22,7 +22,11 @@
  *      with mu_prep in [0, 0.4] (up to the sampling noise of a finite
  *      deposit); mu_prep is found by safeguarded regula falsi until the
  *      interior value is within the
- *      tolerance of the target. When the iteration budget is spent first,
+ *      tolerance of the target. Once the bracket on mu_prep is narrower than
+ *      0.02, across which Phi changes less than a small deposit's scatter,
+ *      the next deposits are new draws of the loose lattice (seeds derived
+ *      from the spec's) instead of the same lattice again.
+ *      When the iteration budget is spent first,
  *      the preparation fails (GF_ERR_PHYSICS, naming the closest deposit):
  *      a run never starts from a packing other than the one requested.
  *      With relax.mu > 0, each deposit then relaxes with the run's contacts
