@@ -264,14 +264,63 @@ static double mu_guess(double phi)
     return tab_mu[n - 1];
 }
 
+/* Search of mu_prep (gf_packing.h, step 3). MU_MAX: the most frictional
+ * deposit; MU_NOISE: a bracket narrower than this spans less change of Phi
+ * than one small deposit's scatter (a control box of a few D samples few
+ * grains: 0.01-0.02 between lattice draws at one mu, against a slope
+ * dPhi/dmu ~ -0.37); SLOPE_MIN/MAX bound the fitted slope to the range the
+ * calibration bed spans (mu_guess). */
+static const double MU_MAX = 0.4, MU_NOISE = 0.02, SLOPE_MIN = -0.6, SLOPE_MAX = -0.2;
+
+/* What the search knows: the bracket [mu_lo, mu_hi] with Phi(mu_lo) >= target
+ * >= Phi(mu_hi) (Phi decreases with mu), the least-squares sums of every
+ * deposit, and whether the bracket has shrunk into the scatter. */
+typedef struct mu_search {
+    double mu_lo, phi_lo, mu_hi, phi_hi;
+    double n, s_mu, s_phi, s_mumu, s_muphi;
+    int noisy;
+} mu_search;
+
+static void search_add(mu_search *q, double target, double mu, double phi)
+{
+    if (phi > target)
+        q->mu_lo = mu, q->phi_lo = phi;
+    else
+        q->mu_hi = mu, q->phi_hi = phi;
+    q->n += 1.0, q->s_mu += mu, q->s_phi += phi, q->s_mumu += mu * mu, q->s_muphi += mu * phi;
+    if (!isnan(q->phi_lo) && !isnan(q->phi_hi) && q->mu_hi - q->mu_lo < MU_NOISE)
+        q->noisy = 1;
+}
+
+/* The next mu_prep: a step of 0.05 towards the target until both ends are
+ * measured, then safeguarded regula falsi (Phi is close to linear in mu over
+ * the useful range); once the bracket is inside the scatter, where its ends
+ * are as much noise as trend, the mu at which the least-squares line through
+ * every deposit meets the target (each deposit then a new draw of the
+ * lattice, so that the line averages the scatter out). */
+static double search_next(const mu_search *q, double target, double mu)
+{
+    if (q->noisy) {
+        double m_mu = q->s_mu / q->n, m_phi = q->s_phi / q->n, var = q->s_mumu / q->n - m_mu * m_mu;
+        double slope = var > 0.0 ? (q->s_muphi / q->n - m_mu * m_phi) / var : SLOPE_MAX;
+        slope = fmin(fmax(slope, SLOPE_MIN), SLOPE_MAX);
+        return fmin(fmax(m_mu + (target - m_phi) / slope, 0.0), MU_MAX);
+    }
+    if (!isnan(q->phi_lo) && !isnan(q->phi_hi)) {
+        double f = (q->phi_lo - target) / (q->phi_lo - q->phi_hi);
+        f = fmin(fmax(f, 0.2), 0.8); /* noise of a finite deposit: stay well inside the bracket */
+        return q->mu_lo + f * (q->mu_hi - q->mu_lo);
+    }
+    return isnan(q->phi_hi) ? fmin(MU_MAX, mu + 0.05) : fmax(0.0, mu - 0.05);
+}
+
 gf_status gf_packing_build(gf_ctx *ctx, const gf_packing_spec *sp, gf_particles *out, gf_packing_result *res)
 {
     GF_TRY(check_spec(ctx, sp));
     struct timespec t0, t1;
     clock_gettime(CLOCK_MONOTONIC, &t0);
     double tol = sp->tolerance > 0.0 ? sp->tolerance : 0.005;
-    int max_it = sp->max_iterations > 0 ? sp->max_iterations : 8;
-    const double MU_MAX = 0.4, MU_NOISE = 0.02;
+    int max_it = sp->max_iterations > 0 ? sp->max_iterations : 16;
     gf_particles *best = NULL;
     double best_phi = NAN, best_mu = NAN, best_err = INFINITY;
     int it = 0;
@@ -279,8 +328,7 @@ gf_status gf_packing_build(gf_ctx *ctx, const gf_packing_spec *sp, gf_particles 
         GF_TRY(deposit(ctx, sp, sp->mu_natural, &best, &best_phi));
         best_mu = sp->mu_natural, it = 1;
     } else {
-        /* bracket [mu_lo, mu_hi] with Phi(mu_lo) >= target >= Phi(mu_hi); Phi decreases with mu */
-        double mu_lo = 0.0, phi_lo = NAN, mu_hi = MU_MAX, phi_hi = NAN;
+        mu_search q = {.mu_lo = 0.0, .phi_lo = NAN, .mu_hi = MU_MAX, .phi_hi = NAN};
         double mu = mu_guess(sp->phi_target);
         gf_packing_spec draw = *sp; /* the deposit's lattice: the spec's seed, then new ones (below) */
         for (it = 1; it <= max_it; ++it) {
@@ -302,10 +350,7 @@ gf_status gf_packing_build(gf_ctx *ctx, const gf_packing_spec *sp, gf_particles 
             }
             if (err <= tol)
                 break;
-            if (phi > sp->phi_target)
-                mu_lo = mu, phi_lo = phi;
-            else
-                mu_hi = mu, phi_hi = phi;
+            search_add(&q, sp->phi_target, mu, phi);
             if (phi > sp->phi_target && mu >= MU_MAX) {
                 gf_particles_destroy(&best);
                 return GF_FAIL(ctx, GF_ERR_PHYSICS,
@@ -318,24 +363,9 @@ gf_status gf_packing_build(gf_ctx *ctx, const gf_packing_spec *sp, gf_particles 
                                "packing: phi_initial %.3f is denser than frictionless deposition reaches (%.3f)",
                                sp->phi_target, phi);
             }
-            /* next mu: safeguarded regula falsi once both ends are measured (Phi is close to linear
-             * in mu over the useful range), else a step of 0.05 towards the target */
-            double next;
-            if (!isnan(phi_lo) && !isnan(phi_hi)) {
-                double f = (phi_lo - sp->phi_target) / (phi_lo - phi_hi);
-                f = fmin(fmax(f, 0.2), 0.8); /* noise of a finite deposit: stay well inside the bracket */
-                next = mu_lo + f * (mu_hi - mu_lo);
-            } else if (isnan(phi_hi)) {
-                next = fmin(MU_MAX, mu + 0.05);
-            } else {
-                next = fmax(0.0, mu - 0.05);
-            }
-            /* a bracket narrower than MU_NOISE: across it Phi changes less than one deposit's scatter
-             * (a small control box samples few grains), so the next deposits are new draws of the
-             * loose lattice (another seed, derived from the spec's) rather than the same one again */
-            if (!isnan(phi_lo) && !isnan(phi_hi) && mu_hi - mu_lo < MU_NOISE)
+            if (q.noisy)
                 draw.seed += 0x9e3779b97f4a7c15ull;
-            mu = next;
+            mu = search_next(&q, sp->phi_target, mu);
         }
         if (best_err > tol) {
             /* a small control box samples few grains: its Phi scatters by more than the tolerance */

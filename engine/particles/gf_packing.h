@@ -23,10 +23,11 @@
  *      deposit); mu_prep is found by safeguarded regula falsi until the
  *      interior value is within the
  *      tolerance of the target. Once the bracket on mu_prep is narrower than
- *      0.02, across which Phi changes less than a small deposit's scatter,
- *      the next deposits are new draws of the loose lattice (seeds derived
- *      from the spec's) instead of the same lattice again.
- *      When the iteration budget is spent first,
+ *      0.02, across which Phi changes less than a small deposit's scatter
+ *      (0.01-0.02 between lattice draws for a control box of a few D), the
+ *      next deposits are new draws of the loose lattice (seeds derived from
+ *      the spec's) at the mu_prep where the least-squares line through every
+ *      deposit meets the target. When the iteration budget is spent first,
  *      the preparation fails (GF_ERR_PHYSICS, naming the closest deposit):
  *      a run never starts from a packing other than the one requested.
  *      With relax.mu > 0, each deposit then relaxes with the run's contacts
@@ -104,7 +105,7 @@ typedef struct gf_packing_spec {
                                      §2.1.3.2, the Janssen silo); 0: the tuned protocol above */
     gf_packing_relax relax;       /* the run's contacts, to relax each deposit with before it is measured */
     double tolerance;             /* |phi_local - target| accepted; 0: 0.005 */
-    int max_iterations;           /* deposits in the bisection; 0: 8 */
+    int max_iterations;           /* deposits in the search; 0: 16 (columns of a few D need the draws) */
     double interior_margin_m;     /* margin of the control box; 0: 1.5 D */
     gf_psd psd;
     double density_kg_m3;
