@@ -234,6 +234,30 @@ gf_status gf_continuum_step(gf_continuum *s)
     return GF_OK;
 }
 
+gf_status gf_continuum_init_pressure(gf_continuum *s)
+{
+    double dt = s->p.dt_s;
+    for (int a = 0; a < s->n_comp; ++a)
+        for (size_t q = 0; q < s->g.n_faces[a]; ++q) {
+            s->u_old[a][q] = s->u[a][q];
+            if (s->unknown[a][q] >= 0)
+                s->u[a][q] += dt * s->p.body_accel_m_s2[a];
+        }
+    for (int a = 0; a < s->n_comp; ++a)
+        gf_grid_sync_periodic(&s->g, a, s->u[a]);
+    gf_status st = GF_OK;
+    if (s->p.two_phase) {
+        gf_continuum_face_density(s);
+        st = gf_continuum_project_variable(s, dt);
+    } else {
+        gf_continuum_project(s, dt);
+    }
+    for (int a = 0; a < s->n_comp; ++a)
+        for (size_t q = 0; q < s->g.n_faces[a]; ++q)
+            s->u[a][q] = s->u_old[a][q];
+    return st;
+}
+
 gf_status gf_continuum_run(gf_continuum *s, double t_end_s, double steady_tol_m_s, double *change_m_s)
 {
     double change = INFINITY;

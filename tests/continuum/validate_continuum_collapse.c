@@ -7,7 +7,7 @@
  * Units D = g = rho_s = 1; phi = 0.6; mu_s = 0.280, mu_2 = 0.703 (this DEM's own
  * steady chute, docs/notes/validation-dem.md), I0 = 0.279; air 1/100 of the bulk
  * density, viscosity 1e-3. Back wall at x = 0, no-slip floor and walls, open top.
- * Usage: validate_continuum_collapse a [cell_over_D] [t_end] [out.csv]
+ * Usage: validate_continuum_collapse a [cell_over_D] [t_end] [out.csv] [dt_over_cell]
  * Prints the run-out, the final height, the mass drift and the CPU time; the
  * optional CSV gets the final column height profile h(x).
  */
@@ -63,7 +63,7 @@ int main(int argc, char **argv)
         .two_phase = 1,
         .density2_kg_m3 = 0.006,
         .viscosity2_Pa_s = 1e-3,
-        .dt_s = 0.05 * h,
+        .dt_s = (argc > 5 ? atof(argv[5]) : 0.05) * h,
     };
     gf_continuum *s = NULL;
     if (gf_continuum_create(&ctx, &p, &s) != GF_OK) {
