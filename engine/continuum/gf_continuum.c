@@ -112,7 +112,7 @@ static gf_status allocate(gf_continuum *s)
             return GF_FAIL(s->ctx, GF_ERR_NOMEM, "continuum: velocity");
     }
     double **cell[] = {&s->p_cell, &s->div_cell, &s->eta_cell, &s->strain_cell, &s->diag_cell,
-                       &s->offsq_cell[0], &s->offsq_cell[1], &s->offsq_cell[2], &s->c_cell, &s->c_new};
+                       &s->offsq_cell[0], &s->offsq_cell[1], &s->offsq_cell[2], &s->c_cell, &s->c_new, &s->c_start};
     for (size_t f = 0; f < sizeof cell / sizeof cell[0]; ++f)
         if (!(*cell[f] = calloc(g->n_cells, sizeof(double))))
             return GF_FAIL(s->ctx, GF_ERR_NOMEM, "continuum: cell fields");
@@ -201,7 +201,7 @@ void gf_continuum_destroy(gf_continuum **ps)
         free(s->rho_face[a]);
     }
     free(s->p_cell), free(s->div_cell), free(s->eta_cell), free(s->strain_cell), free(s->diag_cell);
-    free(s->rhs), free(s->x), free(s->c_cell), free(s->c_new);
+    free(s->rhs), free(s->x), free(s->c_cell), free(s->c_new), free(s->c_start);
     gf_cont_lu_destroy(&s->lu_p);
     gf_cont_poisson_destroy(&s->poisson);
     gf_cont_lu_destroy(&s->lu);

@@ -85,13 +85,19 @@ int main(int argc, char **argv)
             return 1;
         }
         if (fmod(t, 5.0) == 0.0 || t >= t_end - 1e-9) {
-            double umax = 0.0;
+            double umax = 0.0; /* over the faces between two cells of the column (c > 1/2) */
             for (int k = 0; k < 2; ++k) {
                 const double *u = gf_continuum_velocity(s, k);
-                for (size_t q = 0; q < g->n_faces[k]; ++q)
-                    umax = fmax(umax, fabs(u[q]));
+                for (int j = 0; j < ny; ++j)
+                    for (int i = 0; i < nx; ++i) {
+                        int jn = j + (k == 1), in = i + (k == 0);
+                        if (in >= nx || jn >= ny || c[gf_grid_cell(g, i, j, 0)] <= 0.5 ||
+                            c[gf_grid_cell(g, in, jn, 0)] <= 0.5)
+                            continue;
+                        umax = fmax(umax, fabs(u[gf_grid_face(g, k, in, jn, 0)]));
+                    }
             }
-            printf("t = %5.1f sqrt(D/g): front %.2f D, (R - R0)/R0 = %.3f, height at x = 0: %.2f D, max|u| %.3f\n", t,
+            printf("t = %5.1f sqrt(D/g): front %.2f D, (R - R0)/R0 = %.3f, height at x = 0: %.2f D, max|u| in the column %.3f\n", t,
                    front(s, s), (front(s, s) - R0) / R0, column_height(s, s, 0), umax);
         }
     }
@@ -107,6 +113,14 @@ int main(int argc, char **argv)
             fprintf(f, "x_over_D,height_over_D\n");
             for (int i = 0; i < nx; ++i)
                 fprintf(f, "%.4f,%.4f\n", (i + 0.5) * h, column_height(s, s, i));
+            fclose(f);
+        }
+        char field[4200];
+        snprintf(field, sizeof field, "%s.c", argv[4]);
+        if ((f = fopen(field, "w"))) { /* the volume fraction, one row of cells per line from the floor up */
+            for (int j = 0; j < ny; ++j)
+                for (int i = 0; i < nx; ++i)
+                    fprintf(f, "%.4f%c", c[gf_grid_cell(g, i, j, 0)], i == nx - 1 ? '\n' : ' ');
             fclose(f);
         }
     }
