@@ -15,6 +15,7 @@
 #ifndef GF_CONTINUUM_COLLAPSE_H
 #define GF_CONTINUUM_COLLAPSE_H
 
+#include "continuum/gf_continuum.h"
 #include "core/gf_status.h"
 #include "gf_run_spec.h"
 
@@ -25,6 +26,11 @@ typedef struct gf_continuum_collapse_result {
     double column_length_m, column_height_m;
     double mass_drift;            /* relative change of the column's volume */
 } gf_continuum_collapse_result;
+
+/* The front as the DEM scene measures it (gf_scene_column_collapse.c): the farthest x of the
+ * deposit, contiguous from the back wall x = 0, whose solid height phi sum_j c h_y is at least
+ * D/4, interpolated linearly between column centres where it crosses D/4. */
+double gf_continuum_collapse_front(const gf_continuum *s, double phi, double D);
 
 /* output_dir and resolved_yaml may be NULL; interrupt (may be NULL) stops the run between steps. */
 gf_status gf_continuum_collapse_run(gf_ctx *ctx, const gf_run_spec *spec, const char *output_dir,
