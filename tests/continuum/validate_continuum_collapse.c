@@ -7,7 +7,7 @@
  * Units D = g = rho_s = 1; phi = 0.6; mu_s = 0.280, mu_2 = 0.703 (this DEM's own
  * steady chute, docs/notes/validation-dem.md), I0 = 0.279; air 1/100 of the bulk
  * density, viscosity 1e-3. Back wall at x = 0, no-slip floor and walls, open top.
- * Usage: validate_continuum_collapse a [cell_over_D] [t_end] [out.csv] [dt_over_cell]
+ * Usage: validate_continuum_collapse a [cell_over_D] [t_end] [out.csv] [dt_over_cell] [gdot_min]
  * Prints the run-out (the front where the solid height falls to D/4, as the
  * DEM scene measures it), the final height, the mass drift and the CPU time; the
  * optional CSV gets the final column height profile h(x).
@@ -49,7 +49,7 @@ int main(int argc, char **argv)
         .body_accel_m_s2 = {0.0, -1.0, 0.0},
         .rheology = GF_RHEOLOGY_MU_I,
         .mui = {.law = {.mu_s = 0.280, .mu_2 = 0.703, .I0 = 0.279}, .diameter_m = 1.0, .grain_density_kg_m3 = 1.0,
-                .gdot_min_1_s = 1e-4},
+                .gdot_min_1_s = argc > 6 ? atof(argv[6]) : 1e-4},
         .two_phase = 1,
         .density2_kg_m3 = 0.006,
         .viscosity2_Pa_s = 1e-3,
