@@ -68,10 +68,10 @@ static double column_height(const gf_continuum *s, int i)
     return h;
 }
 
-double gf_continuum_collapse_front(const gf_continuum *s, double phi, double D)
+double gf_continuum_collapse_extent(const gf_continuum *s, double depth_m)
 {
     const gf_grid *g = gf_continuum_grid(s);
-    double threshold = 0.25 * D / phi, dx = g->h_m[0], h_prev = 0.0;
+    double threshold = depth_m, dx = g->h_m[0], h_prev = 0.0;
     for (int i = 0; i < g->n[0]; ++i) {
         double h = column_height(s, i);
         if (h < threshold)
@@ -79,6 +79,11 @@ double gf_continuum_collapse_front(const gf_continuum *s, double phi, double D)
         h_prev = h;
     }
     return g->n[0] * dx;
+}
+
+double gf_continuum_collapse_front(const gf_continuum *s, double phi, double D)
+{
+    return gf_continuum_collapse_extent(s, 0.25 * D / phi);
 }
 
 static void measure(const gf_continuum *s, const collapse_geom *cg, double phi, double *front, double *height_back,
@@ -168,6 +173,7 @@ gf_status gf_continuum_collapse_run(gf_ctx *ctx, const gf_run_spec *spec, const 
         double volume;
         measure(s, &cg, spec->continuum.phi, &r->front_m, &r->height_m, &volume, NULL);
         r->mass_drift = volume / volume0 - 1.0;
+        r->body_front_m = gf_continuum_collapse_extent(s, 3.0 * cg.D);
         r->column_length_m = cg.R0;
         r->column_height_m = cg.H0;
         st = gf_nc_writer_close(&w);

@@ -23,10 +23,15 @@ typedef struct gf_continuum_collapse_result {
     long steps;
     double time_s;
     double front_m, height_m;     /* final front from the back wall, final height at the back wall */
+    double body_front_m;          /* final farthest x where the deposit is at least 3 D deep (its body,
+                                     without the thin front layer) */
     double column_length_m, column_height_m;
     double mass_drift;            /* relative change of the column's volume */
 } gf_continuum_collapse_result;
 
+/* The farthest x of the deposit, contiguous from the back wall x = 0, whose depth sum_j c h_y is at
+ * least depth_m, interpolated linearly between column centres where it crosses depth_m. */
+double gf_continuum_collapse_extent(const gf_continuum *s, double depth_m);
 /* The front as the DEM scene measures it (gf_scene_column_collapse.c): the farthest x of the
  * deposit, contiguous from the back wall x = 0, whose solid height phi sum_j c h_y is at least
  * D/4, interpolated linearly between column centres where it crosses D/4. */

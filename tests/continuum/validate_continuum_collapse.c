@@ -99,8 +99,10 @@ int main(int argc, char **argv)
     for (size_t q = 0; q < g->n_cells; ++q)
         mass += c[q];
     double cpu = (double)(clock() - c0) / CLOCKS_PER_SEC, R = gf_continuum_collapse_front(s, 0.6, 1.0);
-    printf("a = %.2f, cell %.2f D (%d x %d): (R_inf - R0)/R0 = %.3f, H_inf/R0 = %.3f, mass drift %.2e, %.1f s CPU\n", a, h,
-           nx, ny, (R - R0) / R0, column_height(s, s, 0) / R0, mass / mass0 - 1.0, cpu);
+    double body = gf_continuum_collapse_extent(s, 3.0);
+    printf("a = %.2f, cell %.2f D (%d x %d): (R_inf - R0)/R0 = %.3f, body (x_3D - R0)/R0 = %.3f, H_inf/R0 = %.3f, "
+           "mass drift %.2e, %.1f s CPU\n",
+           a, h, nx, ny, (R - R0) / R0, (body - R0) / R0, column_height(s, s, 0) / R0, mass / mass0 - 1.0, cpu);
     if (argc > 4) {
         FILE *f = fopen(argv[4], "w");
         if (f) {
