@@ -173,7 +173,7 @@ gf_status gf_continuum_collapse_run(gf_ctx *ctx, const gf_run_spec *spec, const 
         double volume;
         measure(s, &cg, spec->continuum.phi, &r->front_m, &r->height_m, &volume, NULL);
         r->mass_drift = volume / volume0 - 1.0;
-        r->body_front_m = gf_continuum_collapse_extent(s, 3.0 * cg.D);
+        r->body_front_m = gf_continuum_collapse_extent(s, 2.0 * cg.D);
         r->column_length_m = cg.R0;
         r->column_height_m = cg.H0;
         st = gf_nc_writer_close(&w);

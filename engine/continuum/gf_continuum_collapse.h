@@ -23,8 +23,8 @@ typedef struct gf_continuum_collapse_result {
     long steps;
     double time_s;
     double front_m, height_m;     /* final front from the back wall, final height at the back wall */
-    double body_front_m;          /* final farthest x where the deposit is at least 3 D deep (its body,
-                                     without the thin front layer) */
+    double body_front_m;          /* final farthest x where the deposit is at least 2 D deep: its body,
+                                     without a front layer one grain thick */
     double column_length_m, column_height_m;
     double mass_drift;            /* relative change of the column's volume */
 } gf_continuum_collapse_result;

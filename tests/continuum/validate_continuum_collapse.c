@@ -99,8 +99,8 @@ int main(int argc, char **argv)
     for (size_t q = 0; q < g->n_cells; ++q)
         mass += c[q];
     double cpu = (double)(clock() - c0) / CLOCKS_PER_SEC, R = gf_continuum_collapse_front(s, 0.6, 1.0);
-    double body = gf_continuum_collapse_extent(s, 3.0);
-    printf("a = %.2f, cell %.2f D (%d x %d): (R_inf - R0)/R0 = %.3f, body (x_3D - R0)/R0 = %.3f, H_inf/R0 = %.3f, "
+    double body = gf_continuum_collapse_extent(s, 2.0);
+    printf("a = %.2f, cell %.2f D (%d x %d): (R_inf - R0)/R0 = %.3f, body (x_2D - R0)/R0 = %.3f, H_inf/R0 = %.3f, "
            "mass drift %.2e, %.1f s CPU\n",
            a, h, nx, ny, (R - R0) / R0, (body - R0) / R0, column_height(s, s, 0) / R0, mass / mass0 - 1.0, cpu);
     if (argc > 4) {
