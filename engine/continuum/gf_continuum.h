@@ -26,7 +26,8 @@
  * 2-D is the 3-D code with one periodic cell along z and no z velocity.
  * Two phases (two_phase = 1, after Lagree, Staron & Popinet, JFM 686, 2011):
  * the main phase (mu(I)) and a light Newtonian one (air) mix cell by cell by
- * the volume fraction c, advected by a bounded MUSCL scheme (minmod), with
+ * the volume fraction c, advected by THINC in direction-split sweeps
+ * (Xiao, Honma & Kono 2005; Weymouth & Yue 2010; gf_continuum_vof.c), with
  * rho = c rho + (1 - c) rho_2 and eta = c eta + (1 - c) eta_2; the projection
  * is then variable-coefficient, div(grad(phi)/rho) = div u / dt, solved by
  * LU as well (it needs an outflow side to fix the pressure).
