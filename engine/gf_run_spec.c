@@ -101,8 +101,8 @@ gf_status gf_run_spec_check_method(gf_ctx *ctx, const gf_run_spec *spec)
 {
     if (strcmp(spec->method, "continuum") != 0)
         return GF_OK;
-    if (strcmp(spec->scene, "column_collapse") != 0)
-        return GF_FAIL(ctx, GF_ERR_CONFIG, "method: continuum runs the scene column_collapse only (got %s)",
+    if (strcmp(spec->scene, "column_collapse") != 0 && strcmp(spec->scene, "avalanche") != 0)
+        return GF_FAIL(ctx, GF_ERR_CONFIG, "method: continuum runs the scenes column_collapse and avalanche only (got %s)",
                        spec->scene);
     if (strcmp(spec->fluid.model, "none") != 0)
         return GF_FAIL(ctx, GF_ERR_CONFIG, "method: continuum is dry (fluid.model: none; got %s)", spec->fluid.model);

@@ -85,7 +85,7 @@ typedef struct gf_run_spec {
     gf_contact_spec contact;
     gf_fluid_spec fluid;
     gf_output_spec output;
-    char method[GF_NAME_LEN]; /* "dem" (grains) or "continuum" (the mu(I) continuum, column_collapse only) */
+    char method[GF_NAME_LEN]; /* "dem" (grains) or "continuum" (the mu(I) continuum: column_collapse, avalanche) */
     gf_continuum_spec continuum;
     /* the groups a campaign asked for (NaN when not on the grid); recorded as attributes */
     double stokes_St, density_ratio_r, aspect_ratio_a, phi_initial;

@@ -112,7 +112,7 @@ static gf_status allocate(gf_continuum *s)
             return GF_FAIL(s->ctx, GF_ERR_NOMEM, "continuum: velocity");
     }
     double **cell[] = {&s->p_cell, &s->div_cell, &s->eta_cell, &s->strain_cell, &s->diag_cell,
-                       &s->offsq_cell[0], &s->offsq_cell[1], &s->offsq_cell[2], &s->c_cell, &s->c_new};
+                       &s->offsq_cell[0], &s->offsq_cell[1], &s->offsq_cell[2], &s->c_cell, &s->c_new, &s->c_start};
     for (size_t f = 0; f < sizeof cell / sizeof cell[0]; ++f)
         if (!(*cell[f] = calloc(g->n_cells, sizeof(double))))
             return GF_FAIL(s->ctx, GF_ERR_NOMEM, "continuum: cell fields");
@@ -201,7 +201,7 @@ void gf_continuum_destroy(gf_continuum **ps)
         free(s->rho_face[a]);
     }
     free(s->p_cell), free(s->div_cell), free(s->eta_cell), free(s->strain_cell), free(s->diag_cell);
-    free(s->rhs), free(s->x), free(s->c_cell), free(s->c_new);
+    free(s->rhs), free(s->x), free(s->c_cell), free(s->c_new), free(s->c_start);
     gf_cont_lu_destroy(&s->lu_p);
     gf_cont_poisson_destroy(&s->poisson);
     gf_cont_lu_destroy(&s->lu);
@@ -232,6 +232,30 @@ gf_status gf_continuum_step(gf_continuum *s)
                 return GF_FAIL(s->ctx, GF_ERR_NUMERIC, "continuum: non-finite velocity at t = %g s (step %ld)",
                                s->time_s, s->steps);
     return GF_OK;
+}
+
+gf_status gf_continuum_init_pressure(gf_continuum *s)
+{
+    double dt = s->p.dt_s;
+    for (int a = 0; a < s->n_comp; ++a)
+        for (size_t q = 0; q < s->g.n_faces[a]; ++q) {
+            s->u_old[a][q] = s->u[a][q];
+            if (s->unknown[a][q] >= 0)
+                s->u[a][q] += dt * s->p.body_accel_m_s2[a];
+        }
+    for (int a = 0; a < s->n_comp; ++a)
+        gf_grid_sync_periodic(&s->g, a, s->u[a]);
+    gf_status st = GF_OK;
+    if (s->p.two_phase) {
+        gf_continuum_face_density(s);
+        st = gf_continuum_project_variable(s, dt);
+    } else {
+        gf_continuum_project(s, dt);
+    }
+    for (int a = 0; a < s->n_comp; ++a)
+        for (size_t q = 0; q < s->g.n_faces[a]; ++q)
+            s->u[a][q] = s->u_old[a][q];
+    return st;
 }
 
 gf_status gf_continuum_run(gf_continuum *s, double t_end_s, double steady_tol_m_s, double *change_m_s)

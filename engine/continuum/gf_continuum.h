@@ -26,7 +26,8 @@
  * 2-D is the 3-D code with one periodic cell along z and no z velocity.
  * Two phases (two_phase = 1, after Lagree, Staron & Popinet, JFM 686, 2011):
  * the main phase (mu(I)) and a light Newtonian one (air) mix cell by cell by
- * the volume fraction c, advected by a bounded MUSCL scheme (minmod), with
+ * the volume fraction c, advected by THINC in direction-split sweeps
+ * (Xiao, Honma & Kono 2005; Weymouth & Yue 2010; gf_continuum_vof.c), with
  * rho = c rho + (1 - c) rho_2 and eta = c eta + (1 - c) eta_2; the projection
  * is then variable-coefficient, div(grad(phi)/rho) = div u / dt, solved by
  * LU as well (it needs an outflow side to fix the pressure).
@@ -77,6 +78,11 @@ gf_status gf_continuum_params_check(gf_ctx *ctx, const gf_continuum_params *p, c
 /* Returns owned solver; fluid at rest, boundary values set. ctx is borrowed for its lifetime. */
 gf_status gf_continuum_create(gf_ctx *ctx, const gf_continuum_params *p, gf_continuum **out);
 void gf_continuum_destroy(gf_continuum **s);
+/* Sets the pressure of the fluid at rest under the body force: one projection of
+ * u* = dt g from rest, the velocity left at rest. A mu(I) material has no strength
+ * where P <= 0, so without it the first step would be inviscid. Call before the
+ * first step (after setting the volume fraction under two phases). */
+gf_status gf_continuum_init_pressure(gf_continuum *s);
 /* One step of dt_s. */
 gf_status gf_continuum_step(gf_continuum *s);
 /* Steps until t_end_s or until max|u^{n+1} - u^n| <= steady_tol_m_s (0: never); *change_m_s gets the last change. */

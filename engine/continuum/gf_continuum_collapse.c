@@ -58,23 +58,45 @@ static gf_continuum_params solver_params(const gf_run_spec *spec, const collapse
     return p;
 }
 
-static void measure(const gf_continuum *s, double *front, double *height_back, double *volume, double *height_max)
+static double column_height(const gf_continuum *s, int i)
 {
     const gf_grid *g = gf_continuum_grid(s);
     const double *c = gf_continuum_fraction((gf_continuum *)s);
-    *front = 0.0;
-    *height_back = 0.0;
+    double h = 0.0;
+    for (int j = 0; j < g->n[1]; ++j)
+        h += c[gf_grid_cell(g, i, j, 0)] * g->h_m[1];
+    return h;
+}
+
+double gf_continuum_collapse_extent(const gf_continuum *s, double depth_m)
+{
+    const gf_grid *g = gf_continuum_grid(s);
+    double threshold = depth_m, dx = g->h_m[0], h_prev = 0.0;
+    for (int i = 0; i < g->n[0]; ++i) {
+        double h = column_height(s, i);
+        if (h < threshold)
+            return i == 0 ? 0.0 : (i - 0.5) * dx + dx * (h_prev - threshold) / (h_prev - h);
+        h_prev = h;
+    }
+    return g->n[0] * dx;
+}
+
+double gf_continuum_collapse_front(const gf_continuum *s, double phi, double D)
+{
+    return gf_continuum_collapse_extent(s, 0.25 * D / phi);
+}
+
+static void measure(const gf_continuum *s, const collapse_geom *cg, double phi, double *front, double *height_back,
+                    double *volume, double *height_max)
+{
+    const gf_grid *g = gf_continuum_grid(s);
+    *front = gf_continuum_collapse_front(s, phi, cg->D);
+    *height_back = column_height(s, 0);
     *volume = 0.0;
     if (height_max)
         *height_max = 0.0;
     for (int i = 0; i < g->n[0]; ++i) {
-        double col = 0.0;
-        for (int j = 0; j < g->n[1]; ++j)
-            col += c[gf_grid_cell(g, i, j, 0)] * g->h_m[1];
-        if (c[gf_grid_cell(g, i, 0, 0)] > 0.5)
-            *front = (i + 1) * g->h_m[0];
-        if (i == 0)
-            *height_back = col;
+        double col = column_height(s, i);
         if (height_max && col > *height_max)
             *height_max = col;
         *volume += col * g->h_m[0];
@@ -107,7 +129,7 @@ static gf_status run_steps(gf_ctx *ctx, const gf_run_spec *spec, const collapse_
         double t = gf_continuum_time(s);
         if (w && t >= next - 1e-9 * every) {
             double height_max;
-            measure(s, &front, &height, &volume, &height_max);
+            measure(s, cg, spec->continuum.phi, &front, &height, &volume, &height_max);
             double v[3] = {front, height_max, spec->continuum.phi};
             GF_TRY(gf_nc_diagnostics_append(w, t, v));
             next += every;
@@ -139,16 +161,19 @@ gf_status gf_continuum_collapse_run(gf_ctx *ctx, const gf_run_spec *spec, const 
     for (int j = 0; j < g->n[1]; ++j)
         for (int i = 0; i < g->n[0]; ++i)
             c[gf_grid_cell(g, i, j, 0)] = ((i + 0.5) * g->h_m[0] < cg.R0 && (j + 0.5) * g->h_m[1] < cg.H0) ? 1.0 : 0.0;
+    gf_status st = gf_continuum_init_pressure(s);
     double front0, height0, volume0;
-    measure(s, &front0, &height0, &volume0, NULL);
+    measure(s, &cg, spec->continuum.phi, &front0, &height0, &volume0, NULL);
     gf_nc_writer *w = NULL;
-    gf_status st = output_dir ? open_diagnostics(ctx, spec, &cg, output_dir, resolved_yaml, &w) : GF_OK;
+    if (st == GF_OK && output_dir)
+        st = open_diagnostics(ctx, spec, &cg, output_dir, resolved_yaml, &w);
     if (st == GF_OK)
         st = run_steps(ctx, spec, &cg, s, w, interrupt, r);
     if (st == GF_OK) {
         double volume;
-        measure(s, &r->front_m, &r->height_m, &volume, NULL);
+        measure(s, &cg, spec->continuum.phi, &r->front_m, &r->height_m, &volume, NULL);
         r->mass_drift = volume / volume0 - 1.0;
+        r->body_front_m = gf_continuum_collapse_extent(s, 2.0 * cg.D);
         r->column_length_m = cg.R0;
         r->column_height_m = cg.H0;
         st = gf_nc_writer_close(&w);

@@ -15,6 +15,7 @@
 #ifndef GF_CONTINUUM_COLLAPSE_H
 #define GF_CONTINUUM_COLLAPSE_H
 
+#include "continuum/gf_continuum.h"
 #include "core/gf_status.h"
 #include "gf_run_spec.h"
 
@@ -22,9 +23,19 @@ typedef struct gf_continuum_collapse_result {
     long steps;
     double time_s;
     double front_m, height_m;     /* final front from the back wall, final height at the back wall */
+    double body_front_m;          /* final farthest x where the deposit is at least 2 D deep: its body,
+                                     without a front layer one grain thick */
     double column_length_m, column_height_m;
     double mass_drift;            /* relative change of the column's volume */
 } gf_continuum_collapse_result;
+
+/* The farthest x of the deposit, contiguous from the back wall x = 0, whose depth sum_j c h_y is at
+ * least depth_m, interpolated linearly between column centres where it crosses depth_m. */
+double gf_continuum_collapse_extent(const gf_continuum *s, double depth_m);
+/* The front as the DEM scene measures it (gf_scene_column_collapse.c): the farthest x of the
+ * deposit, contiguous from the back wall x = 0, whose solid height phi sum_j c h_y is at least
+ * D/4, interpolated linearly between column centres where it crosses D/4. */
+double gf_continuum_collapse_front(const gf_continuum *s, double phi, double D);
 
 /* output_dir and resolved_yaml may be NULL; interrupt (may be NULL) stops the run between steps. */
 gf_status gf_continuum_collapse_run(gf_ctx *ctx, const gf_run_spec *spec, const char *output_dir,

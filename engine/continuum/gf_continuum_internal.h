@@ -25,6 +25,7 @@ struct gf_continuum {
     gf_cont_poisson *poisson;
     gf_cont_lu *lu;
     double *c_cell, *c_new;    /* volume fraction of the main phase */
+    double *c_start;           /* c at the start of a split advection step (gf_continuum_vof.c) */
     double *rho_face[3];       /* density on the faces (two phases), else NULL */
     gf_cont_lu *lu_p;          /* variable-density pressure (two phases) */
     int factored;          /* a Newtonian matrix is factored once per dt */

@@ -8,13 +8,8 @@
  *  - projection: div(grad(phi)/rho) = div(u**)/dt on the cells (zero flux
  *    across walls and inflows, phi = 0 on outflow faces), assembled and
  *    solved by LU every step (rho moves with c), u = u** - dt grad(phi)/rho;
- *  - c is advected by the divergence-free u^{n+1} in conservation form with a
- *    MUSCL reconstruction limited by minmod (van Leer 1979), in sub-steps of
- *    Courant number 0.2, and clipped to [0, 1]; what enters through an open
- *    side is the second phase (c = 0).
+ *  - c is advected by the divergence-free u^{n+1}: gf_continuum_vof.c.
  */
-#include <math.h>
-
 #include "continuum/gf_continuum_internal.h"
 
 static double density_of(const gf_continuum *s, double c)
@@ -84,75 +79,4 @@ gf_status gf_continuum_project_variable(gf_continuum *s, double dt)
     for (int a = 0; a < s->n_comp; ++a)
         gf_grid_sync_periodic(g, a, s->u[a]);
     return GF_OK;
-}
-
-static double minmod(double x, double y)
-{
-    if (x * y <= 0.0)
-        return 0.0;
-    return fabs(x) < fabs(y) ? x : y;
-}
-
-/* c at cell index m along a (others from idx), or -1 outside a non-periodic axis. */
-static double cell_c(const gf_continuum *s, const int idx[3], int a, int m)
-{
-    int t[3] = {idx[0], idx[1], idx[2]};
-    t[a] = m;
-    if (!s->g.periodic[a] && (m < 0 || m >= s->g.n[a]))
-        return -1.0;
-    return s->c_cell[gf_continuum_cell_clamped(s, t)];
-}
-
-/* Upwind MUSCL value of c on face idx of axis a carrying velocity un. */
-static double face_c(const gf_continuum *s, const int idx[3], int a, double un)
-{
-    int m = idx[a];
-    int donor = un > 0.0 ? m - 1 : m, dir = un > 0.0 ? 1 : -1;
-    double cd = cell_c(s, idx, a, donor);
-    if (cd < 0.0)
-        return 0.0;  /* entering through an open side: the second phase */
-    double cu = cell_c(s, idx, a, donor - dir), cdn = cell_c(s, idx, a, donor + dir);
-    if (cu < 0.0 || cdn < 0.0)
-        return cd;  /* first order next to a boundary */
-    return cd + 0.5 * dir * minmod(cd - cu, cdn - cd);
-}
-
-static void fraction_substep(gf_continuum *s, double dt)
-{
-    const gf_grid *g = &s->g;
-    for (size_t c = 0; c < g->n_cells; ++c)
-        s->c_new[c] = s->c_cell[c];
-    for (int a = 0; a < s->n_comp; ++a)
-        for (int k = 0; k < g->nf[a][2]; ++k)
-            for (int j = 0; j < g->nf[a][1]; ++j)
-                for (int i = 0; i < g->nf[a][0]; ++i) {
-                    int idx[3] = {i, j, k};
-                    if (g->periodic[a] && idx[a] == g->n[a])
-                        continue;  /* the duplicate of face 0 */
-                    double un = s->u[a][gf_grid_face(g, a, i, j, k)];
-                    if (un == 0.0)
-                        continue;
-                    double flux = dt / g->h_m[a] * un * face_c(s, idx, a, un);
-                    int lo[3] = {i, j, k};
-                    lo[a] -= 1;
-                    if (g->periodic[a] || idx[a] < g->n[a])
-                        s->c_new[gf_continuum_cell_clamped(s, idx)] += flux;
-                    if (g->periodic[a] || idx[a] > 0)
-                        s->c_new[gf_continuum_cell_clamped(s, lo)] -= flux;
-                }
-    for (size_t c = 0; c < g->n_cells; ++c)
-        s->c_cell[c] = fmin(fmax(s->c_new[c], 0.0), 1.0);
-}
-
-void gf_continuum_advect_fraction(gf_continuum *s, double dt)
-{
-    const gf_grid *g = &s->g;
-    double courant = 0.0;
-    for (int a = 0; a < s->n_comp; ++a)
-        courant += dt * gf_continuum_max_speed(s, a) / g->h_m[a];
-    int n_sub = (int)ceil(courant / 0.2);
-    if (n_sub < 1)
-        n_sub = 1;
-    for (int k = 0; k < n_sub; ++k)
-        fraction_substep(s, dt / n_sub);
 }

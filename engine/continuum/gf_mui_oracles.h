@@ -68,4 +68,30 @@ double gf_poiseuille_umax(const gf_mui_params *law, double beta, double Lambda);
 /* Newtonian limit beta Lambda I0 / (8 (mu_2 - mu_s)), eq. (5.21). */
 double gf_poiseuille_umax_newtonian(const gf_mui_params *law, double beta, double Lambda);
 
+/*
+ * Steady uniform flow down a rough incline (Bagnold profile; GDR MiDi 2004,
+ * §3.2; Jop, Forterre & Pouliquen, JFM 541, 2005, §3; Jop et al. 2006). A
+ * layer of depth h at angle theta, hydrostatic P = phi rho_s g cos(theta)
+ * (h - y) and tau = tan(theta) P, so mu(I) = tan(theta) everywhere: I is
+ * uniform, I(theta) = I0 (tan theta - mu_s)/(mu_2 - tan theta), and
+ *   u(y) = (2/3) I sqrt(phi g cos theta) / d (h^{3/2} - (h - y)^{3/2}).
+ * Steady flow exists only for atan(mu_s) < theta < atan(mu_2): below, the
+ * layer stays static; above, it accelerates without bound. Dimensional (SI).
+ */
+typedef struct gf_bagnold {
+    gf_mui_params law;
+    double theta_rad, phi, g_m_s2, d_m, h_m;
+} gf_bagnold;
+
+/* The start and stop angles atan(mu_s), atan(mu_2) (rad). */
+double gf_bagnold_theta_start(const gf_mui_params *law);
+double gf_bagnold_theta_stop(const gf_mui_params *law);
+/* I(theta); 0 at or below atan(mu_s), inf at or above atan(mu_2). */
+double gf_bagnold_inertial_number(const gf_bagnold *b);
+/* u(y) for 0 <= y <= h (m/s); 0 when the layer does not flow, inf when it has no steady state. */
+double gf_bagnold_velocity(const gf_bagnold *b, double y_m);
+/* Surface velocity u(h) and the flux per unit width int_0^h u dy = (3/5) h u(h) (m2/s). */
+double gf_bagnold_surface_velocity(const gf_bagnold *b);
+double gf_bagnold_flux(const gf_bagnold *b);
+
 #endif

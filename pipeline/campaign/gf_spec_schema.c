@@ -35,7 +35,7 @@ static const gf_spec_field fields[] = {
     {"", "seed", GF_FIELD_U64, offsetof(gf_run_spec, seed), 0, 0, 0, 0, "", NULL, "RNG seed (packing, radii)", NULL},
     D("", "end_time", end_time_nd, 0, 1e7, 0, "1", "end time in sqrt(D/g); 0: the scene's default"),
     D("", "gravity", gravity_m_s2, 0, 1e3, 1, "m s-2", "|g|"),
-    N("", "method", method, methods, "dem: grains; continuum: the mu(I) continuum (column_collapse)"),
+    N("", "method", method, methods, "dem: grains; continuum: the mu(I) continuum (column_collapse, avalanche)"),
     D("grains", "diameter_m", grains.diameter_m, 0, 1.0, 1, "m", "mean grain diameter D"),
     D("grains", "polydispersity", grains.polydispersity, 0, 0.5, 0, "1", "radii uniform in R(1 -+ p)"),
     D("grains", "density_kg_m3", grains.density_kg_m3, 0, 1e5, 1, "kg m-3", "grain density rho_p"),

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "continuum/gf_continuum_avalanche.h"
 #include "continuum/gf_continuum_collapse.h"
 #include "core/gf_timer.h"
 #include "gf_sim.h"
@@ -103,7 +104,12 @@ gf_status gf_run_execute(gf_ctx *ctx, const gf_run_spec *spec, const gf_run_exec
     const double t0 = gf_wtime();
     gf_sim *sim = NULL;
     gf_status st = GF_OK;
-    if (strcmp(spec->method, "continuum") == 0) { /* the mu(I) continuum instead of grains */
+    if (strcmp(spec->method, "continuum") == 0 && strcmp(spec->scene, "avalanche") == 0) {
+        gf_continuum_avalanche_result ar;
+        st = gf_continuum_avalanche_run(&run_ctx, spec, opt->run_dir, yaml, opt->interrupt, &ar);
+        res->steps = ar.steps;
+        res->sim_time_s = ar.time_s;
+    } else if (strcmp(spec->method, "continuum") == 0) { /* the mu(I) continuum instead of grains */
         gf_continuum_collapse_result cr;
         st = gf_continuum_collapse_run(&run_ctx, spec, opt->run_dir, yaml, opt->interrupt, &cr);
         res->steps = cr.steps;
