@@ -124,6 +124,25 @@ gf_status gf_sim_stress_tensor_slabs(gf_sim *sim, double y0_m, double dy_m, int 
 gf_status gf_sim_stress_tensor_slabs_in(gf_sim *sim, const double footprint_m[4], double y0_m, double dy_m,
                                         int n_slabs, double *S_Pa);
 
+/* Contacts and contact candidates, for measurements, audits and tests that
+ * read the contact network without the engine's internals
+ * (engine/gf_sim_contacts.c). One record per grain pair of the neighbour list
+ * (within contact range plus the Verlet skin and the lubrication range;
+ * overlap_m <= 0 when apart) and per grain and wall (wall >= 0, j unused).
+ * history: the tangential spring (GF_CONTACT_HISTORY doubles, the
+ * delta_t vector of Cundall & Strack 1979), current as of the last force
+ * evaluation. The callback returns non-zero to stop the walk. */
+typedef struct gf_sim_contact {
+    size_t i, j;             /* store indices of the grains (j: pairs only) */
+    int wall;                /* -1: a grain pair; else the wall id */
+    double branch_m[3];      /* x_i - x_j (periodic image), or from the wall's contact point to x_i */
+    double normal[3];        /* unit normal from j (or the wall) towards i */
+    double overlap_m;        /* R_i + R_j - |branch| (R_i - distance for a wall); > 0 in contact */
+    const double *history;   /* tangential history of the contact */
+} gf_sim_contact;
+typedef int (*gf_sim_contact_fn)(void *user, const gf_sim_contact *c);
+gf_status gf_sim_foreach_contact(const gf_sim *sim, gf_sim_contact_fn fn, void *user);
+
 /* Mechanical energy of the mobile grains (gf_sim_energy.c): kinetic,
  * rotational, buoyant-weight potential, and the elastic energy stored in the
  * normal and tangential springs of the linear law. Without a driving force it
