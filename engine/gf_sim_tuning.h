@@ -35,6 +35,12 @@ typedef struct gf_sim_tuning {
      * when a grain has moved half of it. 0: GF_SIM_NEAR_SKIN_DEFAULT; < 0:
      * scan the whole list. The results do not depend on it (bitwise). */
     double near_skin;
+    /* 1: every step is the reference step, the velocity-Verlet method as
+     * written (engine/sim/gf_step.c: kick, drift, neighbour upkeep, forces
+     * over the whole list, kick), instead of the fused step that defers and
+     * merges the kicks and scans the near list. The results do not depend on
+     * it (bitwise, tests/engine/test_reference_step.c). */
+    int reference_step;
 } gf_sim_tuning;
 
 #endif

@@ -29,7 +29,7 @@
 #include <string.h>
 
 #include "dem_testutil.h"
-#include "gf_sim_internal.h"
+#include "sim/gf_sim_internal.h"
 
 typedef struct pair_h {
     int64_t a, b;

@@ -26,7 +26,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "gf_sim_internal.h"
+#include "sim/gf_sim_internal.h"
 #include "gf_test.h"
 #include "gf_test_sim.h"
 

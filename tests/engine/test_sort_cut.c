@@ -34,7 +34,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "gf_sim_internal.h"
+#include "sim/gf_sim_internal.h"
 #include "gf_test.h"
 #include "gf_test_sim.h"
 

@@ -72,7 +72,7 @@
 
 #include "coupling/gf_coupling.h"
 #include "gf_sim.h"
-#include "gf_sim_internal.h" /* DEM substeps per fluid step, for the cost line */
+#include "sim/gf_sim_internal.h" /* DEM substeps per fluid step, for the cost line */
 #include "scenes/gf_scene.h"
 #include "scenes/gf_measure.h"
 #include "scene_runner.h"      /* runner_mean_sd */

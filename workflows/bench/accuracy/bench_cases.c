@@ -72,7 +72,7 @@
 #include "fluid/gf_fluid_exact.h"
 #include "coupling/gf_coupling.h"
 #include "gf_sim.h"
-#include "gf_sim_internal.h" /* the coupling and the gauges, for the basal pore pressure */
+#include "sim/gf_sim_internal.h" /* the coupling and the gauges, for the basal pore pressure */
 #include "scenes/gf_scene.h"
 
 /* CPU time of the process, s: the cost of a one-thread run, insensitive to

@@ -1,8 +1,9 @@
 /*
  * The gf_sim object, shared by the files of the sim module only
- * (gf_sim.c: create/step loop/builders; gf_sim_forces.c: the pair and wall
- * loops; gf_sim_run.c: outputs; gf_sim_checkpoint.c: restart). Not a public
- * header: drivers and scenes use gf_sim.h.
+ * engine/sim/ (gf_sim.c: creation, accessors, builders; gf_step.c: the step
+ * loop; gf_neighbours.c: neighbour upkeep; gf_forces.c and gf_pairs_blocked.c:
+ * the pair and wall loops; gf_run.c: outputs; ...). Not a public header:
+ * drivers, scenes, tests and benchmarks use gf_sim.h.
  */
 #ifndef GF_SIM_INTERNAL_H
 #define GF_SIM_INTERNAL_H
@@ -122,6 +123,28 @@ typedef struct gf_near_list {
     long n_builds;
 } gf_near_list;
 
+/* Where the step loop stands between two of its operations (gf_step.c owns
+ * the transitions; the fused force pass of gf_forces.c writes its result).
+ * The phases, in the order a step goes through them:
+ *   STALE      F in the store does not belong to x (a builder added or moved
+ *              grains, changed a wall): the next gf_sim_advance rebuilds the
+ *              list and evaluates F(t) first;
+ *   AT_T       x(t), v(t), F(t): what a caller sees between advances;
+ *   KICK_OWED  x(t), F(t), and v one half-kick short of v(t): the closing
+ *              half-kick is deferred to the next opening one (or flush_kick);
+ *   MOVED      kicked and drifted: x(t + dt), v(t + dt/2), the predicted
+ *              velocities v* for the dashpot, and the forces of the n_moved
+ *              grains zeroed (the next force pass accumulates into them). */
+typedef enum gf_step_phase { GF_STEP_STALE = 0, GF_STEP_AT_T, GF_STEP_KICK_OWED, GF_STEP_MOVED } gf_step_phase;
+typedef struct gf_step_state {
+    gf_step_phase phase;
+    size_t n_moved;
+    int fuse;               /* asks the force pass to end the step and run the next kick-drift (gf_forces.c) */
+    int fused;              /* it did (phase MOVED): fused_d2 is the displacement the next step checks */
+    gf_drift_d2 fused_d2;
+    double fused_s;         /* thread 0's wall time in that pass (given to the integrate timer) */
+} gf_step_state;
+
 struct gf_sim {
     gf_ctx *ctx;                /* borrowed from the creator */
     gf_run_spec spec;
@@ -165,16 +188,7 @@ struct gf_sim {
     void *ref_block;                /* owns the thirteen arrays above, staggered (core/gf_soa.h) */
     double *pair_meff, *pair_sqrt_mk; /* per neighbour pair: m*, sqrt(m* k_n) */
     size_t pair_cap;
-    int vp_valid;                   /* set by the drift, consumed by the next force evaluation */
-    size_t forces_zeroed;           /* grains [0, forces_zeroed) had F, T zeroed by the drift (0: none) */
-    int kick_pending;               /* the last step's closing half-kick is deferred (gf_sim.c: dem_step) */
-    /* the next step's kick-drift done at the end of the force pass's parallel
-     * region (gf_sim.c: dem_step): asked for (drift_with_forces), done
-     * (drift_done, with its largest squared displacement and the first
-     * thread's wall time in it) */
-    int drift_with_forces, drift_done;
-    gf_drift_d2 drift_d2;
-    double drift_s;
+    gf_step_state stepper;          /* where the step loop stands (gf_step.c) */
     unsigned long force_count;      /* force evaluations so far (gf_sim_accum.pairs_done) */
     size_t ref_cap;
     double skin_m, extra_m;
@@ -183,7 +197,6 @@ struct gf_sim {
     gf_sim_accum acc[GF_SIM_MAX_THREADS];
     size_t n_contacts;
     double max_overlap_m;
-    int forces_valid;           /* F(t) in the store matches x(t) */
     /* fluid */
     int immersed;
     char fluid_reason[384];     /* why this fluid tier (fluid_model_reason attribute) */
@@ -306,6 +319,8 @@ void gf_sim_sleep_wake_all(gf_sim *s);
  * gf_sim_tuning.keep_all_work is set. */
 gf_status gf_sim_decide_skips(gf_sim *s);
 void gf_sim_skips_wall_added(gf_sim *s, double friction);
+/* DEM steps per fluid step from the current state (gf_step.c). */
+void gf_sim_choose_substeps(gf_sim *s);
 /* Brenner lubrication from spec.fluid (roughness, cut-off, viscosity). gf_sim.c. */
 gf_status gf_sim_setup_lubrication(gf_sim *s);
 

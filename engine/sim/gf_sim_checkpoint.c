@@ -102,7 +102,7 @@ static gf_status write_all(gf_sim *s, gf_restart *r)
 
 gf_status gf_sim_checkpoint(gf_sim *s, const char *path)
 {
-    if (!s->forces_valid)
+    if (s->stepper.phase != GF_STEP_AT_T)
         GF_TRY(gf_sim_compute_forces(s));
     gf_restart *r = NULL;
     GF_TRY(gf_restart_create(s->ctx, path, &r));
@@ -205,7 +205,7 @@ static gf_status read_all(gf_sim *s, gf_restart *r)
             st = GF_FAIL(s->ctx, GF_ERR_IO, "restart: contact (%lld, %lld) of the checkpoint is not a neighbour pair",
                          (long long)ids[2 * q], (long long)ids[2 * q + 1]);
     free(ids), free(h);
-    s->forces_valid = 1;
+    s->stepper.phase = GF_STEP_AT_T;
     GF_TRY(st);
     return resort_for_threads(s, r);
 }
