@@ -126,7 +126,7 @@ gf_status gf_sim_stress_tensor_slabs_in(gf_sim *sim, const double footprint_m[4]
 
 /* Contacts and contact candidates, for measurements, audits and tests that
  * read the contact network without the engine's internals
- * (engine/gf_sim_contacts.c). One record per grain pair of the neighbour list
+ * (engine/sim/gf_contact_walk.c). One record per grain pair of the neighbour list
  * (within contact range plus the Verlet skin and the lubrication range;
  * overlap_m <= 0 when apart) and per grain and wall (wall >= 0, j unused).
  * history: the tangential spring (GF_CONTACT_HISTORY doubles, the
@@ -142,6 +142,35 @@ typedef struct gf_sim_contact {
 } gf_sim_contact;
 typedef int (*gf_sim_contact_fn)(void *user, const gf_sim_contact *c);
 gf_status gf_sim_foreach_contact(const gf_sim *sim, gf_sim_contact_fn fn, void *user);
+
+/* Entry points for drivers, tests and benchmarks that look inside a run
+ * without the engine's internals (engine/sim/gf_sim_access.c). */
+/* The neighbour list, read-only (contact/gf_nlist.h): its rows, pairs, the
+ * chunks of the threads and their reach runs. Valid until the next step or
+ * rebuild. */
+struct gf_nlist;
+const struct gf_nlist *gf_sim_neighbour_list(const gf_sim *sim);
+/* Rebuilds the neighbour list now, the contact history carried over (the
+ * step rebuilds it by itself when a grain has moved half the skin). */
+gf_status gf_sim_rebuild_neighbours(gf_sim *sim);
+/* Makes the next step rebuild the list whatever the displacements. */
+void gf_sim_rebuild_at_next_step(gf_sim *sim);
+/* Forgets the tangential history of every grain pair (a control for tests
+ * of the history's transfer across rebuilds). */
+void gf_sim_forget_pair_history(gf_sim *sim);
+/* Evaluates the contact, lubrication and wall forces of the current state
+ * into the store now (the dashpot sees v(t)), as at creation. */
+gf_status gf_sim_evaluate_forces(gf_sim *sim);
+/* The contact law's parameters the run derived (contact/gf_contact.h). */
+struct gf_contact_params;
+const struct gf_contact_params *gf_sim_contact_params(const gf_sim *sim);
+/* The fluid coupling of an immersed run (coupling/gf_coupling.h), NULL when dry. */
+struct gf_coupling;
+struct gf_coupling *gf_sim_coupling(gf_sim *sim);
+/* DEM steps per fluid step, as last chosen (0 when dry). */
+int gf_sim_fluid_substeps(const gf_sim *sim);
+/* Position of the gauge called name (gf_sim_add_gauge); 0 when there is none. */
+int gf_sim_gauge_position(const gf_sim *sim, const char *name, double x_m[3]);
 
 /* Mechanical energy of the mobile grains (gf_sim_energy.c): kinetic,
  * rotational, buoyant-weight potential, and the elastic energy stored in the
@@ -174,7 +203,7 @@ gf_status gf_sim_add_wall(gf_sim *sim, const double point_m[3], const double nor
 gf_status gf_sim_set_wall_active(gf_sim *sim, int wall_id, int active);
 /* Opens a rectangular hole in plane wall wall_id (a silo's orifice): the
  * rectangle [lo, hi] on the two axes other than the wall normal's, which must
- * be a box axis. Grains over the hole touch only its rim (gf_sim_internal.h:
+ * be a box axis. Grains over the hole touch only its rim (engine/sim/gf_sim_internal.h:
  * gf_wall_distance). */
 gf_status gf_sim_set_wall_hole(gf_sim *sim, int wall_id, const double lo_m[3], const double hi_m[3]);
 gf_status gf_sim_set_end_time(gf_sim *sim, double t_end_s);
