@@ -45,7 +45,7 @@ typedef struct gf_sim_options {
 #define GF_SIM_NEAR_SKIN_DEFAULT 0.05
 
 /* Work a run leaves out because its spec and scene do not need it (issue #6),
- * decided once at gf_sim_create (engine/gf_sim_skips.c; docs/notes/benchmarks.md):
+ * decided once at gf_sim_create (engine/sim/gf_skips.c; docs/notes/benchmarks.md):
  *   GF_SKIP_TANGENTIAL   mu_c = 0 on grains and walls: no tangential force or
  *                        history, no torque, no rotation (exact);
  *   GF_SKIP_LUBRICATION  the spec names a viscous fluid and asks for
@@ -79,7 +79,7 @@ gf_ctx *gf_sim_ctx(gf_sim *sim);
 gf_rng *gf_sim_rng(gf_sim *sim);
 const gf_timers *gf_sim_timers(const gf_sim *sim);
 /* Neighbour-list counters since creation (benchmarks): list builds, near-list
- * builds (engine/gf_sim_near.c), and the pairs of each list now. */
+ * builds (engine/sim/gf_near_list.c), and the pairs of each list now. */
 typedef struct gf_sim_list_stats {
     long builds, near_builds;
     size_t pairs, near_pairs;
@@ -172,7 +172,7 @@ int gf_sim_fluid_substeps(const gf_sim *sim);
 /* Position of the gauge called name (gf_sim_add_gauge); 0 when there is none. */
 int gf_sim_gauge_position(const gf_sim *sim, const char *name, double x_m[3]);
 
-/* Mechanical energy of the mobile grains (gf_sim_energy.c): kinetic,
+/* Mechanical energy of the mobile grains (gf_energy_audit.c): kinetic,
  * rotational, buoyant-weight potential, and the elastic energy stored in the
  * normal and tangential springs of the linear law. Without a driving force it
  * can only fall; audits compare it along a run. GF_ERR_CONFIG for other laws. */

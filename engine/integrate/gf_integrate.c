@@ -35,7 +35,7 @@ void gf_integrate_kick(gf_particles *p, size_t i0, size_t i1, double h, const do
     const double *restrict fx = p->fx_N, *restrict fy = p->fy_N, *restrict fz = p->fz_N;
     const double *restrict tx = p->tx_N_m, *restrict ty = p->ty_N_m, *restrict tz = p->tz_N_m;
     const double gx = g[0] * h, gy = g[1] * h, gz = g[2] * h;
-    if (!iI) { /* translation only: no torque in this run (gf_sim_skips.c) */
+    if (!iI) { /* translation only: no torque in this run (gf_skips.c) */
         GF_SIMD
         for (size_t i = i0; i < i1; ++i) {
             double a = h * im[i], m = mob[i];

@@ -53,7 +53,7 @@ void gf_integrate_kick(gf_particles *p, size_t i0, size_t i1, double dt_half_s, 
  * store (on two threads, one that moved every chunk's force lines to the
  * core clearing them). Returns the largest squared displacements from the
  * positions of the last neighbour build (ref->build) and of the last
- * near-list build (ref->near, engine/gf_sim_near.c), m^2. */
+ * near-list build (ref->near, engine/sim/gf_near_list.c), m^2. */
 typedef struct gf_drift_refs {
     const double *build[3]; /* positions at the last neighbour-list build */
     const double *near[3];  /* positions at the last near-list build (may be build) */

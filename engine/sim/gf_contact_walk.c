@@ -2,7 +2,7 @@
  * The contact walk of gf_sim.h (gf_sim_foreach_contact): the pairs of the
  * neighbour list and the grain-wall slots, with their geometry and tangential
  * history, read-only. The near list's history is written back first (it is
- * the current one while the list is held, engine/gf_sim_near.c).
+ * the current one while the list is held, engine/sim/gf_near_list.c).
  */
 #include <math.h>
 

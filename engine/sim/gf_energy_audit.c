@@ -93,7 +93,7 @@ gf_status gf_sim_energy_audit(const gf_sim *s, gf_sim_energy *e)
         const double m_buoyant = m * (1.0 - rho_f / rho_p);
         e->gravity_J -= m_buoyant * (g[0] * p->x_m[i] + g[1] * p->y_m[i] + g[2] * p->z_m[i]);
     }
-    gf_sim_near_sync(s); /* the near list's history into the list's (gf_sim_near.c) */
+    gf_sim_near_sync(s); /* the near list's history into the list's (gf_near_list.c) */
     double pair_n, pair_t, wall_n, wall_t;
     pair_elastic(s, &pair_n, &pair_t);
     wall_elastic(s, &wall_n, &wall_t);

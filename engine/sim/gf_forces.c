@@ -47,14 +47,6 @@
 #include "gf_sim_internal.h"
 #include "integrate/gf_integrate.h"
 
-
-static inline void cross(const double a[3], const double b[3], double c[3])
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
 /* Grain-grain pairs of rows [i0, i1) into the accumulators f[0..5] (fx..tz).
  * Specialised on the law: linear (the seeds' law, inlined) or any table row;
  * normal_only: the linear normal law alone (mu_c = 0, GF_SKIP_TANGENTIAL). */
@@ -84,7 +76,7 @@ static inline __attribute__((always_inline)) void pair_rows_impl(gf_sim *s, size
             const size_t j = (size_t)nl->j[k];
             /* two grains that do not move (sleeping or glued, at least one
              * sleeping): neither force is integrated; the pair keeps its
-             * history for when one of them wakes (gf_sim_sleep.c) */
+             * history for when one of them wakes (gf_sleep.c) */
             if (frozen_i && (p->flags[j] & (GF_P_GLUED | GF_P_SLEEPING)) &&
                 ((p->flags[i] | p->flags[j]) & GF_P_SLEEPING))
                 continue;
@@ -119,7 +111,7 @@ static inline __attribute__((always_inline)) void pair_rows_impl(gf_sim *s, size
                 double rw[3] = {ri * p->wx_rad_s[i] + R[j] * p->wx_rad_s[j], ri * p->wy_rad_s[i] + R[j] * p->wy_rad_s[j],
                                 ri * p->wz_rad_s[i] + R[j] * p->wz_rad_s[j]};
                 double rwn[3];
-                cross(rw, g.n, rwn);
+                gf_cross(rw, g.n, rwn);
                 g.v_rel_m_s[0] = vt[0] - rwn[0], g.v_rel_m_s[1] = vt[1] - rwn[1], g.v_rel_m_s[2] = vt[2] - rwn[2];
                 /* glued grains: infinite mass, 1/m = 0 (contact_inv_mass) */
                 g.m_eff_kg = pair_meff[k];
@@ -133,7 +125,7 @@ static inline __attribute__((always_inline)) void pair_rows_impl(gf_sim *s, size
                     kernel(&cp, &g, dt, h, &f_n, f_t);
                 F[0] = f_n * g.n[0] + f_t[0], F[1] = f_n * g.n[1] + f_t[1], F[2] = f_n * g.n[2] + f_t[2];
                 double nxt[3];
-                cross(g.n, f_t, nxt);
+                gf_cross(g.n, f_t, nxt);
                 txi -= ri * nxt[0], tyi -= ri * nxt[1], tzi -= ri * nxt[2];
                 fj[3][j] -= R[j] * nxt[0], fj[4][j] -= R[j] * nxt[1], fj[5][j] -= R[j] * nxt[2];
                 n_contacts++;
@@ -174,128 +166,6 @@ static void pair_rows_linear_normal(gf_sim *s, size_t i0, size_t i1, double *con
 static void pair_rows_table(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_sim_accum *acc)
 {
     pair_rows_impl(s, i0, i1, f, acc, 0, 0);
-}
-
-/* First entry >= i of the ascending candidates [k0, k1). */
-static size_t first_candidate(const int32_t *c, size_t k0, size_t k1, size_t i)
-{
-    while (k0 < k1) {
-        size_t mid = k0 + (k1 - k0) / 2;
-        if ((size_t)c[mid] < i)
-            k0 = mid + 1;
-        else
-            k1 = mid;
-    }
-    return k0;
-}
-
-/* Grain-wall contacts of grains [i0, i1): the wall's candidates of the last
- * build in that range (all grains when the candidates are stale: a wall or a
- * grain added since). Same grains in the same order either way. */
-static void wall_rows(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_sim_accum *acc)
-{
-    const gf_particles *p = s->p;
-    const double lub_cut = s->lubrication ? s->lub_cutoff_m : 0.0;
-    const size_t stride = (size_t)s->n_walls + 1;
-    const int listed = s->wall_cand_walls == s->n_walls && s->wall_cand_grains == p->n_local;
-    for (int w = 0; w < s->n_walls; ++w) {
-        const gf_wall *wl = &s->walls[w];
-        const double *nw_plane = wl->normal, *pw = wl->point_m;
-        size_t k = listed ? first_candidate(s->wall_cand, s->wall_cand_start[w], s->wall_cand_start[w + 1], i0) : i0;
-        const size_t k_end = listed ? s->wall_cand_start[w + 1] : i1;
-        for (; k < k_end; ++k) {
-            const size_t i = listed ? (size_t)s->wall_cand[k] : k;
-            if (i >= i1)
-                break;
-            double *h = &s->wall_hist[3 * (i * stride + (size_t)w)];
-            double ri = p->radius_m[i], c[3] = {p->x_m[i], p->y_m[i], p->z_m[i]}, n_loc[3];
-            double dist = wl->has_hole ? gf_wall_distance(wl, c, n_loc)
-                                       : (c[0] - pw[0]) * nw_plane[0] + (c[1] - pw[1]) * nw_plane[1] +
-                                             (c[2] - pw[2]) * nw_plane[2];
-            const double *nw = wl->has_hole ? n_loc : nw_plane;
-            double overlap = ri - dist;
-            if (!wl->active || (p->flags[i] & GF_P_GLUED) || overlap <= -lub_cut) {
-                if (h[0] != 0.0 || h[1] != 0.0 || h[2] != 0.0)
-                    h[0] = h[1] = h[2] = 0.0;
-                continue;
-            }
-            double v[3] = {p->vx_m_s[i], p->vy_m_s[i], p->vz_m_s[i]};
-            double F[3] = {0.0, 0.0, 0.0};
-            double vn = s->vx_pred[i] * nw[0] + s->vy_pred[i] * nw[1] + s->vz_pred[i] * nw[2];
-            if (overlap > 0.0) {
-                gf_contact_geom g;
-                g.v_n_m_s = vn;
-                g.n[0] = nw[0], g.n[1] = nw[1], g.n[2] = nw[2];
-                g.overlap_m = overlap;
-                double rw[3] = {ri * p->wx_rad_s[i], ri * p->wy_rad_s[i], ri * p->wz_rad_s[i]}, rwn[3];
-                cross(rw, g.n, rwn);
-                g.v_rel_m_s[0] = v[0] - rwn[0], g.v_rel_m_s[1] = v[1] - rwn[1], g.v_rel_m_s[2] = v[2] - rwn[2];
-                g.m_eff_kg = p->mass_kg[i];
-                g.sqrt_mk = sqrt(p->mass_kg[i] * s->cp.k_n_N_m);
-                g.mu = wl->friction;
-                double f_n, f_t[3], nxt[3];
-                s->law->kernel(&s->cp, &g, s->dt_s, h, &f_n, f_t);
-                F[0] = f_n * nw[0] + f_t[0], F[1] = f_n * nw[1] + f_t[1], F[2] = f_n * nw[2] + f_t[2];
-                cross(g.n, f_t, nxt);
-                f[3][i] -= ri * nxt[0], f[4][i] -= ri * nxt[1], f[5][i] -= ri * nxt[2];
-                acc->n_contacts++;
-                if (overlap > acc->max_overlap_m)
-                    acc->max_overlap_m = overlap;
-            } else if (h[0] != 0.0 || h[1] != 0.0 || h[2] != 0.0) {
-                h[0] = h[1] = h[2] = 0.0;
-            }
-            if (lub_cut > 0.0 && (s->lub_in_overlap || overlap <= 0.0)) {
-                double gap = overlap > 0.0 ? 0.0 : -overlap;
-                double c = -gf_lubrication_damping(s->dt_s, 6.0 * M_PI * s->lub_eta_Pa_s * ri * ri / (gap + s->lub_roughness_m),
-                                        p->mass_kg[i]) * vn;
-                F[0] += c * nw[0], F[1] += c * nw[1], F[2] += c * nw[2];
-            }
-            f[0][i] += F[0], f[1][i] += F[1], f[2][i] += F[2];
-            acc->wall_force_N[w][0] -= F[0], acc->wall_force_N[w][1] -= F[1], acc->wall_force_N[w][2] -= F[2];
-        }
-    }
-}
-
-/* The step's end and the next one's drift (gf_sim_finish_range) for the
- * grains of [i0, i1) outside the reach runs (in_runs 0; all of them with one
- * chunk, which has none) or inside them (1). The runs start on cache lines,
- * and so do the chunks and the pair loop's row batches. */
-static gf_drift_d2 finish_runs(gf_sim *s, size_t i0, size_t i1, int in_runs)
-{
-    const gf_nlist *nl = s->nl;
-    const size_t *run = nl->reach_run, n_runs = nl->n_reach_runs;
-    size_t r = 0, hi = n_runs; /* the first run that ends after i0 (row batches call this often) */
-    while (r < hi) {
-        size_t mid = r + (hi - r) / 2;
-        if (run[2 * mid + 1] <= i0)
-            r = mid + 1;
-        else
-            hi = mid;
-    }
-    gf_drift_d2 d2[2] = {{0.0, 0.0}, {0.0, 0.0}};
-    for (size_t at = i0; at < i1; ++r) {
-        size_t b = r < n_runs && run[2 * r] < i1 ? run[2 * r] : i1;
-        size_t e = r < n_runs && run[2 * r + 1] < i1 ? run[2 * r + 1] : i1;
-        b = b > at ? b : at;
-        const size_t from = in_runs ? b : at, to = in_runs ? e : b;
-        if (from < to) {
-            d2[1] = gf_sim_finish_range(s, from, to);
-            d2[0] = gf_drift_d2_max(d2, 2);
-        }
-        at = e > at ? e : at;
-        if (r >= n_runs)
-            break;
-    }
-    return d2[0];
-}
-
-gf_drift_d2 gf_sim_finish_rows(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_sim_accum *acc)
-{
-    wall_rows(s, i0, i1, f, acc);
-    const double t0 = gf_wtime(); /* two clock reads per batch of >= 64 rows: no measurable cost (docs/notes/benchmarks.md) */
-    const gf_drift_d2 d2 = finish_runs(s, i0, i1, 0);
-    acc->finish_s += gf_wtime() - t0;
-    return d2;
 }
 
 static gf_status reserve_accumulators(gf_sim *s, size_t n)
@@ -396,7 +266,7 @@ static void run_chunk(gf_sim *s, int c, double *const store[6], size_t n, unsign
     else
         pair_rows_table(s, i0, i1, store, a);
     if (!a->finished)
-        wall_rows(s, i0, i1, store, a);
+        gf_sim_wall_rows(s, i0, i1, store, a);
     atomic_store_explicit(&a->pairs_done, count, memory_order_release);
 }
 
@@ -419,10 +289,10 @@ static gf_drift_d2 complete_chunks(gf_sim *s, int t, int m, int drift, double *c
     if (drift && m == nc && m > 1) {
         gf_drift_d2 d2[2];
         const size_t lo = s->nl->chunk_row[t], hi = s->nl->chunk_row[t + 1];
-        d2[0] = s->acc[t].finished ? s->acc[t].finished_d2 : finish_runs(s, lo, hi, 0);
+        d2[0] = s->acc[t].finished ? s->acc[t].finished_d2 : gf_sim_finish_runs(s, lo, hi, 0);
         wait_for_earlier_chunks(s, t, count);
         add_from_earlier_chunks(s, t, store);
-        d2[1] = finish_runs(s, lo, hi, 1);
+        d2[1] = gf_sim_finish_runs(s, lo, hi, 1);
         return gf_drift_d2_max(d2, 2);
     }
     if (nc > 1) {

@@ -195,7 +195,7 @@ static gf_status rebuild(gf_sim *s, int scheduled)
     GF_TRY(gf_sim_reserve(s, p->n_local));
     gf_nlist_geom g = list_geom(s);
     gf_nlist_wrap(&g, p->n_local, p->x_m, p->y_m, p->z_m);
-    if (scheduled) { /* spatial order (gf_sim_sort.c): on a schedule of the rebuild count alone */
+    if (scheduled) { /* spatial order (gf_sort.c): on a schedule of the rebuild count alone */
         if (gf_sim_sorts(s) && s->n_rebuilds % s->sort_every == 0)
             GF_TRY(gf_sim_sort_grains(s));
         s->n_rebuilds++;

@@ -59,3 +59,11 @@ int gf_sim_gauge_position(const gf_sim *s, const char *name, double x_m[3])
         }
     return 0;
 }
+
+gf_status gf_sim_sort(gf_sim *s)
+{
+    GF_TRY(gf_sim_reserve(s, s->p->n_local));
+    GF_TRY(gf_sim_sort_grains(s));
+    GF_TRY(gf_sim_rebuild(s));
+    return gf_sim_compute_forces(s);
+}

@@ -9,7 +9,7 @@
  *     the list from them, which reproduces the original list, pair order
  *     included (so forces are summed in the same order), and the rebuild
  *     criterion sees the same displacements;
- *   - the store in its current order (the spatial sort permutes it, gf_sim_sort.c),
+ *   - the store in its current order (the spatial sort permutes it, gf_sort.c),
  *     the rebuild count that schedules the next sort and the layout of that
  *     order (one thread or several: a run on the other layout re-sorts);
  *   - tangential history of grain pairs keyed by global ids, and of
@@ -39,7 +39,7 @@ gf_status gf_sim_restore_coupling(gf_sim *s, const char *path);
 static gf_status write_all(gf_sim *s, gf_restart *r)
 {
     gf_particles *p = s->p;
-    gf_sim_near_sync(s); /* the near list's history into the list's (gf_sim_near.c) */
+    gf_sim_near_sync(s); /* the near list's history into the list's (gf_near_list.c) */
     size_t n = p->n_local;
     int64_t counts[3] = {(int64_t)n, s->step, p->next_id};
     double clock[5] = {s->t_s, s->dt_s, s->t_end_s, s->max_overlap_m, (double)s->n_contacts};

@@ -96,7 +96,7 @@ typedef struct gf_sim_accum {
     double wall_force_N[GF_SIM_MAX_WALLS][3];
     size_t n_contacts;
     double max_overlap_m;
-    size_t near_len;  /* the chunk's near-list entries (gf_sim_near.c) */
+    size_t near_len;  /* the chunk's near-list entries (gf_near_list.c) */
     int finished;     /* the pair loop finished the chunk's grains outside the reach runs (gf_sim_finish_rows) */
     gf_drift_d2 finished_d2;
     double finish_s;  /* wall time of those finishes (the integrate timer's share of the force pass) */
@@ -105,7 +105,7 @@ typedef struct gf_sim_accum {
     _Atomic unsigned long pairs_done;
 } gf_sim_accum;
 
-/* Near list (gf_sim_near.c): the neighbour list's pairs within skin_m of
+/* Near list (gf_near_list.c): the neighbour list's pairs within skin_m of
  * the contact (or lubrication) range, with their per-pair data, which the
  * blocked pair loop scans instead of the whole list. Chunk c's pairs are
  * stored from nl->row_start[chunk_row[c]] (acc[c].near_len of them). While
@@ -184,7 +184,7 @@ struct gf_sim {
     double *vx_pred, *vy_pred, *vz_pred; /* predicted v(t+dt) for the dashpot (gf_integrate.h) */
     double *inv_mass, *inv_inertia, *mobile; /* integrator factors, refreshed at every neighbour build */
     double *contact_inv_mass;       /* 1/m in contacts, 0 for glued grains (infinite mass) */
-    double *x_near, *y_near, *z_near; /* positions at the last near-list build (gf_sim_near.c) */
+    double *x_near, *y_near, *z_near; /* positions at the last near-list build (gf_near_list.c) */
     void *ref_block;                /* owns the thirteen arrays above, staggered (core/gf_soa.h) */
     double *pair_meff, *pair_sqrt_mk; /* per neighbour pair: m*, sqrt(m* k_n) */
     size_t pair_cap;
@@ -208,27 +208,49 @@ struct gf_sim {
     int lub_in_overlap;         /* 1: gap clamped at 0 in overlap (default); 0: off while overlapping */
     int in_build;
     int rotation_locked;        /* gf_sim_set_rotation_locked: inverse inertias held at 0 */
-    /* sleeping grains (gf_sim_sleep.c; only with contact.sleep_speed_nd > 0) */
+    /* sleeping grains (gf_sleep.c; only with contact.sleep_speed_nd > 0) */
     long *sleep_quiet_steps;    /* steps each grain has stayed below the sleep speed */
     size_t sleep_cap;
     long n_sleep_events, n_wake_events;
-    /* spatial order of the store (gf_sim_sort.c) */
+    /* spatial order of the store (gf_sort.c) */
     int sort_every;             /* rebuilds between sorts; 0: never */
     long n_rebuilds;            /* gf_sim_rebuild calls (checkpointed: the sort schedule) */
     long n_sorts;               /* sorts that moved a grain */
     int store_layout;           /* order the store was last sorted into (gf_sim_sort_layout); -1: never sorted */
-    /* work this run does not need (gf_sim_skips.c): GF_SKIP_* bits, decided once at creation */
+    /* work this run does not need (gf_skips.c): GF_SKIP_* bits, decided once at creation */
     unsigned skips;
-    gf_near_list near;          /* gf_sim_near.c */
+    gf_near_list near;          /* gf_near_list.c */
     double scene_counters[GF_SIM_SCENE_COUNTERS]; /* gf_sim_scene_counters; checkpointed */
 };
 
+/* c = a x b */
+static inline void gf_cross(const double a[3], const double b[3], double c[3])
+{
+    c[0] = a[1] * b[2] - a[2] * b[1];
+    c[1] = a[2] * b[0] - a[0] * b[2];
+    c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* The integrator's passes over grain ranges (gf_kicks.c). The grains thread
+ * t of m integrates: its chunk's rows when the list has one chunk per
+ * thread, else an even split. */
+void gf_sim_thread_grains(const gf_sim *s, size_t n, int t, int m, size_t *i0, size_t *i1);
+/* The kicks' per-grain factors (no inverse inertia without torques). */
+gf_integrate_factors gf_sim_integrate_factors(const gf_sim *s);
+/* n_kicks half-kicks then the drift of grains [i0, i1) (gf_integrate_kick_drift). */
+gf_drift_d2 gf_sim_kick_drift_range(gf_sim *s, size_t i0, size_t i1, int n_kicks);
+/* gf_sim_finish_range on the grains of [i0, i1) outside the list's reach
+ * runs (in_runs 0) or inside them (1). */
+gf_drift_d2 gf_sim_finish_runs(gf_sim *s, size_t i0, size_t i1, int in_runs);
+/* Grain-wall contacts of grains [i0, i1) into f (gf_wall_forces.c). */
+void gf_sim_wall_rows(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_sim_accum *acc);
+
 /* Evaluates contact (+ lubrication) forces and wall forces at the current
- * state into the particle store (cleared first). gf_sim_forces.c. */
+ * state into the particle store (cleared first). gf_forces.c. */
 gf_status gf_sim_compute_forces(gf_sim *s);
 
 /* The end of a step and the start of the next for grains [i0, i1), once
- * their contact forces are complete (gf_sim.c: dem_step): the held fluid
+ * their contact forces are complete (gf_kicks.c; gf_step.c: fused_step): the held fluid
  * forces, the closing half-kick, the next opening half-kick and drift.
  * Returns their largest squared displacement since the last build. */
 gf_drift_d2 gf_sim_finish_range(gf_sim *s, size_t i0, size_t i1);
@@ -248,7 +270,7 @@ static inline gf_drift_d2 gf_drift_d2_max(const gf_drift_d2 *d, int n)
     }
     return m;
 }
-/* Near list (gf_sim_near.c). At each step, after the neighbour build
+/* Near list (gf_near_list.c). At each step, after the neighbour build
  * decision: whether this step's force evaluation scans the near list, and
  * whether it must be rebuilt first (near_d2: the largest squared
  * displacement since its last build). */
@@ -269,17 +291,17 @@ gf_status gf_sim_near_reserve(gf_sim *s);
 void gf_sim_near_free(gf_sim *s);
 /* Grain-grain contacts (and lubrication, when on) of rows [i0, i1) of the
  * list into f[0..5] (fx..tz), for the linear law: the blocked, vectorised
- * loop of gf_sim_pairs.c, bitwise the generic loop's results. finish: the
+ * loop of gf_pairs_blocked.c, bitwise the generic loop's results. finish: the
  * rows are the whole store (one chunk) and the step ends with them: each
  * batch of completed rows gets its walls and gf_sim_finish_range at once
  * (gf_sim_finish_rows); returns their largest squared displacements. */
 gf_drift_d2 gf_sim_pair_rows_blocked_linear(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_sim_accum *acc,
                                             int finish);
 /* Wall contacts of grains [i0, i1), whose pair forces are complete, then
- * gf_sim_finish_range on them. gf_sim_forces.c. */
+ * gf_sim_finish_range on them. gf_kicks.c. */
 gf_drift_d2 gf_sim_finish_rows(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_sim_accum *acc);
 /* Rebuilds the neighbour list from the current positions (wrapping periodic
- * axes first). gf_sim_forces.c. */
+ * axes first). gf_neighbours.c. */
 gf_status gf_sim_rebuild(gf_sim *s);
 /* The same without the sort schedule (no sort, the rebuild count unchanged). */
 gf_status gf_sim_rebuild_unscheduled(gf_sim *s);
@@ -289,7 +311,7 @@ gf_status gf_sim_reserve(gf_sim *s, size_t n);
 gf_status gf_sim_relayout_walls(gf_sim *s, int n_walls_old);
 /* Reorders the store by the Morton index of each grain's cell, with every
  * per-grain array of the sim; called by gf_sim_rebuild every sort_every
- * rebuilds. gf_sim_sort.c. */
+ * rebuilds. gf_sort.c. */
 gf_status gf_sim_sort_grains(gf_sim *s);
 /* The order gf_sim_sort_grains puts this sim's store in: 0 Morton order
  * (one thread, or a store too small to run its chunks in parallel), 1 layers
@@ -306,14 +328,14 @@ gf_status gf_sim_rebuild_from_ref(gf_sim *s);
 
 /* Puts quiet grains in contact to sleep and wakes sleeping grains touched by
  * moving ones; called every GF_SLEEP_EVERY steps after the step's last kick
- * when contact.sleep_speed_nd > 0. gf_sim_sleep.c. */
+ * when contact.sleep_speed_nd > 0. gf_sleep.c. */
 #define GF_SLEEP_EVERY 10
 gf_status gf_sim_sleep_update(gf_sim *s);
 /* Wakes every sleeping grain and restarts the quiet counters (a wall was
  * removed: grains asleep against it cannot see that their support left). */
 void gf_sim_sleep_wake_all(gf_sim *s);
 
-/* Skips (gf_sim_skips.c). Decided from the spec and the scene before build()
+/* Skips (gf_skips.c). Decided from the spec and the scene before build()
  * (gf_sim_decide_skips) and dropped when a scene adds what defeats one (a
  * frictional wall: gf_sim_skips_wall_added); nothing is decided when
  * gf_sim_tuning.keep_all_work is set. */
@@ -321,7 +343,11 @@ gf_status gf_sim_decide_skips(gf_sim *s);
 void gf_sim_skips_wall_added(gf_sim *s, double friction);
 /* DEM steps per fluid step from the current state (gf_step.c). */
 void gf_sim_choose_substeps(gf_sim *s);
-/* Brenner lubrication from spec.fluid (roughness, cut-off, viscosity). gf_sim.c. */
+/* The fluid tier of the run from the scene and spec.fluid (auto: from the
+ * regime), lubrication included; the coupling, once the scene is built. */
+gf_status gf_sim_setup_fluid(gf_sim *s);
+gf_status gf_sim_create_coupling(gf_sim *s);
+/* Brenner lubrication from spec.fluid (roughness, cut-off, viscosity). gf_fluid_setup.c. */
 gf_status gf_sim_setup_lubrication(gf_sim *s);
 
 #endif

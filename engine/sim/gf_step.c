@@ -51,26 +51,6 @@ void gf_sim_choose_substeps(gf_sim *s)
     s->n_substeps = m < 1.0 ? 1 : (m > 1e6 ? 1000000 : (int)m);
 }
 
-/* The grains thread t of m integrates: its chunk's rows when the list has one
- * chunk per thread, so that a thread writes the grains whose forces it summed
- * and whose rows it ran (their cache lines stay on its core); else an even
- * split (the results do not depend on the split: each grain alone). */
-static void thread_grains(const gf_sim *s, size_t n, int t, int m, size_t *i0, size_t *i1)
-{
-    if (s->nl->n_chunks == m && s->nl->n == n) {
-        *i0 = s->nl->chunk_row[t], *i1 = s->nl->chunk_row[t + 1];
-        return;
-    }
-    *i0 = (size_t)((long)n * (long)t / m), *i1 = (size_t)((long)n * (long)(t + 1) / m);
-}
-
-/* The per-grain factors of the kicks; no inverse inertia: translation only
- * (no torque ever, GF_SKIP_TANGENTIAL). */
-static gf_integrate_factors integrate_factors(const gf_sim *s)
-{
-    return (gf_integrate_factors){s->inv_mass, (s->skips & GF_SKIP_TANGENTIAL) ? NULL : s->inv_inertia, s->mobile};
-}
-
 static void kick(gf_sim *s, double h)
 {
     gf_particles *p = s->p;
@@ -85,8 +65,8 @@ static void kick(gf_sim *s, double h)
         int t = 0, m = 1;
 #endif
         size_t i0, i1;
-        thread_grains(s, (size_t)n, t, m, &i0, &i1);
-        gf_integrate_factors k = integrate_factors(s);
+        gf_sim_thread_grains(s, (size_t)n, t, m, &i0, &i1);
+        gf_integrate_factors k = gf_sim_integrate_factors(s);
         gf_integrate_kick(p, i0, i1, h, s->gravity_m_s2, &k);
     }
 }
@@ -100,56 +80,6 @@ static void flush_kick(gf_sim *s)
         return;
     kick(s, 0.5 * s->dt_s);
     s->stepper.phase = GF_STEP_AT_T;
-}
-
-/* The arrays the kicks and drift read besides the store: the displacement
- * references and the per-grain factors. Without a near list its
- * displacement is the build's: the same arrays, no second stream. */
-static void drift_inputs(const gf_sim *s, gf_drift_refs *ref, gf_integrate_factors *k)
-{
-    const int near = s->near.skin_m > 0.0;
-    *ref = (gf_drift_refs){{s->x_ref, s->y_ref, s->z_ref},
-                           {near ? s->x_near : s->x_ref, near ? s->y_near : s->y_ref, near ? s->z_near : s->z_ref}};
-    *k = integrate_factors(s);
-}
-
-static gf_drift_d2 kick_drift_range(gf_sim *s, size_t i0, size_t i1, int n_kicks)
-{
-    gf_drift_refs ref;
-    gf_integrate_factors k;
-    drift_inputs(s, &ref, &k);
-    double *vp[3] = {s->vx_pred, s->vy_pred, s->vz_pred};
-    return gf_integrate_kick_drift(s->p, i0, i1, n_kicks, s->dt_s, s->gravity_m_s2, &ref, vp, &k);
-}
-
-gf_drift_d2 gf_sim_finish_range(gf_sim *s, size_t i0, size_t i1)
-{
-    if (s->coupling)
-        gf_coupling_add_forces_range(s->coupling, s->p, i0, i1);
-    return kick_drift_range(s, i0, i1, 2);
-}
-
-void gf_sim_prefetch_finish(const gf_sim *s, size_t i0, size_t i1)
-{
-    /* drift_inputs: the arrays only the finish reads (the pair loop has
-     * brought the store's into the caches already) */
-    gf_drift_refs ref;
-    gf_integrate_factors k;
-    drift_inputs(s, &ref, &k);
-    const int near = ref.near[0] != ref.build[0];
-    const double *const cold[9] = {ref.build[0], ref.build[1], ref.build[2],
-                                   near ? ref.near[0] : NULL, near ? ref.near[1] : NULL, near ? ref.near[2] : NULL,
-                                   k.inv_mass, k.mobile, k.inv_inertia};
-    for (int q = 0; q < 9; ++q)
-        for (size_t i = i0; cold[q] && i < i1; i += 8) /* a line holds 8 doubles */
-            __builtin_prefetch(cold[q] + i, 0, 2);
-}
-
-gf_drift_d2 gf_sim_finish_share(gf_sim *s, int t, int m)
-{
-    size_t i0, i1;
-    thread_grains(s, s->p->n_local, t, m, &i0, &i1);
-    return gf_sim_finish_range(s, i0, i1);
 }
 
 /* The previous step's deferred closing half-kick, this step's opening
@@ -179,8 +109,8 @@ static gf_drift_d2 kick_drift(gf_sim *s, double h)
         if (t == 0)
             used = m;
         size_t i0, i1;
-        thread_grains(s, (size_t)n, t, m, &i0, &i1);
-        d2[t] = kick_drift_range(s, i0, i1, pending ? 2 : 1);
+        gf_sim_thread_grains(s, (size_t)n, t, m, &i0, &i1);
+        d2[t] = gf_sim_kick_drift_range(s, i0, i1, pending ? 2 : 1);
     }
     s->stepper.phase = GF_STEP_MOVED;
     s->stepper.n_moved = (size_t)n; /* gf_integrate_kick_drift zeroes what it read */
@@ -257,10 +187,10 @@ static double drift(gf_sim *s)
         if (t == 0)
             used = m;
         size_t i0, i1;
-        thread_grains(s, (size_t)n, t, m, &i0, &i1);
+        gf_sim_thread_grains(s, (size_t)n, t, m, &i0, &i1);
         const double *const ref[3] = {s->x_ref, s->y_ref, s->z_ref};
         double *const vp[3] = {s->vx_pred, s->vy_pred, s->vz_pred};
-        gf_integrate_factors k = integrate_factors(s);
+        gf_integrate_factors k = gf_sim_integrate_factors(s);
         d2[t] = gf_integrate_drift(p, i0, i1, s->dt_s, s->gravity_m_s2, ref, vp, &k);
     }
     s->stepper.phase = GF_STEP_MOVED;

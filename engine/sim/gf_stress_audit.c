@@ -52,7 +52,7 @@ static gf_status stress_slabs(gf_sim *s, const double *fp, double y0, double dy,
     const gf_nlist *nl = s->nl;
     if (!nl || nl->n != p->n_local)
         return GF_FAIL(ctx, GF_ERR_UNSUPPORTED, "measure: stress tensor needs a current neighbour list");
-    gf_sim_near_sync(s); /* the near list's history into the list's (gf_sim_near.c) */
+    gf_sim_near_sync(s); /* the near list's history into the list's (gf_near_list.c) */
     double area = fp ? (fp[1] - fp[0]) * (fp[3] - fp[2]) : (s->hi_m[0] - s->lo_m[0]) * (s->hi_m[2] - s->lo_m[2]);
     double vol = area * dy;
     memset(S, 0, (size_t)n * 6 * sizeof *S);

@@ -1,5 +1,5 @@
 /*
- * The force evaluation split into chunks (engine/gf_sim_forces.c): each
+ * The force evaluation split into chunks (engine/sim/gf_forces.c): each
  * chunk adds into the store the forces on its rows and on partners inside
  * it, and into a buffer of its own those on partners in later chunks; after
  * a barrier the owner of each grain adds the earlier chunks' buffers over the

@@ -1,6 +1,6 @@
 /*
  * The spatial sort of the store, with two threads, makes the cut between the
- * two threads' chunks a plane (engine/gf_sim_sort.c): layers of cells across
+ * two threads' chunks a plane (engine/sim/gf_sort.c): layers of cells across
  * the axis of smallest cross-section, Morton order within a layer.
  *
  * What matters for speed on two cores is how many grains of the second chunk
