@@ -138,6 +138,7 @@ typedef struct gf_sim_contact {
     double branch_m[3];      /* x_i - x_j (periodic image), or from the wall's contact point to x_i */
     double normal[3];        /* unit normal from j (or the wall) towards i */
     double overlap_m;        /* R_i + R_j - |branch| (R_i - distance for a wall); > 0 in contact */
+    double m_eff_kg;         /* m* = 1/(1/m_i + 1/m_j), 1/m = 0 for glued grains (m_i for a wall) */
     const double *history;   /* tangential history of the contact */
 } gf_sim_contact;
 typedef int (*gf_sim_contact_fn)(void *user, const gf_sim_contact *c);
@@ -169,13 +170,19 @@ struct gf_coupling;
 struct gf_coupling *gf_sim_coupling(gf_sim *sim);
 /* DEM steps per fluid step, as last chosen (0 when dry). */
 int gf_sim_fluid_substeps(const gf_sim *sim);
+/* Gravity of the run, m s-2 (the scene may tilt it). */
+void gf_sim_gravity(const gf_sim *sim, double g_m_s2[3]);
+/* 1 when the run is immersed (a fluid tier was chosen, even before the
+ * coupling starts after the scene's preparation). */
+int gf_sim_immersed(const gf_sim *sim);
 /* Position of the gauge called name (gf_sim_add_gauge); 0 when there is none. */
 int gf_sim_gauge_position(const gf_sim *sim, const char *name, double x_m[3]);
 
-/* Mechanical energy of the mobile grains (gf_energy_audit.c): kinetic,
- * rotational, buoyant-weight potential, and the elastic energy stored in the
- * normal and tangential springs of the linear law. Without a driving force it
- * can only fall; audits compare it along a run. GF_ERR_CONFIG for other laws. */
+/* Mechanical energy of the mobile grains (engine/audit/gf_energy_audit.c):
+ * kinetic, rotational, buoyant-weight potential, and the elastic energy
+ * stored in the normal and tangential springs, from the contact law's own
+ * energy hooks (gf_contact_info.normal_energy, tangential_energy). Without a
+ * driving force it can only fall; audits compare it along a run. */
 typedef struct gf_sim_energy {
     double kinetic_J, rotational_J, gravity_J, elastic_normal_J, elastic_tangential_J, total_J;
 } gf_sim_energy;

@@ -16,7 +16,7 @@ static int visit_pairs(const gf_sim *s, gf_sim_contact_fn fn, void *user)
         for (size_t k = nl->row_start[i]; k < nl->row_start[i + 1]; ++k) {
             const size_t j = (size_t)nl->j[k];
             const double *sh = nl->shift_m[nl->image[k]];
-            gf_sim_contact c = {.i = i, .j = j, .wall = -1, .history = &nl->hist[3 * k]};
+            gf_sim_contact c = {.i = i, .j = j, .wall = -1, .history = &nl->hist[3 * k], .m_eff_kg = s->pair_meff[k]};
             c.branch_m[0] = p->x_m[i] - p->x_m[j] + sh[0];
             c.branch_m[1] = p->y_m[i] - p->y_m[j] + sh[1];
             c.branch_m[2] = p->z_m[i] - p->z_m[j] + sh[2];
@@ -40,7 +40,8 @@ static int visit_walls(const gf_sim *s, gf_sim_contact_fn fn, void *user)
     for (size_t i = 0; i < p->n_local; ++i)
         for (int w = 0; w < s->n_walls; ++w) {
             const double x[3] = {p->x_m[i], p->y_m[i], p->z_m[i]};
-            gf_sim_contact c = {.i = i, .wall = w, .history = &s->wall_hist[3 * (i * stride + (size_t)w)]};
+            gf_sim_contact c = {.i = i, .wall = w, .history = &s->wall_hist[3 * (i * stride + (size_t)w)],
+                                .m_eff_kg = p->mass_kg[i]};
             const double dist = gf_wall_distance(&s->walls[w], x, c.normal);
             for (int a = 0; a < 3; ++a)
                 c.branch_m[a] = dist * c.normal[a];

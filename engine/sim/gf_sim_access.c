@@ -50,6 +50,16 @@ int gf_sim_fluid_substeps(const gf_sim *s)
     return s->coupling ? s->n_substeps : 0;
 }
 
+void gf_sim_gravity(const gf_sim *s, double g_m_s2[3])
+{
+    memcpy(g_m_s2, s->gravity_m_s2, sizeof s->gravity_m_s2);
+}
+
+int gf_sim_immersed(const gf_sim *s)
+{
+    return s->immersed;
+}
+
 int gf_sim_gauge_position(const gf_sim *s, const char *name, double x_m[3])
 {
     for (int k = 0; k < s->n_gauges; ++k)
