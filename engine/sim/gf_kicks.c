@@ -6,6 +6,10 @@
  * grains (held fluid forces, closing half-kick, the next opening half-kick
  * and drift) once their forces are complete.
  */
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 #include "coupling/gf_coupling.h"
 #include "core/gf_timer.h"
 #include "gf_sim_internal.h"
@@ -121,4 +125,27 @@ gf_drift_d2 gf_sim_finish_rows(gf_sim *s, size_t i0, size_t i1, double *const f[
     const gf_drift_d2 d2 = gf_sim_finish_runs(s, i0, i1, 0);
     acc->finish_s += gf_wtime() - t0;
     return d2;
+}
+
+gf_drift_d2 gf_sim_grain_passes(gf_sim *s, gf_sim_grain_pass *pass, void *user)
+{
+    const long n = (long)s->p->n_local;
+    gf_drift_d2 d2[GF_SIM_MAX_THREADS] = {{0.0, 0.0}};
+    int used = 1;
+#ifdef _OPENMP
+#pragma omp parallel num_threads(s->n_threads) if (s->n_threads > 1 && n >= GF_SIM_PARALLEL_MIN_GRAINS)
+#endif
+    {
+#ifdef _OPENMP
+        int t = omp_get_thread_num(), m = omp_get_num_threads();
+#else
+        int t = 0, m = 1;
+#endif
+        if (t == 0)
+            used = m;
+        size_t i0, i1;
+        gf_sim_thread_grains(s, (size_t)n, t, m, &i0, &i1);
+        d2[t] = pass(s, i0, i1, user);
+    }
+    return gf_drift_d2_max(d2, used);
 }

@@ -239,6 +239,11 @@ void gf_sim_thread_grains(const gf_sim *s, size_t n, int t, int m, size_t *i0, s
 gf_integrate_factors gf_sim_integrate_factors(const gf_sim *s);
 /* n_kicks half-kicks then the drift of grains [i0, i1) (gf_integrate_kick_drift). */
 gf_drift_d2 gf_sim_kick_drift_range(gf_sim *s, size_t i0, size_t i1, int n_kicks);
+/* Runs pass on each thread's grains (gf_sim_thread_grains) in one parallel
+ * region, serially below GF_SIM_PARALLEL_MIN_GRAINS; returns the largest
+ * of the displacements the passes return. */
+typedef gf_drift_d2 gf_sim_grain_pass(gf_sim *s, size_t i0, size_t i1, void *user);
+gf_drift_d2 gf_sim_grain_passes(gf_sim *s, gf_sim_grain_pass *pass, void *user);
 /* gf_sim_finish_range on the grains of [i0, i1) outside the list's reach
  * runs (in_runs 0) or inside them (1). */
 gf_drift_d2 gf_sim_finish_runs(gf_sim *s, size_t i0, size_t i1, int in_runs);

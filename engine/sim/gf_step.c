@@ -33,9 +33,6 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #include "coupling/gf_coupling.h"
 #include "gf_sim_internal.h"
@@ -51,24 +48,16 @@ void gf_sim_choose_substeps(gf_sim *s)
     s->n_substeps = m < 1.0 ? 1 : (m > 1e6 ? 1000000 : (int)m);
 }
 
+static gf_drift_d2 kick_range(gf_sim *s, size_t i0, size_t i1, void *h)
+{
+    gf_integrate_factors k = gf_sim_integrate_factors(s);
+    gf_integrate_kick(s->p, i0, i1, *(const double *)h, s->gravity_m_s2, &k);
+    return (gf_drift_d2){0.0, 0.0};
+}
+
 static void kick(gf_sim *s, double h)
 {
-    gf_particles *p = s->p;
-    long n = (long)p->n_local;
-#ifdef _OPENMP
-#pragma omp parallel num_threads(s->n_threads) if (s->n_threads > 1 && n >= GF_SIM_PARALLEL_MIN_GRAINS)
-#endif
-    {
-#ifdef _OPENMP
-        int t = omp_get_thread_num(), m = omp_get_num_threads();
-#else
-        int t = 0, m = 1;
-#endif
-        size_t i0, i1;
-        gf_sim_thread_grains(s, (size_t)n, t, m, &i0, &i1);
-        gf_integrate_factors k = gf_sim_integrate_factors(s);
-        gf_integrate_kick(p, i0, i1, h, s->gravity_m_s2, &k);
-    }
+    gf_sim_grain_passes(s, kick_range, &h);
 }
 
 /* Applies the previous step's closing half-kick if it was deferred: before
@@ -90,31 +79,18 @@ static void flush_kick(gf_sim *s)
  * costs one). The two half-kicks stay two additions: bitwise the results of
  * the undeferred sequence. Returns the largest squared displacements since
  * the last neighbour build and the last near-list build. */
-static gf_drift_d2 kick_drift(gf_sim *s, double h)
+static gf_drift_d2 kick_drift_range(gf_sim *s, size_t i0, size_t i1, void *n_kicks)
 {
-    gf_particles *p = s->p;
-    long n = (long)p->n_local;
-    gf_drift_d2 d2[GF_SIM_MAX_THREADS] = {{0.0, 0.0}};
-    int used = 1;
-    const int pending = s->stepper.phase == GF_STEP_KICK_OWED;
-#ifdef _OPENMP
-#pragma omp parallel num_threads(s->n_threads) if (s->n_threads > 1 && n >= GF_SIM_PARALLEL_MIN_GRAINS)
-#endif
-    {
-#ifdef _OPENMP
-        int t = omp_get_thread_num(), m = omp_get_num_threads();
-#else
-        int t = 0, m = 1;
-#endif
-        if (t == 0)
-            used = m;
-        size_t i0, i1;
-        gf_sim_thread_grains(s, (size_t)n, t, m, &i0, &i1);
-        d2[t] = gf_sim_kick_drift_range(s, i0, i1, pending ? 2 : 1);
-    }
+    return gf_sim_kick_drift_range(s, i0, i1, *(const int *)n_kicks);
+}
+
+static gf_drift_d2 kick_drift(gf_sim *s)
+{
+    const int n_kicks = s->stepper.phase == GF_STEP_KICK_OWED ? 2 : 1;
+    const gf_drift_d2 d2 = gf_sim_grain_passes(s, kick_drift_range, (void *)&n_kicks);
     s->stepper.phase = GF_STEP_MOVED;
-    s->stepper.n_moved = (size_t)n; /* gf_integrate_kick_drift zeroes what it read */
-    return gf_drift_d2_max(d2, used);
+    s->stepper.n_moved = s->p->n_local; /* gf_integrate_kick_drift zeroes what it read */
+    return d2;
 }
 
 /* Run-time guards, so that a run stops with the limit named instead of
@@ -151,6 +127,17 @@ static gf_status check_run_limits(gf_sim *s, double d2_since_build)
     return GF_OK;
 }
 
+/* A coupling call's failure, said with what failed, when, and the
+ * coupling's own message. */
+static gf_status coupling_failed(gf_sim *s, gf_status st, const char *doing)
+{
+    if (st == GF_OK)
+        return GF_OK;
+    char what[sizeof s->ctx->last_msg];
+    snprintf(what, sizeof what, "%s", s->ctx->last_code == st ? s->ctx->last_msg : gf_status_str(st));
+    return GF_FAIL(s->ctx, st, "coupling: %s failed at t = %g s: %s", doing, s->t_s, what);
+}
+
 /* The fluid's held forces (drag, buoyancy, ...) added to the contact forces
  * of the store in one serial pass. */
 static gf_status add_fluid_forces(gf_sim *s)
@@ -158,47 +145,26 @@ static gf_status add_fluid_forces(gf_sim *s)
     gf_timer_start(&s->timers, GF_T_COUPLING);
     gf_status st = gf_coupling_add_forces(s->coupling, s->p);
     gf_timer_stop(&s->timers, GF_T_COUPLING);
-    if (st != GF_OK) {
-        char what[sizeof s->ctx->last_msg];
-        snprintf(what, sizeof what, "%s", s->ctx->last_code == st ? s->ctx->last_msg : gf_status_str(st));
-        return GF_FAIL(s->ctx, st, "coupling: adding fluid forces failed at t = %g s: %s", s->t_s, what);
-    }
-    return GF_OK;
+    return coupling_failed(s, st, "adding fluid forces");
 }
 
 /* x(t + dt) = x(t) + v(t + dt/2) dt and the predicted velocities, every
  * grain; returns the largest squared displacement since the last neighbour
  * build. The forces stay F(t) until the force pass clears them all. */
+static gf_drift_d2 drift_range(gf_sim *s, size_t i0, size_t i1, void *unused)
+{
+    const double *const ref[3] = {s->x_ref, s->y_ref, s->z_ref};
+    double *const vp[3] = {s->vx_pred, s->vy_pred, s->vz_pred};
+    gf_integrate_factors k = gf_sim_integrate_factors(s);
+    return (gf_drift_d2){gf_integrate_drift(s->p, i0, i1, s->dt_s, s->gravity_m_s2, ref, vp, &k), 0.0};
+}
+
 static double drift(gf_sim *s)
 {
-    gf_particles *p = s->p;
-    long n = (long)p->n_local;
-    double d2[GF_SIM_MAX_THREADS] = {0.0};
-    int used = 1;
-#ifdef _OPENMP
-#pragma omp parallel num_threads(s->n_threads) if (s->n_threads > 1 && n >= GF_SIM_PARALLEL_MIN_GRAINS)
-#endif
-    {
-#ifdef _OPENMP
-        int t = omp_get_thread_num(), m = omp_get_num_threads();
-#else
-        int t = 0, m = 1;
-#endif
-        if (t == 0)
-            used = m;
-        size_t i0, i1;
-        gf_sim_thread_grains(s, (size_t)n, t, m, &i0, &i1);
-        const double *const ref[3] = {s->x_ref, s->y_ref, s->z_ref};
-        double *const vp[3] = {s->vx_pred, s->vy_pred, s->vz_pred};
-        gf_integrate_factors k = gf_sim_integrate_factors(s);
-        d2[t] = gf_integrate_drift(p, i0, i1, s->dt_s, s->gravity_m_s2, ref, vp, &k);
-    }
+    const gf_drift_d2 d2 = gf_sim_grain_passes(s, drift_range, NULL);
     s->stepper.phase = GF_STEP_MOVED;
     s->stepper.n_moved = 0; /* nothing zeroed */
-    double d2_max = 0.0;
-    for (int t = 0; t < used; ++t)
-        d2_max = d2[t] > d2_max ? d2[t] : d2_max;
-    return d2_max;
+    return d2.build;
 }
 
 /* One step of the method as written: kick, drift, neighbour upkeep, forces,
@@ -244,7 +210,6 @@ static gf_status reference_step(gf_sim *s)
  * The operations on each grain are the same, in the same order. */
 static gf_status fused_step(gf_sim *s, int next_follows)
 {
-    const double h = 0.5 * s->dt_s;
     gf_step_state *st_ = &s->stepper;
     gf_drift_d2 moved;
     if (st_->fused) { /* by the previous step's force region */
@@ -252,7 +217,7 @@ static gf_status fused_step(gf_sim *s, int next_follows)
         st_->fused = 0;
     } else {
         gf_timer_start(&s->timers, GF_T_INTEGRATE);
-        moved = kick_drift(s, h);
+        moved = kick_drift(s);
         gf_timer_stop(&s->timers, GF_T_INTEGRATE);
     }
     const double d2 = moved.build;
@@ -298,12 +263,7 @@ static gf_status fluid_step(gf_sim *s)
     s->next_fluid_step = s->step + s->n_substeps;
     gf_status st = gf_coupling_fluid_step(s->coupling, s->p, s->dt_s * s->n_substeps);
     gf_timer_stop(&s->timers, GF_T_FLUID);
-    if (st != GF_OK) {
-        char what[sizeof s->ctx->last_msg];
-        snprintf(what, sizeof what, "%s", s->ctx->last_code == st ? s->ctx->last_msg : gf_status_str(st));
-        return GF_FAIL(s->ctx, st, "coupling: fluid step failed at t = %g s: %s", s->t_s, what);
-    }
-    return GF_OK;
+    return coupling_failed(s, st, "fluid step");
 }
 
 gf_status gf_sim_advance(gf_sim *s, long n_steps)
