@@ -145,82 +145,93 @@ typedef struct gf_step_state {
     double fused_s;         /* thread 0's wall time in that pass (given to the integrate timer) */
 } gf_step_state;
 
+/* The sim, in parts: each anonymous part lists the file that owns it
+ * (writes it; the others read it). */
 struct gf_sim {
-    gf_ctx *ctx;                /* borrowed from the creator */
-    gf_run_spec spec;
-    gf_sim_options opt;         /* strings borrowed */
-    const gf_scene_desc *scene;
-    gf_scales scales;
-    gf_particles *p;
-    gf_rng rng;
-    gf_timers timers;
-    /* geometry */
-    double lo_m[3], hi_m[3];
-    int periodic[3], box_set;
-    double gravity_m_s2[3];
-    gf_wall walls[GF_SIM_MAX_WALLS];
-    int n_walls;
-    double *wall_hist;          /* 3 doubles per (grain, wall): [3 (i (n_walls + 1) + w)] */
-    size_t wall_hist_cap;
-    /* grains within reach of each wall until the next neighbour build, ascending
-     * (wall w: wall_cand[wall_cand_start[w] .. wall_cand_start[w + 1]]); valid
-     * while wall_cand_walls == n_walls and wall_cand_grains == n_local */
-    int32_t *wall_cand;
-    size_t wall_cand_start[GF_SIM_MAX_WALLS + 1], wall_cand_cap, wall_cand_grains;
-    int wall_cand_walls;
-    uint8_t *wall_contacts;     /* walls each grain touches at the last build (cost of its row), n */
-    size_t wall_contacts_cap;
-    gf_gauge gauges[GF_SIM_MAX_GAUGES];
-    int n_gauges;
-    int fluid_bc[3][2], fluid_bc_set[3][2];
-    /* clock */
-    double t_s, dt_s, t_end_s;
-    long step;
-    /* contacts */
-    const gf_contact_info *law;
-    gf_contact_params cp;
-    gf_nlist *nl;
-    double *x_ref, *y_ref, *z_ref;  /* positions at the last neighbour build */
-    double *vx_pred, *vy_pred, *vz_pred; /* predicted v(t+dt) for the dashpot (gf_integrate.h) */
-    double *inv_mass, *inv_inertia, *mobile; /* integrator factors, refreshed at every neighbour build */
-    double *contact_inv_mass;       /* 1/m in contacts, 0 for glued grains (infinite mass) */
-    double *x_near, *y_near, *z_near; /* positions at the last near-list build (gf_near_list.c) */
-    void *ref_block;                /* owns the thirteen arrays above, staggered (core/gf_soa.h) */
-    double *pair_meff, *pair_sqrt_mk; /* per neighbour pair: m*, sqrt(m* k_n) */
-    size_t pair_cap;
+    struct { /* the run, set at creation and by the scene's builder calls (gf_sim.c) */
+        gf_ctx *ctx;                /* borrowed from the creator */
+        gf_run_spec spec;
+        gf_sim_options opt;         /* strings borrowed */
+        const gf_scene_desc *scene;
+        gf_scales scales;
+        gf_particles *p;
+        gf_rng rng;
+        gf_timers timers;
+        double lo_m[3], hi_m[3];
+        int periodic[3], box_set;
+        double gravity_m_s2[3];
+        gf_gauge gauges[GF_SIM_MAX_GAUGES];
+        int n_gauges;
+        int fluid_bc[3][2], fluid_bc_set[3][2];
+        int n_threads;
+        int in_build;
+        int rotation_locked;        /* gf_sim_set_rotation_locked: inverse inertias held at 0 */
+        double scene_counters[GF_SIM_SCENE_COUNTERS]; /* gf_sim_scene_counters; checkpointed */
+    };
+    struct { /* walls (gf_sim.c adds them; gf_wall_forces.c their contacts and loads) */
+        gf_wall walls[GF_SIM_MAX_WALLS];
+        int n_walls;
+        double *wall_hist;          /* 3 doubles per (grain, wall): [3 (i (n_walls + 1) + w)] */
+        size_t wall_hist_cap;
+    };
+    struct { /* the clock (gf_step.c) */
+        double t_s, dt_s, t_end_s;
+        long step;
+    };
+    struct { /* the contact law and lubrication (gf_sim.c, gf_fluid_setup.c) */
+        const gf_contact_info *law;
+        gf_contact_params cp;
+        int lubrication;
+        double lub_eta_Pa_s, lub_roughness_m, lub_cutoff_m;
+        int lub_in_overlap;         /* 1: gap clamped at 0 in overlap (default); 0: off while overlapping */
+    };
+    struct { /* neighbour upkeep (gf_neighbours.c; the order of the store: gf_sort.c) */
+        gf_nlist *nl;
+        double *x_ref, *y_ref, *z_ref;  /* positions at the last neighbour build */
+        double *vx_pred, *vy_pred, *vz_pred; /* predicted v(t+dt) for the dashpot (gf_integrate.h; written by the drift) */
+        double *inv_mass, *inv_inertia, *mobile; /* integrator factors, refreshed at every neighbour build */
+        double *contact_inv_mass;       /* 1/m in contacts, 0 for glued grains (infinite mass) */
+        double *x_near, *y_near, *z_near; /* positions at the last near-list build (gf_near_list.c) */
+        void *ref_block;                /* owns the thirteen arrays above, staggered (core/gf_soa.h) */
+        size_t ref_cap;
+        double *pair_meff, *pair_sqrt_mk; /* per neighbour pair: m*, sqrt(m* k_n) */
+        size_t pair_cap;
+        double skin_m, extra_m;
+        int need_build;
+        /* grains within reach of each wall until the next neighbour build, ascending
+         * (wall w: wall_cand[wall_cand_start[w] .. wall_cand_start[w + 1]]); valid
+         * while wall_cand_walls == n_walls and wall_cand_grains == n_local */
+        int32_t *wall_cand;
+        size_t wall_cand_start[GF_SIM_MAX_WALLS + 1], wall_cand_cap, wall_cand_grains;
+        int wall_cand_walls;
+        uint8_t *wall_contacts;     /* walls each grain touches at the last build (cost of its row), n */
+        size_t wall_contacts_cap;
+        int sort_every;             /* rebuilds between sorts; 0: never */
+        long n_rebuilds;            /* gf_sim_rebuild calls (checkpointed: the sort schedule) */
+        long n_sorts;               /* sorts that moved a grain (gf_sort.c) */
+        int store_layout;           /* order the store was last sorted into (gf_sim_sort_layout); -1: never sorted */
+    };
+    gf_near_list near;              /* the near list (gf_near_list.c) */
     gf_step_state stepper;          /* where the step loop stands (gf_step.c) */
-    unsigned long force_count;      /* force evaluations so far (gf_sim_accum.pairs_done) */
-    size_t ref_cap;
-    double skin_m, extra_m;
-    int need_build;
-    int n_threads;
-    gf_sim_accum acc[GF_SIM_MAX_THREADS];
-    size_t n_contacts;
-    double max_overlap_m;
-    /* fluid */
-    int immersed;
-    char fluid_reason[384];     /* why this fluid tier (fluid_model_reason attribute) */
-    gf_coupling *coupling;
-    int n_substeps;             /* DEM steps per fluid step, re-chosen at every fluid step */
-    long next_fluid_step;       /* step index of the next fluid step */
-    int lubrication;
-    double lub_eta_Pa_s, lub_roughness_m, lub_cutoff_m;
-    int lub_in_overlap;         /* 1: gap clamped at 0 in overlap (default); 0: off while overlapping */
-    int in_build;
-    int rotation_locked;        /* gf_sim_set_rotation_locked: inverse inertias held at 0 */
-    /* sleeping grains (gf_sleep.c; only with contact.sleep_speed_nd > 0) */
-    long *sleep_quiet_steps;    /* steps each grain has stayed below the sleep speed */
-    size_t sleep_cap;
-    long n_sleep_events, n_wake_events;
-    /* spatial order of the store (gf_sort.c) */
-    int sort_every;             /* rebuilds between sorts; 0: never */
-    long n_rebuilds;            /* gf_sim_rebuild calls (checkpointed: the sort schedule) */
-    long n_sorts;               /* sorts that moved a grain */
-    int store_layout;           /* order the store was last sorted into (gf_sim_sort_layout); -1: never sorted */
-    /* work this run does not need (gf_skips.c): GF_SKIP_* bits, decided once at creation */
-    unsigned skips;
-    gf_near_list near;          /* gf_near_list.c */
-    double scene_counters[GF_SIM_SCENE_COUNTERS]; /* gf_sim_scene_counters; checkpointed */
+    struct { /* the force pass (gf_forces.c) */
+        unsigned long force_count;  /* force evaluations so far (gf_sim_accum.pairs_done) */
+        gf_sim_accum acc[GF_SIM_MAX_THREADS];
+        size_t n_contacts;
+        double max_overlap_m;
+    };
+    struct { /* the fluid (gf_fluid_setup.c; the sub-cycling: gf_step.c) */
+        int immersed;
+        char fluid_reason[384];     /* why this fluid tier (fluid_model_reason attribute) */
+        gf_coupling *coupling;
+        int n_substeps;             /* DEM steps per fluid step, re-chosen at every fluid step */
+        long next_fluid_step;       /* step index of the next fluid step */
+    };
+    struct { /* sleeping grains (gf_sleep.c; only with contact.sleep_speed_nd > 0) */
+        long *sleep_quiet_steps;    /* steps each grain has stayed below the sleep speed */
+        size_t sleep_cap;
+        long n_sleep_events, n_wake_events;
+    };
+    unsigned skips;                 /* work this run does not need: GF_SKIP_* bits, decided once (gf_skips.c) */
 };
 
 /* c = a x b */
