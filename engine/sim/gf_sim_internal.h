@@ -115,7 +115,7 @@ typedef struct gf_near_list {
     double skin_m;              /* 0: no near list */
     int held;                   /* built and not written back: its history is the current one */
     int valid;                  /* held, and no grain has moved skin/2 since it was built */
-    int use;                    /* this force evaluation scans it (set by dem_step alone) */
+    int use;                    /* this force evaluation scans it (set by the fused step alone, gf_step.c) */
     int32_t *i, *j, *k;         /* rows, partners, and offset of each pair in the chunk's part of the list */
     uint8_t *image, *touching;
     double *hist, *sqrt_mk, *meff;
