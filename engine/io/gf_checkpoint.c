@@ -10,6 +10,45 @@
     X(x_m) X(y_m) X(z_m) X(vx_m_s) X(vy_m_s) X(vz_m_s) X(wx_rad_s) X(wy_rad_s) X(wz_rad_s) X(fx_N) X(fy_N)    \
     X(fz_N) X(tx_N_m) X(ty_N_m) X(tz_N_m) X(radius_m) X(mass_kg) X(inertia_kg_m2)
 
+/* The per-grain arrays of doubles, in file order: the store's fields, the
+ * reference positions, the wall history. */
+#define GF_CK_N_ARRAYS 22
+typedef struct grain_array {
+    const char *name;
+    double *v;
+    size_t len;
+} grain_array;
+
+static void grain_arrays(const gf_checkpoint_view *v, grain_array a[GF_CK_N_ARRAYS])
+{
+    gf_particles *p = v->p;
+    const size_t n = p->n_local;
+    int k = 0;
+#define GF_CK_ARRAY(f) a[k++] = (grain_array){#f, p->f, n};
+    GF_CK_F64_FIELDS(GF_CK_ARRAY)
+#undef GF_CK_ARRAY
+    a[k++] = (grain_array){"x_ref", v->ref_m[0], n};
+    a[k++] = (grain_array){"y_ref", v->ref_m[1], n};
+    a[k++] = (grain_array){"z_ref", v->ref_m[2], n};
+    a[k++] = (grain_array){"wall_history", v->wall_hist, 3 * n * (size_t)(v->n_walls + 1)};
+}
+
+/* The grains' datasets (ids, flags, the arrays above), written (writing)
+ * or read back, in one order. */
+static gf_status grain_datasets(gf_restart *r, const gf_checkpoint_view *v, int writing)
+{
+    gf_particles *p = v->p;
+    const size_t n = p->n_local;
+    GF_TRY(writing ? gf_restart_put_i64(r, "id", n, p->id) : gf_restart_get_i64(r, "id", n, p->id));
+    GF_TRY(writing ? gf_restart_put_u8(r, "flags", n, p->flags) : gf_restart_get_u8(r, "flags", n, p->flags));
+    grain_array a[GF_CK_N_ARRAYS];
+    grain_arrays(v, a);
+    for (int k = 0; k < GF_CK_N_ARRAYS; ++k)
+        GF_TRY(writing ? gf_restart_put_f64(r, a[k].name, a[k].len, a[k].v)
+                       : gf_restart_get_f64(r, a[k].name, a[k].len, a[k].v));
+    return GF_OK;
+}
+
 static gf_status write_walls(gf_restart *r, const gf_checkpoint_view *v)
 {
     uint8_t active[GF_CHECKPOINT_MAX_WALLS];
@@ -37,15 +76,7 @@ static gf_status write_all(gf_restart *r, const gf_checkpoint_view *v, const gf_
     GF_TRY(gf_restart_put_i64(r, "sort_layout", 1, (const int64_t[1]){*v->store_layout}));
     GF_TRY(gf_restart_put_f64(r, "scene_counters", (size_t)v->n_scene_counters, v->scene_counters));
     GF_TRY(write_walls(r, v));
-    GF_TRY(gf_restart_put_i64(r, "id", n, p->id));
-    GF_TRY(gf_restart_put_u8(r, "flags", n, p->flags));
-#define GF_CK_PUT(f) GF_TRY(gf_restart_put_f64(r, #f, n, p->f));
-    GF_CK_F64_FIELDS(GF_CK_PUT)
-#undef GF_CK_PUT
-    GF_TRY(gf_restart_put_f64(r, "x_ref", n, v->ref_m[0]));
-    GF_TRY(gf_restart_put_f64(r, "y_ref", n, v->ref_m[1]));
-    GF_TRY(gf_restart_put_f64(r, "z_ref", n, v->ref_m[2]));
-    GF_TRY(gf_restart_put_f64(r, "wall_history", 3 * n * (size_t)(v->n_walls + 1), v->wall_hist));
+    GF_TRY(grain_datasets(r, v, 1));
     GF_TRY(gf_restart_put_i64(r, "contact_ids", 2 * v->n_pairs, v->pair_ids));
     GF_TRY(gf_restart_put_f64(r, "contact_history", 3 * v->n_pairs, v->pair_hist));
     if (!coupling)
@@ -127,21 +158,12 @@ static gf_status read_all(gf_ctx *ctx, gf_restart *r, gf_checkpoint_view *v, dou
         return GF_FAIL(ctx, GF_ERR_CONFIG,
                        "restart: checkpoint holds %lld grains but scene %s builds %zu (different spec?)",
                        (long long)counts[0], v->scene, p->n_local);
-    const size_t n = p->n_local;
     GF_TRY(gf_restart_get_f64(r, "clock", 5, clock));
     GF_TRY(gf_restart_get_u64(r, "rng", 4, v->rng_s));
     GF_TRY(gf_restart_get_f64(r, "gravity", 3, v->gravity_m_s2));
     GF_TRY(read_optional(r, v));
     GF_TRY(read_walls(ctx, r, v));
-    GF_TRY(gf_restart_get_i64(r, "id", n, p->id));
-    GF_TRY(gf_restart_get_u8(r, "flags", n, p->flags));
-#define GF_CK_GET(f) GF_TRY(gf_restart_get_f64(r, #f, n, p->f));
-    GF_CK_F64_FIELDS(GF_CK_GET)
-#undef GF_CK_GET
-    GF_TRY(gf_restart_get_f64(r, "x_ref", n, v->ref_m[0]));
-    GF_TRY(gf_restart_get_f64(r, "y_ref", n, v->ref_m[1]));
-    GF_TRY(gf_restart_get_f64(r, "z_ref", n, v->ref_m[2]));
-    GF_TRY(gf_restart_get_f64(r, "wall_history", 3 * n * (size_t)(v->n_walls + 1), v->wall_hist));
+    GF_TRY(grain_datasets(r, v, 0));
     p->next_id = counts[2];
     *v->step = counts[1];
     *v->t_s = clock[0], *v->max_overlap_m = clock[3], *v->n_contacts = (size_t)clock[4];
