@@ -361,11 +361,8 @@ gf_status gf_sim_compute_forces(gf_sim *s)
 #pragma omp parallel num_threads(s->n_threads) if (s->n_threads > 1 && n >= GF_SIM_PARALLEL_MIN_GRAINS)
 #endif
     {
-#ifdef _OPENMP
-        int t = omp_get_thread_num(), m = omp_get_num_threads();
-#else
-        int t = 0, m = 1;
-#endif
+        const gf_team team = gf_sim_team();
+        const int t = team.t, m = team.m;
         for (int c = t; c < s->nl->n_chunks; c += m)
             run_chunk(s, c, store, n, count, m == s->nl->n_chunks);
         if (t == 0)

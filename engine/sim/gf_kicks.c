@@ -136,11 +136,8 @@ gf_drift_d2 gf_sim_grain_passes(gf_sim *s, gf_sim_grain_pass *pass, void *user)
 #pragma omp parallel num_threads(s->n_threads) if (s->n_threads > 1 && n >= GF_SIM_PARALLEL_MIN_GRAINS)
 #endif
     {
-#ifdef _OPENMP
-        int t = omp_get_thread_num(), m = omp_get_num_threads();
-#else
-        int t = 0, m = 1;
-#endif
+        const gf_team team = gf_sim_team();
+        const int t = team.t, m = team.m;
         if (t == 0)
             used = m;
         size_t i0, i1;

@@ -10,6 +10,9 @@
 
 #include <math.h>
 #include <stdatomic.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 #include "contact/gf_contact.h"
 #include "contact/gf_nlist.h"
@@ -233,6 +236,20 @@ struct gf_sim {
     };
     unsigned skips;                 /* work this run does not need: GF_SKIP_* bits, decided once (gf_skips.c) */
 };
+
+/* This thread's number t and the team's size m inside a parallel region
+ * (0 of 1 without OpenMP). */
+typedef struct gf_team {
+    int t, m;
+} gf_team;
+static inline gf_team gf_sim_team(void)
+{
+#ifdef _OPENMP
+    return (gf_team){omp_get_thread_num(), omp_get_num_threads()};
+#else
+    return (gf_team){0, 1};
+#endif
+}
 
 /* c = a x b */
 static inline void gf_cross(const double a[3], const double b[3], double c[3])
