@@ -41,7 +41,7 @@ typedef struct gf_contact_spec {
     int allow_attraction;     /* 0: normal force clipped at 0 (Izard §3.1.2.2) */
     double dt_over_tc;        /* DEM step / t_c; 1/50 default (symplectic) */
     double skin_over_D;       /* Verlet skin in units of D */
-    double sleep_speed_nd;    /* grains slower than this x sqrt(gD) sleep (gf_sim_sleep.c); 0: off */
+    double sleep_speed_nd;    /* grains slower than this x sqrt(gD) sleep (gf_sleep.c); 0: off */
     double overlap_target_over_D; /* > 0: t_c from the scene's pressure so that static overlaps stay below
                                      this x D (gf_stiffness_rule.h), replacing t_contact_nd; 0: off */
 } gf_contact_spec;

@@ -45,7 +45,7 @@ typedef struct gf_sim_options {
 #define GF_SIM_NEAR_SKIN_DEFAULT 0.05
 
 /* Work a run leaves out because its spec and scene do not need it (issue #6),
- * decided once at gf_sim_create (engine/gf_sim_skips.c; docs/notes/benchmarks.md):
+ * decided once at gf_sim_create (engine/sim/gf_skips.c; docs/notes/benchmarks.md):
  *   GF_SKIP_TANGENTIAL   mu_c = 0 on grains and walls: no tangential force or
  *                        history, no torque, no rotation (exact);
  *   GF_SKIP_LUBRICATION  the spec names a viscous fluid and asks for
@@ -79,7 +79,7 @@ gf_ctx *gf_sim_ctx(gf_sim *sim);
 gf_rng *gf_sim_rng(gf_sim *sim);
 const gf_timers *gf_sim_timers(const gf_sim *sim);
 /* Neighbour-list counters since creation (benchmarks): list builds, near-list
- * builds (engine/gf_sim_near.c), and the pairs of each list now. */
+ * builds (engine/sim/gf_near_list.c), and the pairs of each list now. */
 typedef struct gf_sim_list_stats {
     long builds, near_builds;
     size_t pairs, near_pairs;
@@ -124,10 +124,65 @@ gf_status gf_sim_stress_tensor_slabs(gf_sim *sim, double y0_m, double dy_m, int 
 gf_status gf_sim_stress_tensor_slabs_in(gf_sim *sim, const double footprint_m[4], double y0_m, double dy_m,
                                         int n_slabs, double *S_Pa);
 
-/* Mechanical energy of the mobile grains (gf_sim_energy.c): kinetic,
- * rotational, buoyant-weight potential, and the elastic energy stored in the
- * normal and tangential springs of the linear law. Without a driving force it
- * can only fall; audits compare it along a run. GF_ERR_CONFIG for other laws. */
+/* Contacts and contact candidates, for measurements, audits and tests that
+ * read the contact network without the engine's internals
+ * (engine/sim/gf_contact_walk.c). One record per grain pair of the neighbour list
+ * (within contact range plus the Verlet skin and the lubrication range;
+ * overlap_m <= 0 when apart) and per grain and wall (wall >= 0, j unused).
+ * history: the tangential spring (GF_CONTACT_HISTORY doubles, the
+ * delta_t vector of Cundall & Strack 1979), current as of the last force
+ * evaluation. The callback returns non-zero to stop the walk. */
+typedef struct gf_sim_contact {
+    size_t i, j;             /* store indices of the grains (j: pairs only) */
+    int wall;                /* -1: a grain pair; else the wall id */
+    double branch_m[3];      /* x_i - x_j (periodic image), or from the wall's contact point to x_i */
+    double normal[3];        /* unit normal from j (or the wall) towards i */
+    double overlap_m;        /* R_i + R_j - |branch| (R_i - distance for a wall); > 0 in contact */
+    double m_eff_kg;         /* m* = 1/(1/m_i + 1/m_j), 1/m = 0 for glued grains (m_i for a wall) */
+    const double *history;   /* tangential history of the contact */
+} gf_sim_contact;
+typedef int (*gf_sim_contact_fn)(void *user, const gf_sim_contact *c);
+gf_status gf_sim_foreach_contact(const gf_sim *sim, gf_sim_contact_fn fn, void *user);
+
+/* Entry points for drivers, tests and benchmarks that look inside a run
+ * without the engine's internals (engine/sim/gf_sim_access.c). */
+/* The neighbour list, read-only (contact/gf_nlist.h): its rows, pairs, the
+ * chunks of the threads and their reach runs. Valid until the next step or
+ * rebuild. */
+struct gf_nlist;
+const struct gf_nlist *gf_sim_neighbour_list(const gf_sim *sim);
+/* Rebuilds the neighbour list now, the contact history carried over (the
+ * step rebuilds it by itself when a grain has moved half the skin). */
+gf_status gf_sim_rebuild_neighbours(gf_sim *sim);
+/* Makes the next step rebuild the list whatever the displacements. */
+void gf_sim_rebuild_at_next_step(gf_sim *sim);
+/* Forgets the tangential history of every grain pair (a control for tests
+ * of the history's transfer across rebuilds). */
+void gf_sim_forget_pair_history(gf_sim *sim);
+/* Evaluates the contact, lubrication and wall forces of the current state
+ * into the store now (the dashpot sees v(t)), as at creation. */
+gf_status gf_sim_evaluate_forces(gf_sim *sim);
+/* The contact law's parameters the run derived (contact/gf_contact.h). */
+struct gf_contact_params;
+const struct gf_contact_params *gf_sim_contact_params(const gf_sim *sim);
+/* The fluid coupling of an immersed run (coupling/gf_coupling.h), NULL when dry. */
+struct gf_coupling;
+struct gf_coupling *gf_sim_coupling(gf_sim *sim);
+/* DEM steps per fluid step, as last chosen (0 when dry). */
+int gf_sim_fluid_substeps(const gf_sim *sim);
+/* Gravity of the run, m s-2 (the scene may tilt it). */
+void gf_sim_gravity(const gf_sim *sim, double g_m_s2[3]);
+/* 1 when the run is immersed (a fluid tier was chosen, even before the
+ * coupling starts after the scene's preparation). */
+int gf_sim_immersed(const gf_sim *sim);
+/* Position of the gauge called name (gf_sim_add_gauge); 0 when there is none. */
+int gf_sim_gauge_position(const gf_sim *sim, const char *name, double x_m[3]);
+
+/* Mechanical energy of the mobile grains (engine/audit/gf_energy_audit.c):
+ * kinetic, rotational, buoyant-weight potential, and the elastic energy
+ * stored in the normal and tangential springs, from the contact law's own
+ * energy hooks (gf_contact_info.normal_energy, tangential_energy). Without a
+ * driving force it can only fall; audits compare it along a run. */
 typedef struct gf_sim_energy {
     double kinetic_J, rotational_J, gravity_J, elastic_normal_J, elastic_tangential_J, total_J;
 } gf_sim_energy;
@@ -155,7 +210,7 @@ gf_status gf_sim_add_wall(gf_sim *sim, const double point_m[3], const double nor
 gf_status gf_sim_set_wall_active(gf_sim *sim, int wall_id, int active);
 /* Opens a rectangular hole in plane wall wall_id (a silo's orifice): the
  * rectangle [lo, hi] on the two axes other than the wall normal's, which must
- * be a box axis. Grains over the hole touch only its rim (gf_sim_internal.h:
+ * be a box axis. Grains over the hole touch only its rim (engine/sim/gf_sim_internal.h:
  * gf_wall_distance). */
 gf_status gf_sim_set_wall_hole(gf_sim *sim, int wall_id, const double lo_m[3], const double hi_m[3]);
 gf_status gf_sim_set_end_time(gf_sim *sim, double t_end_s);

@@ -90,7 +90,7 @@ typedef struct gf_contact_info {
     void (*derive)(const gf_run_spec *spec, gf_contact_params *cp);
     /* Ratio of the contact's oscillation frequency at overlap delta to the
      * frequency pi/t_c of the stiffness k_n, for the step's stability limit
-     * t_c/5 (engine/gf_sim.c). NULL: 1 at every overlap. */
+     * t_c/5 (engine/sim/gf_step.c). NULL: 1 at every overlap. */
     double (*frequency_factor)(const gf_contact_params *cp, double overlap_m);
     /* Elastic energy stored at overlap delta (normal) and in the tangential
      * spring xi (|xi|^2 given) at that overlap, for energy audits. */

@@ -1,6 +1,6 @@
 /*
  * Inline bodies of the contact kernels, so that the pair loop of the step
- * (gf_sim_forces.c) can specialise on the linear law without a call per
+ * (gf_forces.c) can specialise on the linear law without a call per
  * contact; the table rows (gf_contact_linear.c, gf_contact_tangential.c) wrap
  * the same bodies. Equations: gf_contact.h, gf_contact_tangential.c.
  */
@@ -45,7 +45,7 @@ static inline void gf_contact_tangential_inline(const gf_contact_geom *g, double
     }
 }
 
-/* Normal force of the linear law alone (a frictionless run: F_t = 0, gf_sim_skips.c). */
+/* Normal force of the linear law alone (a frictionless run: F_t = 0, gf_skips.c). */
 static inline double gf_contact_linear_normal_inline(const gf_contact_params *p, const gf_contact_geom *g,
                                                      double sqrt_mk)
 {

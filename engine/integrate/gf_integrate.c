@@ -35,7 +35,7 @@ void gf_integrate_kick(gf_particles *p, size_t i0, size_t i1, double h, const do
     const double *restrict fx = p->fx_N, *restrict fy = p->fy_N, *restrict fz = p->fz_N;
     const double *restrict tx = p->tx_N_m, *restrict ty = p->ty_N_m, *restrict tz = p->tz_N_m;
     const double gx = g[0] * h, gy = g[1] * h, gz = g[2] * h;
-    if (!iI) { /* translation only: no torque in this run (gf_sim_skips.c) */
+    if (!iI) { /* translation only: no torque in this run (gf_skips.c) */
         GF_SIMD
         for (size_t i = i0; i < i1; ++i) {
             double a = h * im[i], m = mob[i];
@@ -118,4 +118,31 @@ GF_AVX512_CLONES gf_drift_d2 gf_integrate_kick_drift(gf_particles *p, size_t i0,
                            : kick_drift_impl(p, i0, i1, 0, 1, dt_s, g_m_s2, ref, vp, k);
     return n_kicks > 1 ? kick_drift_impl(p, i0, i1, 1, 0, dt_s, g_m_s2, ref, vp, k)
                        : kick_drift_impl(p, i0, i1, 0, 0, dt_s, g_m_s2, ref, vp, k);
+}
+
+double gf_integrate_drift(gf_particles *p, size_t i0, size_t i1, double dt_s, const double g_m_s2[3],
+                          const double *const ref[3], double *const vp[3], const gf_integrate_factors *k)
+{
+    const double *restrict im = k->inv_mass, *restrict mob = k->mobile;
+    double *restrict x = p->x_m, *restrict y = p->y_m, *restrict z = p->z_m;
+    const double *restrict vx = p->vx_m_s, *restrict vy = p->vy_m_s, *restrict vz = p->vz_m_s;
+    const double *restrict fx = p->fx_N, *restrict fy = p->fy_N, *restrict fz = p->fz_N;
+    const double *restrict xr = ref[0], *restrict yr = ref[1], *restrict zr = ref[2];
+    double *restrict px = vp[0], *restrict py = vp[1], *restrict pz = vp[2];
+    const double h = 0.5 * dt_s, gx = g_m_s2[0] * h, gy = g_m_s2[1] * h, gz = g_m_s2[2] * h;
+    double d2_max = 0.0;
+    GF_SIMD_MAX(d2_max)
+    for (size_t i = i0; i < i1; ++i) {
+        const double m = mob[i], a = h * im[i], s = dt_s * m;
+        x[i] += vx[i] * s;
+        y[i] += vy[i] * s;
+        z[i] += vz[i] * s;
+        px[i] = vx[i] + fx[i] * a + gx * m;
+        py[i] = vy[i] + fy[i] * a + gy * m;
+        pz[i] = vz[i] + fz[i] * a + gz * m;
+        const double dx = x[i] - xr[i], dy = y[i] - yr[i], dz = z[i] - zr[i];
+        const double d2 = dx * dx + dy * dy + dz * dz;
+        d2_max = d2 > d2_max ? d2 : d2_max;
+    }
+    return d2_max;
 }

@@ -53,7 +53,7 @@ void gf_integrate_kick(gf_particles *p, size_t i0, size_t i1, double dt_half_s, 
  * store (on two threads, one that moved every chunk's force lines to the
  * core clearing them). Returns the largest squared displacements from the
  * positions of the last neighbour build (ref->build) and of the last
- * near-list build (ref->near, engine/gf_sim_near.c), m^2. */
+ * near-list build (ref->near, engine/sim/gf_near_list.c), m^2. */
 typedef struct gf_drift_refs {
     const double *build[3]; /* positions at the last neighbour-list build */
     const double *near[3];  /* positions at the last near-list build (may be build) */
@@ -64,5 +64,14 @@ typedef struct gf_drift_d2 {
 gf_drift_d2 gf_integrate_kick_drift(gf_particles *p, size_t i0, size_t i1, int n_kicks, double dt_s,
                                     const double g_m_s2[3], const gf_drift_refs *ref, double *const vp[3],
                                     const gf_integrate_factors *k);
+
+/* The drift alone, for the reference step (engine/sim/gf_step.c): x += v dt
+ * for mobile grains in [i0, i1) and the predicted velocities
+ * v* = v + (F/m + g) dt/2 into vp[3], with the expressions of
+ * gf_integrate_kick_drift (so a kick then a drift give its bits). The forces
+ * are left as they are. Returns the largest squared displacement from
+ * ref[3], the positions of the last neighbour build, m^2. */
+double gf_integrate_drift(gf_particles *p, size_t i0, size_t i1, double dt_s, const double g_m_s2[3],
+                          const double *const ref[3], double *const vp[3], const gf_integrate_factors *k);
 
 #endif

@@ -163,7 +163,7 @@ static double run_attribute(const char *run_dir, const char *name)
 }
 
 /* A run already in out_dir that started further from the Phi_i asked than the
- * scene's phi_tolerance (the same test as the run's own warning, gf_sim_run.c). */
+ * scene's phi_tolerance (the same test as the run's own warning, gf_run.c). */
 static void warn_realised_packing(const char *file, const char *out_dir, const gf_campaign *c,
                                   const gf_campaign_run *r)
 {

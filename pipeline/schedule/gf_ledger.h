@@ -51,7 +51,7 @@ void gf_ledger_lock_path(const char *run_dir, char *buf, size_t n);
 void gf_ledger_clear(const char *run_dir);
 /* 1 when the run in run_dir can continue from its checkpoint instead of
  * starting again: its status says it was interrupted after writing
- * checkpoint.h5 (engine/gf_sim_run.c), that file is there, and its run.yaml
+ * checkpoint.h5 (engine/sim/gf_run.c), that file is there, and its run.yaml
  * is yaml (len bytes) exactly, i.e. the spec did not change since. */
 int gf_ledger_can_continue(const char *run_dir, const char *yaml, size_t len);
 /* status file: "done" or "failed: <reason>". set_done first checks every file

@@ -29,31 +29,39 @@
 #include <string.h>
 
 #include "dem_testutil.h"
-#include "gf_sim_internal.h"
+#include "contact/gf_contact.h"
+#include "contact/gf_nlist.h"
 
 typedef struct pair_h {
     int64_t a, b;
     double h[3];
 } pair_h;
 
-static size_t snapshot(gf_sim *s, pair_h **out)
+typedef struct snapshot_into {
+    const gf_particles *p;
+    pair_h *v;
+    size_t m;
+} snapshot_into;
+
+static int add_pair(void *user, const gf_sim_contact *c)
 {
-    gf_sim_near_sync(s); /* the near list's history into the list's (engine/gf_sim_near.c) */
-    const gf_nlist *nl = s->nl;
-    const gf_particles *p = s->p;
-    size_t m = 0;
-    pair_h *v = malloc((nl->n_pairs + 1) * sizeof *v);
-    for (size_t i = 0; i < nl->n; ++i)
-        for (size_t k = nl->row_start[i]; k < nl->row_start[i + 1]; ++k) {
-            const double *h = &nl->hist[3 * k];
-            if (h[0] == 0.0 && h[1] == 0.0 && h[2] == 0.0)
-                continue;
-            v[m].a = p->id[i], v[m].b = p->id[nl->j[k]];
-            memcpy(v[m].h, h, sizeof v[m].h);
-            ++m;
-        }
-    *out = v;
-    return m;
+    snapshot_into *si = user;
+    const double *h = c->history;
+    if (c->wall >= 0 || (h[0] == 0.0 && h[1] == 0.0 && h[2] == 0.0))
+        return 0;
+    pair_h *q = &si->v[si->m++];
+    q->a = si->p->id[c->i], q->b = si->p->id[c->j];
+    memcpy(q->h, h, sizeof q->h);
+    return 0;
+}
+
+/* The grain pairs with a tangential history (gf_sim_foreach_contact). */
+static size_t snapshot(gf_ctx *ctx, gf_sim *s, pair_h **out)
+{
+    snapshot_into si = {gf_sim_particles(s), malloc((gf_sim_list_counters(s).pairs + 1) * sizeof(pair_h)), 0};
+    GF_CHECK_OK(gf_sim_foreach_contact(s, add_pair, &si), ctx);
+    *out = si.v;
+    return si.m;
 }
 
 static int find(const pair_h *v, size_t m, const pair_h *q)
@@ -97,18 +105,19 @@ static void identity_in_a_bed(gf_ctx *ctx)
     GF_CHECK_OK(gf_sim_advance(a, 2000), ctx);
     GF_CHECK_OK(gf_sim_advance(b, 2000), ctx);
     pair_h *before, *after;
-    size_t m0 = snapshot(a, &before);
-    GF_CHECK_OK(gf_sim_rebuild(a), ctx);
-    size_t m1 = snapshot(a, &after), kept = 0;
+    size_t m0 = snapshot(ctx, a, &before);
+    GF_CHECK_OK(gf_sim_rebuild_neighbours(a), ctx);
+    size_t m1 = snapshot(ctx, a, &after), kept = 0;
     for (size_t k = 0; k < m0; ++k)
         kept += find(after, m1, &before[k]);
     printf("forced rebuild: %zu contacts with history before, %zu after, %zu identical\n", m0, m1, kept);
     GF_CHECK(m0 > 500 && m1 == m0 && kept == m0);
     free(before), free(after);
     gf_particles *pa = gf_sim_particles(a), *pb = gf_sim_particles(b);
-    size_t n = pa->n_local, builds0 = a->nl->n_builds;
+    size_t n = pa->n_local;
+    long builds0 = gf_sim_list_counters(a).builds;
     for (int k = 0; k < 300; ++k) {
-        a->need_build = 1; /* the next step rebuilds the list */
+        gf_sim_rebuild_at_next_step(a);
         GF_CHECK_OK(gf_sim_advance(a, 10), ctx);
     }
     GF_CHECK_OK(gf_sim_advance(b, 3000), ctx);
@@ -117,9 +126,9 @@ static void identity_in_a_bed(gf_ctx *ctx)
     double L = hi[0] - lo[0], D = spec.grains.diameter_m, dab = 0.0;
     for (size_t i = 0; i < n; ++i)
         dab = fmax(dab, fabs(wrap(pa->x_m[i] - pb->x_m[i], L)) / D);
-    printf("3000 steps, %zu forced rebuilds: largest x difference to the run without them %.3g D\n",
-           a->nl->n_builds - builds0, dab);
-    GF_CHECK(a->nl->n_builds - builds0 >= 300);
+    const long forced = gf_sim_list_counters(a).builds - builds0;
+    printf("3000 steps, %ld forced rebuilds: largest x difference to the run without them %.3g D\n", forced, dab);
+    GF_CHECK(forced >= 300);
     GF_CHECK(dab < 1e-9);
     gf_sim_destroy(&a);
     gf_sim_destroy(&b);
@@ -136,16 +145,15 @@ static double clamp_sag(gf_ctx *ctx, int forget, double *expected, double *max_s
     double y0 = p->y_m[1], m = p->mass_kg[1], mean = 0.0;
     *max_sag = 0.0;
     for (int k = 0; k < 300; ++k) {
-        s->need_build = 1;
+        gf_sim_rebuild_at_next_step(s);
         GF_CHECK_OK(gf_sim_advance(s, 10), ctx);
-        if (forget) {
-            gf_sim_near_flush(s); /* the list's history is then the only one */
-            memset(s->nl->hist, 0, 3 * s->nl->n_pairs * sizeof(double));
-        }
+        if (forget)
+            gf_sim_forget_pair_history(s);
         mean += (y0 - p->y_m[1]) / 300.0;
         *max_sag = fmax(*max_sag, y0 - p->y_m[1]);
     }
-    *expected = m * gf_sim_spec(s)->gravity_m_s2 / (2.0 * s->cp.kt_over_kn * s->cp.k_n_N_m);
+    const gf_contact_params *cp = gf_sim_contact_params(s);
+    *expected = m * gf_sim_spec(s)->gravity_m_s2 / (2.0 * cp->kt_over_kn * cp->k_n_N_m);
     gf_sim_destroy(&s);
     return mean;
 }
@@ -177,7 +185,8 @@ int main(void)
         GF_CHECK_OK(gf_sim_advance(s, 100), &ctx);
         double a = (p->vy_m_s[1] - v0) / (gf_sim_time_s(s) - t0);
         double delta = light * gf_sim_spec(s)->grains.diameter_m, g = gf_sim_spec(s)->gravity_m_s2;
-        double want = -(g - 2.0 * s->cp.mu_grain * s->cp.k_n_N_m * delta / p->mass_kg[1]);
+        const gf_contact_params *cp = gf_sim_contact_params(s);
+        double want = -(g - 2.0 * cp->mu_grain * cp->k_n_N_m * delta / p->mass_kg[1]);
         printf("light squeeze: sliding acceleration %.5g m/s2 (g - 2 mu k_n delta/m = %.5g)\n", a, want);
         GF_CHECK_REL(a, want, 0.01);
         gf_sim_destroy(&s);

@@ -1,5 +1,5 @@
 /*
- * The force evaluation split into chunks (engine/gf_sim_forces.c): each
+ * The force evaluation split into chunks (engine/sim/gf_forces.c): each
  * chunk adds into the store the forces on its rows and on partners inside
  * it, and into a buffer of its own those on partners in later chunks; after
  * a barrier the owner of each grain adds the earlier chunks' buffers over the
@@ -26,7 +26,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "gf_sim_internal.h"
+#include "contact/gf_nlist.h"
 #include "gf_test.h"
 #include "gf_test_sim.h"
 
@@ -35,7 +35,7 @@ static gf_sim *from_checkpoint(gf_ctx *ctx, const gf_run_spec *spec, int chunks,
     gf_sim *s = NULL;
     GF_CHECK_OK(gf_test_sim_restart(ctx, spec, chunks, path, &s), ctx);
     if (s)
-        GF_CHECK_OK(gf_sim_compute_forces(s), ctx);
+        GF_CHECK_OK(gf_sim_evaluate_forces(s), ctx);
     return s;
 }
 
@@ -105,28 +105,33 @@ int main(void)
     gf_sim *one = from_checkpoint(&ctx, &bed, 1, path);
     if (!one)
         return gf_test_finish();
-    printf("1 chunk: %zu grains, %zu contacts\n", one->p->n_local, one->n_contacts);
+    size_t one_contacts;
+    gf_sim_contact_stats(one, &one_contacts, NULL);
+    printf("1 chunk: %zu grains, %zu contacts\n", gf_sim_particles(one)->n_local, one_contacts);
     const int chunks[] = {2, 3, 4, 7, 16};
     for (size_t k = 0; k < sizeof chunks / sizeof *chunks; ++k) {
         gf_sim *s = from_checkpoint(&ctx, &bed, chunks[k], path);
         if (!s)
             continue;
-        const gf_nlist *nl = s->nl;
+        const gf_nlist *nl = gf_sim_neighbour_list(s);
+        size_t n_contacts;
+        gf_sim_contact_stats(s, &n_contacts, NULL);
         size_t missing = partners_outside_runs(nl), reached = 0;
         for (size_t r = 0; r < nl->n_reach_runs; ++r)
             reached += nl->reach_run[2 * r + 1] - nl->reach_run[2 * r];
-        double df = largest_difference(one->p, s->p, 0), dt = largest_difference(one->p, s->p, 1);
+        double df = largest_difference(gf_sim_particles(one), gf_sim_particles(s), 0),
+               dt = largest_difference(gf_sim_particles(one), gf_sim_particles(s), 1);
         printf("%d chunks: boundary rows", chunks[k]);
         for (int c = 1; c < nl->n_chunks; ++c)
             printf(" %zu", nl->chunk_row[c]);
         printf("; %zu reach runs over %zu grains; %zu contacts; force difference %.2e, torque %.2e (of the largest)\n",
-               nl->n_reach_runs, reached, s->n_contacts, df, dt);
+               nl->n_reach_runs, reached, n_contacts, df, dt);
         gf_test_check(missing == 0, __FILE__, __LINE__, "%d chunks: every partner beyond a chunk in a reach run (%zu not)",
                       chunks[k], missing);
         gf_test_check(boundaries_on_lines(nl), __FILE__, __LINE__, "%d chunks: boundaries and reach runs on multiples of 8 rows",
                       chunks[k]);
-        gf_test_check(s->n_contacts == one->n_contacts, __FILE__, __LINE__, "%d chunks: %zu contacts, one chunk %zu",
-                      chunks[k], s->n_contacts, one->n_contacts);
+        gf_test_check(n_contacts == one_contacts, __FILE__, __LINE__, "%d chunks: %zu contacts, one chunk %zu",
+                      chunks[k], n_contacts, one_contacts);
         gf_test_check(df < 1e-12 && dt < 1e-12, __FILE__, __LINE__,
                       "%d chunks: forces %.2e and torques %.2e of the largest from one chunk's (< 1e-12)", chunks[k], df,
                       dt);

@@ -1,5 +1,5 @@
 /*
- * The near list (engine/gf_sim_near.c): the blocked pair loop scans only the
+ * The near list (engine/sim/gf_near_list.c): the blocked pair loop scans only the
  * neighbour pairs within a thinner skin, rebuilt when a grain has moved
  * half of it. A pair it leaves out cannot reach the contact (or
  * lubrication) range before the next near build, so the run must be

@@ -1,8 +1,8 @@
 /*
  * The blocked, vectorised pair loop of the dry linear law (engine/
- * gf_sim_pairs.c: scan, force pass in an AVX-512 clone where the machine has
+ * gf_pairs_blocked.c: scan, force pass in an AVX-512 clone where the machine has
  * it, scatter in list order) gives the bits of the scalar loop
- * (engine/gf_sim_forces.c) it replaces: same expressions, same sums.
+ * (engine/sim/gf_forces.c) it replaces: same expressions, same sums.
  *
  * Claim: from the same start, the two loops (gf_sim_tuning.generic_pair_loop
  * 0 and 1) leave bitwise identical positions, velocities and spins

@@ -1,6 +1,6 @@
 /*
  * The spatial sort of the store, with two threads, makes the cut between the
- * two threads' chunks a plane (engine/gf_sim_sort.c): layers of cells across
+ * two threads' chunks a plane (engine/sim/gf_sort.c): layers of cells across
  * the axis of smallest cross-section, Morton order within a layer.
  *
  * What matters for speed on two cores is how many grains of the second chunk
@@ -34,7 +34,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "gf_sim_internal.h"
+#include "contact/gf_nlist.h"
 #include "gf_test.h"
 #include "gf_test_sim.h"
 
@@ -46,7 +46,7 @@ typedef struct cut_reach {
 
 static cut_reach reach_across(const gf_sim *s, size_t split)
 {
-    const gf_nlist *nl = s->nl;
+    const gf_nlist *nl = gf_sim_neighbour_list(s);
     cut_reach r = {split, 0, 0};
     char *seen = calloc(nl->n, 1), *line = calloc(nl->n / 8 + 1, 1); /* 8 doubles a 64-byte line */
     for (size_t k = 0; k < nl->row_start[split]; ++k) {
@@ -95,15 +95,15 @@ static void check_bed(gf_ctx *ctx, const char *what, double width_over_D)
         return;
     }
     /* the same split for both orders: the two-thread list's chunk boundary */
-    size_t split = slab->nl->chunk_row[1];
+    size_t split = gf_sim_neighbour_list(slab)->chunk_row[1];
     cut_reach m = reach_across(morton, split), c = reach_across(slab, split);
     printf("%s: split at %zu of %zu; chunk 1 grains read from chunk 0: Morton %zu on %zu lines, layers %zu on %zu "
-           "lines\n", what, split, slab->nl->n, m.grains, m.lines, c.grains, c.lines);
+           "lines\n", what, split, gf_sim_neighbour_list(slab)->n, m.grains, m.lines, c.grains, c.lines);
     gf_test_check(c.grains > 0 && c.grains <= m.grains, __FILE__, __LINE__,
                   "%s: grains across the cut %zu <= Morton's %zu", what, c.grains, m.grains);
     gf_test_check((double)c.lines <= 0.6 * (double)m.lines, __FILE__, __LINE__,
                   "%s: cache lines of the grains across the cut %zu <= 0.6 x Morton's %zu", what, c.lines, m.lines);
-    gf_test_check(ids_are_permutation(slab->p) && ids_are_permutation(morton->p), __FILE__, __LINE__,
+    gf_test_check(ids_are_permutation(gf_sim_particles(slab)) && ids_are_permutation(gf_sim_particles(morton)), __FILE__, __LINE__,
                   "%s: the sorted stores hold every grain once", what);
     gf_sim_destroy(&morton), gf_sim_destroy(&slab);
 }
@@ -150,7 +150,7 @@ static void check_restart_on_two_threads(gf_ctx *ctx, int immersed)
     gf_run_spec_set_param(ctx, &bed, "settle_time_nd", 0.0); /* the checkpoint overwrites the bed */
     gf_sim *two = sim_with(ctx, &bed, 2, 20, path), *kept = sim_with(ctx, &bed, 2, -1, path);
     if (two && kept) {
-        size_t split = two->nl->chunk_row[1];
+        size_t split = gf_sim_neighbour_list(two)->chunk_row[1];
         cut_reach m = reach_across(one, split), c = reach_across(two, split), k = reach_across(kept, split);
         printf("%s restart on 2 threads: lines across the cut at %zu: Morton %zu, re-sorted %zu, sorting off %zu\n",
                immersed ? "immersed" : "dry", split, m.lines, c.lines, k.lines);
@@ -158,10 +158,10 @@ static void check_restart_on_two_threads(gf_ctx *ctx, int immersed)
                       "restart on 2 threads: cache lines across the cut %zu <= 0.6 x Morton's %zu", c.lines, m.lines);
         gf_test_check((double)k.lines > 0.6 * (double)m.lines, __FILE__, __LINE__,
                       "restart with sorting off keeps the Morton order (%zu lines against %zu)", k.lines, m.lines);
-        gf_test_check(ids_are_permutation(two->p), __FILE__, __LINE__, "re-sorted store holds every grain once");
+        gf_test_check(ids_are_permutation(gf_sim_particles(two)), __FILE__, __LINE__, "re-sorted store holds every grain once");
         GF_CHECK_OK(gf_sim_advance(one, 300), ctx);
         GF_CHECK_OK(gf_sim_advance(two, 300), ctx);
-        double d = largest_offset(one->p, two->p, bed.grains.diameter_m);
+        double d = largest_offset(gf_sim_particles(one), gf_sim_particles(two), bed.grains.diameter_m);
         printf("  300 steps on: largest offset from the one-thread run %.3g D\n", d);
         gf_test_check(d < 1e-9, __FILE__, __LINE__, "re-sorted restart follows the run (offset %.3g D < 1e-9 D)", d);
     }

@@ -3,7 +3,7 @@
  * inside its force region: each thread adds the held fluid forces to its
  * grains, applies the closing half-kick and the next step's opening
  * half-kick and drift as soon as its chunk's contact forces are complete
- * (engine/gf_sim.c: dem_step; engine/gf_sim_forces.c). A step run alone (one
+ * (engine/sim/gf_step.c: fused_step; engine/sim/gf_forces.c). A step run alone (one
  * step per call) takes the separate path: fluid forces in a serial pass,
  * kicks and drift in a region of their own at the next step.
  *

@@ -70,9 +70,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "coupling/gf_coupling.h"
 #include "gf_sim.h"
-#include "gf_sim_internal.h" /* DEM substeps per fluid step, for the cost line */
+#include "coupling/gf_coupling.h"
 #include "scenes/gf_scene.h"
 #include "scenes/gf_measure.h"
 #include "scene_runner.h"      /* runner_mean_sd */
@@ -223,13 +222,14 @@ static void kinetics(const gf_particles *p, size_t n_mob, double *ecx, double *r
  */
 static double basal_pressure(gf_sim *sim, double x)
 {
-    if (!sim->coupling)
+    gf_coupling *coupling = gf_sim_coupling(sim);
+    if (!coupling)
         return NAN;
     int n[3];
     double lo[3], h[3], sum = 0.0;
     const gf_var_info *vars;
     const double *const *f;
-    gf_coupling_fields(sim->coupling, n, lo, h, &vars, &f);
+    gf_coupling_fields(coupling, n, lo, h, &vars, &f);
     for (int j = 0; j < n[2]; ++j) {
         double xg[3] = {x, 0.0, lo[2] + (j + 0.5) * h[2]};
         sum += gf_sim_excess_pressure_Pa(sim, xg);
@@ -350,7 +350,7 @@ static int sediment_behind_gate(gf_sim *sim, double *t_release)
             p->vx_m_s[i] = p->vy_m_s[i] = p->vz_m_s[i] = 0.0;
             p->wx_rad_s[i] = p->wy_rad_s[i] = p->wz_rad_s[i] = 0.0;
         }
-    if (gf_sim_rebuild(sim) != GF_OK ||
+    if (gf_sim_rebuild_neighbours(sim) != GF_OK ||
         gf_sim_advance(sim, (long)ceil(sediment_T_visq() * t_visq_s() / gf_sim_dt_s(sim))) != GF_OK)
         return 1;
     gf_measure_domain d;
@@ -454,7 +454,7 @@ static int run_collapse(const run_args *a, int verbose, collapse_run *r)
     const gf_timers *tm = gf_sim_timers(sim);
     r->t_fluid = tm->elapsed_s[GF_T_FLUID], r->t_coupling = tm->elapsed_s[GF_T_COUPLING];
     r->t_dem = tm->elapsed_s[GF_T_FORCE] + tm->elapsed_s[GF_T_NEIGHBOUR] + tm->elapsed_s[GF_T_INTEGRATE];
-    r->steps = gf_sim_step_count(sim), r->substeps = sim->n_substeps;
+    r->steps = gf_sim_step_count(sim), r->substeps = gf_sim_fluid_substeps(sim);
     gf_sim_destroy(&sim);
     return 0;
 }

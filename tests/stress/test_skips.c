@@ -1,5 +1,5 @@
 /*
- * Skips decided from the spec and the scene (issue #6, engine/gf_sim_skips.c).
+ * Skips decided from the spec and the scene (issue #6, engine/sim/gf_skips.c).
  *
  * Claims:
  *   1. mu_c = 0 on grains and walls: GF_SKIP_TANGENTIAL is set and named in

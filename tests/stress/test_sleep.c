@@ -1,5 +1,5 @@
 /*
- * Sleeping grains (issue #6, engine/gf_sim_sleep.c), measured on the dry
+ * Sleeping grains (issue #6, engine/sim/gf_sleep.c), measured on the dry
  * column collapse a = 1, R0 = 16 D (the set-up of tests/scenes/
  * test_column_collapse.c: eps = 0.5, mu_c = 1, t_c = 0.02 sqrt(D/g)), run to
  * t = 40 sqrt(D/g), about 7 free-fall times T0 = sqrt(2 H0/g): the deposit

@@ -1,6 +1,6 @@
 /*
  * gf-bench-skips: what each skip of issue #6 saves and what it changes,
- * measured side by side (engine/gf_sim_skips.c, engine/gf_stiffness_rule.h).
+ * measured side by side (engine/sim/gf_skips.c, engine/gf_stiffness_rule.h).
  * Every case runs the same scene with the skip off and on, alternating
  * off/on pairs back to back (the machine may be shared), one thread; the
  * cost is the process CPU time of gf_sim_create + the run (best of the

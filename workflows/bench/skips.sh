@@ -1,5 +1,5 @@
 #!/bin/sh
-# Side-by-side measurement of the skips of issue #6 (engine/gf_sim_skips.c)
+# Side-by-side measurement of the skips of issue #6 (engine/sim/gf_skips.c)
 # and of the pressure-based contact stiffness (engine/gf_stiffness_rule.h):
 # speed-up (process CPU time, best of the repeats, off/on pairs run back to
 # back) and the change in each scene's observable. Results: docs/notes/benchmarks.md.

@@ -72,7 +72,6 @@
 #include "fluid/gf_fluid_exact.h"
 #include "coupling/gf_coupling.h"
 #include "gf_sim.h"
-#include "gf_sim_internal.h" /* the coupling and the gauges, for the basal pore pressure */
 #include "scenes/gf_scene.h"
 
 /* CPU time of the process, s: the cost of a one-thread run, insensitive to
@@ -417,10 +416,8 @@ static gf_status immersed_spec(gf_ctx *ctx, const bench_knobs *k, uint64_t seed,
 /* Excess pressure at the scene's basal gauge `name` (Pa), 0 when absent. */
 static double gauge_Pa(gf_sim *sim, const char *name)
 {
-    for (int k = 0; k < sim->n_gauges; ++k)
-        if (strcmp(sim->gauges[k].name, name) == 0 && sim->coupling)
-            return gf_coupling_excess_pressure_Pa(sim->coupling, sim->gauges[k].x_m);
-    return 0.0;
+    double x_m[3];
+    return gf_sim_gauge_position(sim, name, x_m) && gf_sim_coupling(sim) ? gf_sim_excess_pressure_Pa(sim, x_m) : 0.0;
 }
 
 /* One collapse to IMM_END_T_VISQ; the gauge is read every 50 T_visq (as validate_collapse). */

@@ -1,7 +1,7 @@
 /*
  * Force evaluation of the step loop: grain-grain contacts and Brenner
- * lubrication over the Verlet half list, grain-wall contacts and lubrication,
- * and the neighbour-list rebuild.
+ * lubrication over the Verlet half list, grain-wall contacts and lubrication
+ * (the list itself is kept by gf_neighbours.c).
  *
  * Geometry (Izard 2014 §2.1.1, (2.4)-(2.6)): n = (x_i - x_j)/|x_i - x_j|
  * points from j to i, overlap delta = R_i + R_j - |x_i - x_j| > 0 in contact,
@@ -47,213 +47,6 @@
 #include "gf_sim_internal.h"
 #include "integrate/gf_integrate.h"
 
-gf_status gf_sim_reserve(gf_sim *s, size_t n)
-{
-    if (n <= s->ref_cap)
-        return GF_OK;
-    size_t cap = n + n / 4 + 16, stride = (size_t)s->n_walls + 1;
-    enum { n_arrays = 13 };
-    double **arr[n_arrays] = {&s->x_ref,    &s->y_ref,   &s->z_ref,       &s->vx_pred, &s->vy_pred,
-                              &s->vz_pred,  &s->inv_mass, &s->inv_inertia, &s->mobile,  &s->contact_inv_mass,
-                              &s->x_near,   &s->y_near,  &s->z_near};
-    void *old[n_arrays], *fresh[n_arrays];
-    for (int a = 0; a < n_arrays; ++a)
-        old[a] = *arr[a];
-    void *block = gf_soa_alloc(n_arrays, sizeof(double), cap, GF_SOA_LINE_SIM, fresh, old, s->ref_cap);
-    if (!block)
-        return GF_FAIL(s->ctx, GF_ERR_NOMEM, "sim: cannot allocate per-grain arrays for %zu grains", n);
-    for (int a = 0; a < n_arrays; ++a)
-        *arr[a] = fresh[a];
-    gf_soa_free(s->ref_block);
-    s->ref_block = block;
-    double *h = realloc(s->wall_hist, cap * stride * 3 * sizeof(double));
-    if (!h)
-        return GF_FAIL(s->ctx, GF_ERR_NOMEM, "sim: cannot allocate wall history for %zu grains", n);
-    /* new grains start without wall history */
-    memset(h + s->ref_cap * stride * 3, 0, (cap - s->ref_cap) * stride * 3 * sizeof(double));
-    s->wall_hist = h;
-    s->ref_cap = s->wall_hist_cap = cap;
-    return GF_OK;
-}
-
-gf_status gf_sim_relayout_walls(gf_sim *s, int n_walls_old)
-{
-    size_t cap = s->ref_cap, so = (size_t)n_walls_old + 1, sn = (size_t)s->n_walls + 1;
-    if (cap == 0)
-        return GF_OK;
-    double *h = calloc(cap * sn * 3, sizeof(double));
-    if (!h)
-        return GF_FAIL(s->ctx, GF_ERR_NOMEM, "sim: cannot allocate wall history");
-    for (size_t i = 0; i < cap; ++i)
-        memcpy(&h[3 * i * sn], &s->wall_hist[3 * i * so], 3 * (size_t)n_walls_old * sizeof(double));
-    free(s->wall_hist);
-    s->wall_hist = h;
-    return GF_OK;
-}
-
-
-
-static gf_nlist_geom list_geom(const gf_sim *s)
-{
-    gf_nlist_geom g;
-    for (int a = 0; a < 3; ++a) {
-        g.lo_m[a] = s->lo_m[a];
-        g.hi_m[a] = s->hi_m[a];
-        g.periodic[a] = s->periodic[a];
-    }
-    g.extra_m = s->extra_m;
-    g.skin_m = s->skin_m;
-    return g;
-}
-
-/* The grains each wall can touch before the next build: gap to the wall at
- * the build positions below skin + lubrication range (a grain moves less
- * than skin/2 between builds, so one farther away stays beyond the contact
- * and lubrication range; its wall history is cleared here, as the force
- * loop would at its next evaluation). Saves the wall loop from reading every
- * grain's position and history at every step. */
-static gf_status build_wall_candidates(gf_sim *s)
-{
-    const gf_particles *p = s->p;
-    const size_t n = p->n_local, stride = (size_t)s->n_walls + 1;
-    const double reach = s->skin_m + (s->lubrication ? s->lub_cutoff_m : 0.0);
-    s->wall_cand_walls = -1;
-    size_t m = 0;
-    for (int w = 0; w < s->n_walls; ++w) {
-        const double *nw = s->walls[w].normal, *pw = s->walls[w].point_m;
-        s->wall_cand_start[w] = m;
-        for (size_t i = 0; i < n; ++i) {
-            double gap = (s->x_ref[i] - pw[0]) * nw[0] + (s->y_ref[i] - pw[1]) * nw[1] + (s->z_ref[i] - pw[2]) * nw[2] -
-                         p->radius_m[i];
-            if (gap >= reach) {
-                double *h = &s->wall_hist[3 * (i * stride + (size_t)w)];
-                h[0] = h[1] = h[2] = 0.0;
-                continue;
-            }
-            if (m == s->wall_cand_cap) {
-                size_t cap = m + m / 2 + 1024;
-                int32_t *c = realloc(s->wall_cand, cap * sizeof *c);
-                if (!c)
-                    return GF_FAIL(s->ctx, GF_ERR_NOMEM, "sim: cannot allocate wall candidates (%zu)", cap);
-                s->wall_cand = c, s->wall_cand_cap = cap;
-            }
-            s->wall_cand[m++] = (int32_t)i;
-        }
-    }
-    s->wall_cand_start[s->n_walls] = m;
-    s->wall_cand_walls = s->n_walls;
-    s->wall_cand_grains = n;
-    return GF_OK;
-}
-
-/* The walls each grain touches at the build positions, for the balance of
- * the threads' chunks (a floor's contacts all fall in the bottom chunk).
- * NULL when there is one chunk or no wall. */
-static gf_status count_wall_contacts(gf_sim *s, const uint8_t **out)
-{
-    const gf_particles *p = s->p;
-    const size_t n = p->n_local;
-    *out = NULL;
-    if (s->n_threads < 2 || s->n_walls == 0)
-        return GF_OK;
-    if (n > s->wall_contacts_cap) {
-        uint8_t *c = realloc(s->wall_contacts, n);
-        if (!c)
-            return GF_FAIL(s->ctx, GF_ERR_NOMEM, "sim: cannot allocate wall contact counts (%zu)", n);
-        s->wall_contacts = c, s->wall_contacts_cap = n;
-    }
-    memset(s->wall_contacts, 0, n);
-    for (int w = 0; w < s->n_walls; ++w) {
-        const double *nw = s->walls[w].normal, *pw = s->walls[w].point_m;
-        if (!s->walls[w].active)
-            continue;
-        for (size_t i = 0; i < n; ++i) {
-            double gap = (s->x_ref[i] - pw[0]) * nw[0] + (s->y_ref[i] - pw[1]) * nw[1] + (s->z_ref[i] - pw[2]) * nw[2] -
-                         p->radius_m[i];
-            s->wall_contacts[i] += gap < 0.0;
-        }
-    }
-    *out = s->wall_contacts;
-    return GF_OK;
-}
-
-gf_status gf_sim_rebuild_from_ref(gf_sim *s)
-{
-    gf_particles *p = s->p;
-    gf_nlist_geom g = list_geom(s);
-    GF_TRY(gf_sim_reserve(s, p->n_local));
-    const uint8_t *wall_contacts;
-    GF_TRY(count_wall_contacts(s, &wall_contacts));
-    GF_TRY(gf_nlist_build(s->ctx, s->nl, &g, p->n_local, s->x_ref, s->y_ref, s->z_ref, p->radius_m, p->id,
-                          wall_contacts, s->n_threads));
-    /* flags (glued, sleeping) and masses are read here, at every build */
-    gf_integrate_factors_fill(p, p->n_local, s->inv_mass, s->inv_inertia, s->mobile);
-    if (s->rotation_locked)
-        memset(s->inv_inertia, 0, p->n_local * sizeof *s->inv_inertia);
-    for (size_t i = 0; i < p->n_local; ++i)
-        s->contact_inv_mass[i] = (p->flags[i] & GF_P_GLUED) ? 0.0 : 1.0 / p->mass_kg[i];
-    /* per-pair effective mass and damping scale sqrt(m* k_n): constant between
-     * builds, so the contact loop does no division or root for them */
-    const gf_nlist *nl = s->nl;
-    if (nl->n_pairs > s->pair_cap) {
-        size_t cap = nl->n_pairs + nl->n_pairs / 4 + 64;
-        double *a = realloc(s->pair_meff, cap * sizeof(double));
-        if (a)
-            s->pair_meff = a;
-        double *b = a ? realloc(s->pair_sqrt_mk, cap * sizeof(double)) : NULL;
-        if (!b)
-            return GF_FAIL(s->ctx, GF_ERR_NOMEM, "sim: cannot allocate pair arrays (%zu pairs)", cap);
-        s->pair_sqrt_mk = b;
-        s->pair_cap = cap;
-    }
-    for (size_t i = 0; i < nl->n; ++i)
-        for (size_t k = nl->row_start[i]; k < nl->row_start[i + 1]; ++k) {
-            double inv = s->contact_inv_mass[i] + s->contact_inv_mass[nl->j[k]];
-            double m = inv > 0.0 ? 1.0 / inv : 0.0; /* two glued grains never interact */
-            s->pair_meff[k] = m;
-            s->pair_sqrt_mk[k] = sqrt(m * s->cp.k_n_N_m);
-        }
-    s->need_build = 0;
-    s->near.valid = s->near.held = 0; /* written back before the build; its pairs were the old list's */
-    GF_TRY(gf_sim_near_reserve(s));
-    return build_wall_candidates(s);
-}
-
-static gf_status rebuild(gf_sim *s, int scheduled)
-{
-    gf_particles *p = s->p;
-    gf_sim_near_flush(s); /* the build carries the list's history over */
-    GF_TRY(gf_sim_reserve(s, p->n_local));
-    gf_nlist_geom g = list_geom(s);
-    gf_nlist_wrap(&g, p->n_local, p->x_m, p->y_m, p->z_m);
-    if (scheduled) { /* spatial order (gf_sim_sort.c): on a schedule of the rebuild count alone */
-        if (gf_sim_sorts(s) && s->n_rebuilds % s->sort_every == 0)
-            GF_TRY(gf_sim_sort_grains(s));
-        s->n_rebuilds++;
-    }
-    memcpy(s->x_ref, p->x_m, p->n_local * sizeof(double));
-    memcpy(s->y_ref, p->y_m, p->n_local * sizeof(double));
-    memcpy(s->z_ref, p->z_m, p->n_local * sizeof(double));
-    return gf_sim_rebuild_from_ref(s);
-}
-
-gf_status gf_sim_rebuild(gf_sim *s)
-{
-    return rebuild(s, 1);
-}
-
-gf_status gf_sim_rebuild_unscheduled(gf_sim *s)
-{
-    return rebuild(s, 0);
-}
-
-static inline void cross(const double a[3], const double b[3], double c[3])
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
 /* Grain-grain pairs of rows [i0, i1) into the accumulators f[0..5] (fx..tz).
  * Specialised on the law: linear (the seeds' law, inlined) or any table row;
  * normal_only: the linear normal law alone (mu_c = 0, GF_SKIP_TANGENTIAL). */
@@ -283,7 +76,7 @@ static inline __attribute__((always_inline)) void pair_rows_impl(gf_sim *s, size
             const size_t j = (size_t)nl->j[k];
             /* two grains that do not move (sleeping or glued, at least one
              * sleeping): neither force is integrated; the pair keeps its
-             * history for when one of them wakes (gf_sim_sleep.c) */
+             * history for when one of them wakes (gf_sleep.c) */
             if (frozen_i && (p->flags[j] & (GF_P_GLUED | GF_P_SLEEPING)) &&
                 ((p->flags[i] | p->flags[j]) & GF_P_SLEEPING))
                 continue;
@@ -318,7 +111,7 @@ static inline __attribute__((always_inline)) void pair_rows_impl(gf_sim *s, size
                 double rw[3] = {ri * p->wx_rad_s[i] + R[j] * p->wx_rad_s[j], ri * p->wy_rad_s[i] + R[j] * p->wy_rad_s[j],
                                 ri * p->wz_rad_s[i] + R[j] * p->wz_rad_s[j]};
                 double rwn[3];
-                cross(rw, g.n, rwn);
+                gf_cross(rw, g.n, rwn);
                 g.v_rel_m_s[0] = vt[0] - rwn[0], g.v_rel_m_s[1] = vt[1] - rwn[1], g.v_rel_m_s[2] = vt[2] - rwn[2];
                 /* glued grains: infinite mass, 1/m = 0 (contact_inv_mass) */
                 g.m_eff_kg = pair_meff[k];
@@ -332,7 +125,7 @@ static inline __attribute__((always_inline)) void pair_rows_impl(gf_sim *s, size
                     kernel(&cp, &g, dt, h, &f_n, f_t);
                 F[0] = f_n * g.n[0] + f_t[0], F[1] = f_n * g.n[1] + f_t[1], F[2] = f_n * g.n[2] + f_t[2];
                 double nxt[3];
-                cross(g.n, f_t, nxt);
+                gf_cross(g.n, f_t, nxt);
                 txi -= ri * nxt[0], tyi -= ri * nxt[1], tzi -= ri * nxt[2];
                 fj[3][j] -= R[j] * nxt[0], fj[4][j] -= R[j] * nxt[1], fj[5][j] -= R[j] * nxt[2];
                 n_contacts++;
@@ -373,128 +166,6 @@ static void pair_rows_linear_normal(gf_sim *s, size_t i0, size_t i1, double *con
 static void pair_rows_table(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_sim_accum *acc)
 {
     pair_rows_impl(s, i0, i1, f, acc, 0, 0);
-}
-
-/* First entry >= i of the ascending candidates [k0, k1). */
-static size_t first_candidate(const int32_t *c, size_t k0, size_t k1, size_t i)
-{
-    while (k0 < k1) {
-        size_t mid = k0 + (k1 - k0) / 2;
-        if ((size_t)c[mid] < i)
-            k0 = mid + 1;
-        else
-            k1 = mid;
-    }
-    return k0;
-}
-
-/* Grain-wall contacts of grains [i0, i1): the wall's candidates of the last
- * build in that range (all grains when the candidates are stale: a wall or a
- * grain added since). Same grains in the same order either way. */
-static void wall_rows(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_sim_accum *acc)
-{
-    const gf_particles *p = s->p;
-    const double lub_cut = s->lubrication ? s->lub_cutoff_m : 0.0;
-    const size_t stride = (size_t)s->n_walls + 1;
-    const int listed = s->wall_cand_walls == s->n_walls && s->wall_cand_grains == p->n_local;
-    for (int w = 0; w < s->n_walls; ++w) {
-        const gf_wall *wl = &s->walls[w];
-        const double *nw_plane = wl->normal, *pw = wl->point_m;
-        size_t k = listed ? first_candidate(s->wall_cand, s->wall_cand_start[w], s->wall_cand_start[w + 1], i0) : i0;
-        const size_t k_end = listed ? s->wall_cand_start[w + 1] : i1;
-        for (; k < k_end; ++k) {
-            const size_t i = listed ? (size_t)s->wall_cand[k] : k;
-            if (i >= i1)
-                break;
-            double *h = &s->wall_hist[3 * (i * stride + (size_t)w)];
-            double ri = p->radius_m[i], c[3] = {p->x_m[i], p->y_m[i], p->z_m[i]}, n_loc[3];
-            double dist = wl->has_hole ? gf_wall_distance(wl, c, n_loc)
-                                       : (c[0] - pw[0]) * nw_plane[0] + (c[1] - pw[1]) * nw_plane[1] +
-                                             (c[2] - pw[2]) * nw_plane[2];
-            const double *nw = wl->has_hole ? n_loc : nw_plane;
-            double overlap = ri - dist;
-            if (!wl->active || (p->flags[i] & GF_P_GLUED) || overlap <= -lub_cut) {
-                if (h[0] != 0.0 || h[1] != 0.0 || h[2] != 0.0)
-                    h[0] = h[1] = h[2] = 0.0;
-                continue;
-            }
-            double v[3] = {p->vx_m_s[i], p->vy_m_s[i], p->vz_m_s[i]};
-            double F[3] = {0.0, 0.0, 0.0};
-            double vn = s->vx_pred[i] * nw[0] + s->vy_pred[i] * nw[1] + s->vz_pred[i] * nw[2];
-            if (overlap > 0.0) {
-                gf_contact_geom g;
-                g.v_n_m_s = vn;
-                g.n[0] = nw[0], g.n[1] = nw[1], g.n[2] = nw[2];
-                g.overlap_m = overlap;
-                double rw[3] = {ri * p->wx_rad_s[i], ri * p->wy_rad_s[i], ri * p->wz_rad_s[i]}, rwn[3];
-                cross(rw, g.n, rwn);
-                g.v_rel_m_s[0] = v[0] - rwn[0], g.v_rel_m_s[1] = v[1] - rwn[1], g.v_rel_m_s[2] = v[2] - rwn[2];
-                g.m_eff_kg = p->mass_kg[i];
-                g.sqrt_mk = sqrt(p->mass_kg[i] * s->cp.k_n_N_m);
-                g.mu = wl->friction;
-                double f_n, f_t[3], nxt[3];
-                s->law->kernel(&s->cp, &g, s->dt_s, h, &f_n, f_t);
-                F[0] = f_n * nw[0] + f_t[0], F[1] = f_n * nw[1] + f_t[1], F[2] = f_n * nw[2] + f_t[2];
-                cross(g.n, f_t, nxt);
-                f[3][i] -= ri * nxt[0], f[4][i] -= ri * nxt[1], f[5][i] -= ri * nxt[2];
-                acc->n_contacts++;
-                if (overlap > acc->max_overlap_m)
-                    acc->max_overlap_m = overlap;
-            } else if (h[0] != 0.0 || h[1] != 0.0 || h[2] != 0.0) {
-                h[0] = h[1] = h[2] = 0.0;
-            }
-            if (lub_cut > 0.0 && (s->lub_in_overlap || overlap <= 0.0)) {
-                double gap = overlap > 0.0 ? 0.0 : -overlap;
-                double c = -gf_lubrication_damping(s->dt_s, 6.0 * M_PI * s->lub_eta_Pa_s * ri * ri / (gap + s->lub_roughness_m),
-                                        p->mass_kg[i]) * vn;
-                F[0] += c * nw[0], F[1] += c * nw[1], F[2] += c * nw[2];
-            }
-            f[0][i] += F[0], f[1][i] += F[1], f[2][i] += F[2];
-            acc->wall_force_N[w][0] -= F[0], acc->wall_force_N[w][1] -= F[1], acc->wall_force_N[w][2] -= F[2];
-        }
-    }
-}
-
-/* The step's end and the next one's drift (gf_sim_finish_range) for the
- * grains of [i0, i1) outside the reach runs (in_runs 0; all of them with one
- * chunk, which has none) or inside them (1). The runs start on cache lines,
- * and so do the chunks and the pair loop's row batches. */
-static gf_drift_d2 finish_runs(gf_sim *s, size_t i0, size_t i1, int in_runs)
-{
-    const gf_nlist *nl = s->nl;
-    const size_t *run = nl->reach_run, n_runs = nl->n_reach_runs;
-    size_t r = 0, hi = n_runs; /* the first run that ends after i0 (row batches call this often) */
-    while (r < hi) {
-        size_t mid = r + (hi - r) / 2;
-        if (run[2 * mid + 1] <= i0)
-            r = mid + 1;
-        else
-            hi = mid;
-    }
-    gf_drift_d2 d2[2] = {{0.0, 0.0}, {0.0, 0.0}};
-    for (size_t at = i0; at < i1; ++r) {
-        size_t b = r < n_runs && run[2 * r] < i1 ? run[2 * r] : i1;
-        size_t e = r < n_runs && run[2 * r + 1] < i1 ? run[2 * r + 1] : i1;
-        b = b > at ? b : at;
-        const size_t from = in_runs ? b : at, to = in_runs ? e : b;
-        if (from < to) {
-            d2[1] = gf_sim_finish_range(s, from, to);
-            d2[0] = gf_drift_d2_max(d2, 2);
-        }
-        at = e > at ? e : at;
-        if (r >= n_runs)
-            break;
-    }
-    return d2[0];
-}
-
-gf_drift_d2 gf_sim_finish_rows(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_sim_accum *acc)
-{
-    wall_rows(s, i0, i1, f, acc);
-    const double t0 = gf_wtime(); /* two clock reads per batch of >= 64 rows: no measurable cost (docs/notes/benchmarks.md) */
-    const gf_drift_d2 d2 = finish_runs(s, i0, i1, 0);
-    acc->finish_s += gf_wtime() - t0;
-    return d2;
 }
 
 static gf_status reserve_accumulators(gf_sim *s, size_t n)
@@ -589,13 +260,13 @@ static void run_chunk(gf_sim *s, int c, double *const store[6], size_t n, unsign
         /* a step that ends here, on the thread that finishes the chunk: the
          * grains no earlier chunk reaches are finished as their rows complete
          * (their forces are then whole, and no other row reads them) */
-        a->finished = s->drift_with_forces && (s->nl->n_chunks == 1 || own);
+        a->finished = s->stepper.fuse && (s->nl->n_chunks == 1 || own);
         a->finished_d2 = gf_sim_pair_rows_blocked_linear(s, i0, i1, store, a, a->finished);
     }
     else
         pair_rows_table(s, i0, i1, store, a);
     if (!a->finished)
-        wall_rows(s, i0, i1, store, a);
+        gf_sim_wall_rows(s, i0, i1, store, a);
     atomic_store_explicit(&a->pairs_done, count, memory_order_release);
 }
 
@@ -618,10 +289,10 @@ static gf_drift_d2 complete_chunks(gf_sim *s, int t, int m, int drift, double *c
     if (drift && m == nc && m > 1) {
         gf_drift_d2 d2[2];
         const size_t lo = s->nl->chunk_row[t], hi = s->nl->chunk_row[t + 1];
-        d2[0] = s->acc[t].finished ? s->acc[t].finished_d2 : finish_runs(s, lo, hi, 0);
+        d2[0] = s->acc[t].finished ? s->acc[t].finished_d2 : gf_sim_finish_runs(s, lo, hi, 0);
         wait_for_earlier_chunks(s, t, count);
         add_from_earlier_chunks(s, t, store);
-        d2[1] = finish_runs(s, lo, hi, 1);
+        d2[1] = gf_sim_finish_runs(s, lo, hi, 1);
         return gf_drift_d2_max(d2, 2);
     }
     if (nc > 1) {
@@ -666,17 +337,14 @@ gf_status gf_sim_compute_forces(gf_sim *s)
         GF_TRY(gf_sim_rebuild(s));
     GF_TRY(reserve_accumulators(s, n));
     GF_TRY(gf_sim_reserve(s, n));
-    if (!s->vp_valid) { /* not called from a step: the dashpot sees v(t) itself */
+    gf_step_state *stp = &s->stepper;
+    if (stp->phase != GF_STEP_MOVED) { /* not called from a step: the dashpot sees v(t) itself */
         memcpy(s->vx_pred, p->vx_m_s, n * sizeof(double));
         memcpy(s->vy_pred, p->vy_m_s, n * sizeof(double));
         memcpy(s->vz_pred, p->vz_m_s, n * sizeof(double));
     }
-    s->vp_valid = 0;
-    if (s->forces_zeroed == 0)
-        gf_particles_clear_forces(p);
-    else /* the drift zeroed [0, forces_zeroed) on the threads that own them */
-        gf_particles_clear_forces_from(p, s->forces_zeroed);
-    s->forces_zeroed = 0;
+    /* the drift zeroed [0, n_moved) on the threads that own them */
+    gf_particles_clear_forces_from(p, stp->phase == GF_STEP_MOVED ? stp->n_moved : 0);
     /* chunk c of the list (cost-balanced rows) accumulates into the store,
      * and its partners in later chunks into buffer c, added to them in chunk
      * order (open_chunk, add_from_earlier_chunks). The result depends on the
@@ -684,7 +352,7 @@ gf_status gf_sim_compute_forces(gf_sim *s)
      * actually run: small systems run the chunks serially, which avoids
      * fork/join costs that exceed the work below ~1000 grains. */
     double *store[6] = {p->fx_N, p->fy_N, p->fz_N, p->tx_N_m, p->ty_N_m, p->tz_N_m};
-    const int drift = s->drift_with_forces;
+    const int drift = stp->fuse;
     gf_drift_d2 d2[GF_SIM_MAX_THREADS] = {{0.0, 0.0}};
     double drift_t0 = 0.0;
     int used = 1;
@@ -693,11 +361,8 @@ gf_status gf_sim_compute_forces(gf_sim *s)
 #pragma omp parallel num_threads(s->n_threads) if (s->n_threads > 1 && n >= GF_SIM_PARALLEL_MIN_GRAINS)
 #endif
     {
-#ifdef _OPENMP
-        int t = omp_get_thread_num(), m = omp_get_num_threads();
-#else
-        int t = 0, m = 1;
-#endif
+        const gf_team team = gf_sim_team();
+        const int t = team.t, m = team.m;
         for (int c = t; c < s->nl->n_chunks; c += m)
             run_chunk(s, c, store, n, count, m == s->nl->n_chunks);
         if (t == 0)
@@ -710,15 +375,14 @@ gf_status gf_sim_compute_forces(gf_sim *s)
         s->near.n_builds++;
     }
     if (!drift) {
-        s->forces_valid = 1;
+        stp->phase = GF_STEP_AT_T;
         return GF_OK;
     }
     /* F(t + dt) is spent (the drift zeroed it) and v* is the next step's */
-    s->drift_s = gf_wtime() - drift_t0 + s->acc[0].finish_s; /* thread 0's drift, after the loop or inside it */
-    s->drift_d2 = gf_drift_d2_max(d2, used);
-    s->drift_done = 1;
-    s->forces_valid = 0;
-    s->forces_zeroed = n;
-    s->vp_valid = 1;
+    stp->fused_s = gf_wtime() - drift_t0 + s->acc[0].finish_s; /* thread 0's drift, after the loop or inside it */
+    stp->fused_d2 = gf_drift_d2_max(d2, used);
+    stp->fused = 1;
+    stp->phase = GF_STEP_MOVED;
+    stp->n_moved = n;
     return GF_OK;
 }

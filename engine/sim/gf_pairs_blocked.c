@@ -14,7 +14,7 @@
  *      no dependence between candidates, vectorised (`omp simd`);
  *   3. scatter: the forces and torques are added to i (row sums) and
  *      subtracted from j in list order, exactly the order of the generic
- *      loop (gf_sim_forces.c), so the sums are bitwise the same.
+ *      loop (gf_forces.c), so the sums are bitwise the same.
  * Measured on the settled bed of 1e4 grains: docs/notes/benchmarks.md.
  * Glued and sleeping grains (rare) take the decisions of the generic loop in
  * the scan; pairs of two frozen grains are skipped with their history kept.
@@ -68,7 +68,7 @@ typedef struct row_sums {
 } row_sums;
 
 /* The pairs the loop runs over, and their per-pair data: the neighbour
- * list's, or the near list's (gf_sim_near.c), which holds the same fields
+ * list's, or the near list's (gf_near_list.c), which holds the same fields
  * for its pairs only. */
 typedef struct pair_view {
     const int32_t *i, *j;
@@ -324,7 +324,7 @@ gf_drift_d2 gf_sim_pair_rows_blocked_linear(gf_sim *s, size_t i0, size_t i1, dou
     const gf_nlist *nl = s->nl;
     size_t k = nl->row_start[i0], k1 = nl->row_start[i1];
     pair_view v = {nl->i, nl->j, nl->image, nl->touching, nl->hist, s->pair_sqrt_mk, s->pair_meff};
-    if (s->near.use) { /* the rows' near list (gf_sim_near.c), stored from the same offset */
+    if (s->near.use) { /* the rows' near list (gf_near_list.c), stored from the same offset */
         v = (pair_view){s->near.i, s->near.j, s->near.image, s->near.touching, s->near.hist, s->near.sqrt_mk,
                         s->near.meff};
         k1 = k + acc->near_len;

@@ -4,7 +4,7 @@
  * The neighbour list (contact/gf_nlist.h) holds every pair closer than
  * R_i + R_j + extra + skin, so that it stays valid until a grain has moved
  * skin/2: in a settled bed of 1e5 grains, 4.2 pairs per grain for 2.1
- * contacts. The blocked pair loop (gf_sim_pairs.c) scans instead the list's
+ * contacts. The blocked pair loop (gf_pairs_blocked.c) scans instead the list's
  * pairs closer than R_i + R_j + extra + near skin, taken from the list
  * itself (no cell search) with their per-pair data (rows, partners, images,
  * tangential history, contact flags, m* and sqrt(m* k_n)) whenever a grain

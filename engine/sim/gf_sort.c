@@ -212,11 +212,3 @@ int gf_sim_sorts(const gf_sim *s)
 {
     return s->sort_every > 0 && (s->p->n_local >= GF_SIM_SORT_MIN_GRAINS || s->opt.tuning.sort_every > 0);
 }
-
-gf_status gf_sim_sort(gf_sim *s)
-{
-    GF_TRY(gf_sim_reserve(s, s->p->n_local));
-    GF_TRY(gf_sim_sort_grains(s));
-    GF_TRY(gf_sim_rebuild(s));
-    return gf_sim_compute_forces(s);
-}
