@@ -75,6 +75,7 @@ typedef struct gf_resolved {
     int held_epoch_known;
     long n_steps;
     double fluid_s;
+    int n_threads;     /* of the fluid step: stencils, FFTs, immersed boundary (resolved_set_threads) */
 } gf_resolved;
 
 static gf_resolved *R_(gf_coupling *c) { return (gf_resolved *)c; }
@@ -191,6 +192,7 @@ static gf_status resolved_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_
     c->spec = *spec;
     c->setup = *setup;
     c->first_step = 1;
+    c->n_threads = 1;
     gf_status st = gf_fluid_create(ctx, &fp, &c->fluid);
     if (st != GF_OK) {
         free(c);
@@ -222,14 +224,20 @@ static gf_status resolved_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_
 
 /* --- limits ---------------------------------------------------------------------------------------- */
 
+/* sum_d max|u_d| / h_d over the faces and the grains. A max: the same on any number of threads (written
+ * as a comparison, not fmax, so that it vectorises: both skip a NaN the same way). */
 static double advective_rate(const gf_resolved *c, const gf_particles *p)
 {
     const gf_grid *g = &c->fluid->grid;
+    const int nt = c->n_threads;
     double s = 0.0;
     for (int a = 0; a < 3; ++a) {
         double m = 0.0;
-        for (size_t q = 0; q < g->n_faces[a]; ++q)
-            m = fmax(m, fabs(c->fluid->u[a][q]));
+        const double *u = c->fluid->u[a];
+        const long n = (long)g->n_faces[a];
+#pragma omp parallel for num_threads(nt) if (nt > 1) schedule(static) reduction(max : m)
+        for (long q = 0; q < n; ++q)
+            m = fabs(u[q]) > m ? fabs(u[q]) : m;
         if (p) {
             const double *v = a == 0 ? p->vx_m_s : a == 1 ? p->vy_m_s : p->vz_m_s;
             for (size_t i = 0; i < p->n_local; ++i)
@@ -300,7 +308,7 @@ static void output_fields(gf_resolved *c)
     gf_fluid *f = c->fluid;
     const gf_grid *g = &f->grid;
     const double *const as[3] = {c->alpha_sum[0], c->alpha_sum[1], c->alpha_sum[2]};
-    gf_ibm_cell_fraction(g, as, c->fields[RF_ALPHA]);
+    gf_ibm_cell_fraction(g, as, c->n_threads, c->fields[RF_ALPHA]);
     for (int a = 0; a < 3; ++a)
         gf_grid_cell_velocity(g, a, f->u[a], c->fields[RF_U + a]);
     memcpy(c->fields[RF_P], f->p_Pa, g->n_cells * sizeof(double));
@@ -423,6 +431,28 @@ static gf_status resolved_set_gravity(gf_coupling *cc, const double g[3])
     return GF_OK;
 }
 
+/* The fluid step on n_threads OpenMP threads (gf_sim calls it once, after create, with any count >= 1): the
+ * stencils and the immersed boundary give the same bits on any number (each face alone, sums in grain order,
+ * maxima), and so do the FFTs, planned by slabs for every count (gf_poisson_plan_set_threads): a run is
+ * bitwise the same on 1 or N threads. */
+static void resolved_set_threads(gf_coupling *cc, int n_threads)
+{
+    gf_resolved *c = R_(cc);
+    int n = n_threads > 1 ? n_threads : 1;
+    gf_status st = gf_poisson_plan_set_threads(c->ctx, c->fluid->poisson, n);
+    for (int a = 0; a < 3 && st == GF_OK; ++a)
+        st = gf_helmholtz_plan_set_threads(c->ctx, c->fluid->visc[a], n);
+    if (st != GF_OK) { /* FFTW could not plan threaded: stay on one thread, all plans serial */
+        gf_log(c->ctx, GF_LOG_WARN, "resolved tier: %s; the fluid step stays on one thread", c->ctx->last_msg);
+        n = 1;
+        gf_poisson_plan_set_threads(c->ctx, c->fluid->poisson, 1);
+        for (int a = 0; a < 3; ++a)
+            gf_helmholtz_plan_set_threads(c->ctx, c->fluid->visc[a], 1);
+    }
+    c->n_threads = n;
+    c->map.n_threads = n;
+}
+
 static double resolved_fluid_mass(const gf_coupling *cc)
 {
     const gf_resolved *c = CR(cc);
@@ -515,6 +545,7 @@ const gf_coupling_tier gf_coupling_tier_resolved = {
     .excess_pressure_Pa = resolved_excess_pressure,
     .fields = resolved_fields,
     .set_gravity = resolved_set_gravity,
+    .set_threads = resolved_set_threads,
     .save = resolved_save,
     .load = resolved_load,
     .fluid_flow_rate = resolved_flow_rate,

@@ -16,7 +16,7 @@
  * then slows the sphere down).
  *
  * Usage: resolved_settling [dx=D/dx] [box=W/D] [height=H/D] [end=t sqrt(g/D)] [cfl=c]
- *                          [early_dx=] [early_box=] [early_height=] [check=fast|full|none]
+ *                          [early_dx=] [early_box=] [early_height=] [threads=n] [check=fast|full|none]
  *   check=fast (the default suite, ~10 s of CPU): the early phase at D/dx = 12
  *     in a 4 D x 6 D box, the acceleration within 5 % of (2/3) g (the smoothed
  *     shell adds pi^2 a^2/R^2 of the volume to the added mass: -8 % at
@@ -40,6 +40,7 @@
 typedef struct args {
     double dx, box, height, end, cfl;
     double early_dx, early_box, early_height; /* the early phase's grid and box (0: those of the run) */
+    int threads;                              /* OpenMP threads of the run (0: the library default) */
     char check[16];
 } args;
 
@@ -69,6 +70,8 @@ static void parse(int argc, char **argv, args *a)
             a->early_box = atof(v);
         else if (!strcmp(k, "early_height"))
             a->early_height = atof(v);
+        else if (!strcmp(k, "threads"))
+            a->threads = atoi(v);
         else if (!strcmp(k, "check"))
             snprintf(a->check, sizeof a->check, "%s", v);
     }
@@ -120,7 +123,7 @@ static gf_status run(const args *a, double cfl, double t_end_nd, double dt_sampl
     GF_TRY(gf_run_spec_set_param(&ctx, &spec, "release_depth_over_D", 2.5));
     GF_TRY(gf_run_spec_set_param(&ctx, &spec, "box_over_D", a->box));
     GF_TRY(gf_run_spec_set_param(&ctx, &spec, "height_over_D", a->height));
-    gf_sim_options opt = {0};
+    gf_sim_options opt = {.n_threads = a->threads};
     gf_sim *sim = NULL;
     gf_status st = gf_sim_create(&ctx, &spec, &opt, &sim);
     if (st != GF_OK) {
