@@ -103,6 +103,9 @@ static gf_status resolved_check(gf_ctx *ctx, const gf_run_spec *spec)
         return GF_FAIL(ctx, GF_ERR_CONFIG, "grains.density_kg_m3 / fluid.density_kg_m3 = %.4g: the resolved tier's "
                        "force rho rho_p/(rho_p - rho) int f is singular at 1 and needs rho_p/rho >= %g (Izard 2014 "
                        "§3.1.3.1)", r, RESOLVED_MIN_DENSITY_RATIO);
+    if (!(fs->ibm_retraction_dx >= 0.0 && fs->ibm_retraction_dx <= 1.0))
+        return GF_FAIL(ctx, GF_ERR_CONFIG, "fluid.ibm_retraction_dx = %g must be in [0, 1] cells (Breugem 2012 "
+                       "uses 0.3)", fs->ibm_retraction_dx);
     if (!(fs->cfl > 0.0 && fs->cfl <= 1.0))
         return GF_FAIL(ctx, GF_ERR_CONFIG, "fluid.cfl = %g must be in (0, 1]", fs->cfl);
     /* the fluid step is a whole number (>= 1) of DEM steps: a DEM step beyond the fluid's limits would
@@ -193,6 +196,7 @@ static gf_status resolved_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_
     c->setup = *setup;
     c->first_step = 1;
     c->n_threads = 1;
+    c->map.retraction_cells = spec->fluid.ibm_retraction_dx;
     gf_status st = gf_fluid_create(ctx, &fp, &c->fluid);
     if (st != GF_OK) {
         free(c);

@@ -131,7 +131,7 @@ gf_status gf_ibm_build(gf_ctx *ctx, gf_ibm_map *m, const gf_grid *g, const gf_pa
         for (size_t i = 0; i < n && st[a] == GF_OK; ++i) {
             m->start[a][i] = m->n_e[a];
             const double xc[3] = {p->x_m[i], p->y_m[i], p->z_m[i]};
-            st[a] = map_grain(m, g, a, xc, p->radius_m[i]);
+            st[a] = map_grain(m, g, a, xc, p->radius_m[i] - m->retraction_cells * g->h_m[0]);
         }
         m->start[a][n] = m->n_e[a];
     }

@@ -37,6 +37,14 @@
  * plus a halo as wide as GF_IBM_REACH) from the grains that overlap it, and
  * sums the per-grain force over ranks; nothing here assumes the whole domain.
  *
+ * Retraction (beyond Izard's method). A diffuse boundary makes the grain
+ * hydrodynamically larger than R by a fraction of a cell, an error of first
+ * order in dx on the drag. Breugem (J. Comput. Phys. 231, 2012, §2-3) moves
+ * the forcing points of his sphere inward by 0.3 dx for it. Here the same
+ * idea shifts the tanh profile: alpha_i is evaluated at |x - x_i| - (R_i - c dx),
+ * c = retraction_cells (fluid.ibm_retraction_dx); the force formula keeps
+ * the grain's true mass and radius.
+ *
  * Threads. The three components' maps are built, and their forcing summed, on
  * up to three threads, one component each: every face array is summed in
  * grain order whatever the thread count. The per-face forcing and each
@@ -65,6 +73,7 @@ typedef struct gf_ibm_entry {
 
 typedef struct gf_ibm_map {
     int n_threads;      /* OpenMP threads of the build and the forcing (0 or 1: one); the values do not depend on it */
+    double retraction_cells; /* the profile is centred on R - retraction_cells dx (0: on R, Izard's profile) */
     size_t n_grains, cap_grains;
     size_t *start[3];   /* grain i's entries of component a: e[a][start[a][i] .. start[a][i+1]) */
     gf_ibm_entry *e[3];

@@ -16,7 +16,8 @@
  * then slows the sphere down).
  *
  * Usage: resolved_settling [dx=D/dx] [box=W/D] [height=H/D] [end=t sqrt(g/D)] [cfl=c]
- *                          [early_dx=] [early_box=] [early_height=] [threads=n] [check=fast|full|none]
+ *                          [early_dx=] [early_box=] [early_height=] [threads=n] [retract=c]
+ *                          [check=fast|full|none]
  *   check=fast (the default suite, ~10 s of CPU): the early phase at D/dx = 12
  *     in a 4 D x 6 D box, the acceleration within 5 % of (2/3) g (the smoothed
  *     shell adds pi^2 a^2/R^2 of the volume to the added mass: -8 % at
@@ -41,6 +42,7 @@ typedef struct args {
     double dx, box, height, end, cfl;
     double early_dx, early_box, early_height; /* the early phase's grid and box (0: those of the run) */
     int threads;                              /* OpenMP threads of the run (0: the library default) */
+    double retract;                           /* fluid.ibm_retraction_dx */
     char check[16];
 } args;
 
@@ -70,6 +72,8 @@ static void parse(int argc, char **argv, args *a)
             a->early_box = atof(v);
         else if (!strcmp(k, "early_height"))
             a->early_height = atof(v);
+        else if (!strcmp(k, "retract"))
+            a->retract = atof(v);
         else if (!strcmp(k, "threads"))
             a->threads = atoi(v);
         else if (!strcmp(k, "check"))
@@ -116,6 +120,7 @@ static gf_status run(const args *a, double cfl, double t_end_nd, double dt_sampl
     spec.fluid.viscosity_Pa_s = eta;
     spec.fluid.lubrication = 0;
     spec.fluid.d_over_dx = a->dx;
+    spec.fluid.ibm_retraction_dx = a->retract;
     spec.fluid.cfl = cfl;
     spec.contact.t_contact_nd = 0.05; /* no contact happens; the DEM step only integrates the held force */
     spec.end_time_nd = t_end_nd;
