@@ -22,7 +22,10 @@ void gf_ibm_free(gf_ibm_map *m)
 }
 
 /* Threads for the per-component loops: one component each, at most three. */
-static int component_threads(const gf_ibm_map *m) { return m->n_threads < 3 ? (m->n_threads > 1 ? m->n_threads : 1) : 3; }
+static int component_threads(const gf_ibm_map *m)
+{
+    return m->n_threads >= 3 ? 3 : m->n_threads > 1 ? m->n_threads : 1;
+}
 static int face_threads(const gf_ibm_map *m) { return m->n_threads > 1 ? m->n_threads : 1; }
 
 static gf_status reserve_grains(gf_ctx *ctx, gf_ibm_map *m, size_t n)

@@ -153,7 +153,8 @@ gf_status gf_fluid_ns2_viscous(gf_ctx *ctx, gf_fluid *f, const double *const r[3
     return GF_OK;
 }
 
-/* div u at every cell, times scale: gf_grid_divergence's sum (x, y, z faces in that order), by z-slabs on nt threads. */
+/* div u at every cell, times scale: gf_grid_divergence's sum (x, y, z faces in that order), by z-slabs on nt
+ * threads. */
 static void scaled_divergence(const gf_grid *g, const double *const u[3], double scale, int nt, double *div)
 {
 #pragma omp parallel for num_threads(nt) if (nt > 1) schedule(static)

@@ -212,7 +212,8 @@ int main(int argc, char **argv)
     double Re_ref = schiller_naumann_Re(AR), uT_ref = Re_ref * eta / (RHO * D) / sqrt(G * D);
     double Re = RHO * umax * sqrt(G * D) * D / eta;
     double F_end = late.n ? late.F[late.n - 1] : NAN; /* -> 1 at terminal velocity: F_h = -m g (Izard 2014 §2.2.2) */
-    printf("resolved settling: D/dx %g, box %g x %g D, cfl %g, retraction %g dx: early a/g = %.4f at D/dx %g (ref 2/3, %+.1f %%), "
+    printf("resolved settling: D/dx %g, box %g x %g D, cfl %g, retraction %g dx: "
+           "early a/g = %.4f at D/dx %g (ref 2/3, %+.1f %%), "
            "u_T/sqrt(gD) = %.4f at t = %.2f (ref %.4f, %+.1f %%), Re_T = %.2f (ref %.2f), F_h/(m g) at the end %.4f; "
            "wall %.1f s, cpu %.1f s (early %.1f s)\n",
            a.dx, a.box, a.height, a.cfl, a.retract, a0, ea.dx, 100 * (a0 / (2.0 / 3.0) - 1), umax, t_umax, uT_ref,
