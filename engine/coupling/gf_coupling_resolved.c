@@ -75,6 +75,7 @@ typedef struct gf_resolved {
     int held_epoch_known;
     long n_steps;
     double fluid_s;
+    int n_threads;     /* of the fluid step: stencils, FFTs, immersed boundary (resolved_set_threads) */
 } gf_resolved;
 
 static gf_resolved *R_(gf_coupling *c) { return (gf_resolved *)c; }
@@ -102,6 +103,9 @@ static gf_status resolved_check(gf_ctx *ctx, const gf_run_spec *spec)
         return GF_FAIL(ctx, GF_ERR_CONFIG, "grains.density_kg_m3 / fluid.density_kg_m3 = %.4g: the resolved tier's "
                        "force rho rho_p/(rho_p - rho) int f is singular at 1 and needs rho_p/rho >= %g (Izard 2014 "
                        "§3.1.3.1)", r, RESOLVED_MIN_DENSITY_RATIO);
+    if (!(fs->ibm_retraction_dx >= 0.0 && fs->ibm_retraction_dx <= 1.0))
+        return GF_FAIL(ctx, GF_ERR_CONFIG, "fluid.ibm_retraction_dx = %g must be in [0, 1] cells (Breugem 2012 "
+                       "uses 0.3)", fs->ibm_retraction_dx);
     if (!(fs->cfl > 0.0 && fs->cfl <= 1.0))
         return GF_FAIL(ctx, GF_ERR_CONFIG, "fluid.cfl = %g must be in (0, 1]", fs->cfl);
     /* the fluid step is a whole number (>= 1) of DEM steps: a DEM step beyond the fluid's limits would
@@ -191,6 +195,8 @@ static gf_status resolved_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_
     c->spec = *spec;
     c->setup = *setup;
     c->first_step = 1;
+    c->n_threads = 1;
+    c->map.retraction_cells = spec->fluid.ibm_retraction_dx;
     gf_status st = gf_fluid_create(ctx, &fp, &c->fluid);
     if (st != GF_OK) {
         free(c);
@@ -222,14 +228,20 @@ static gf_status resolved_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_
 
 /* --- limits ---------------------------------------------------------------------------------------- */
 
+/* sum_d max|u_d| / h_d over the faces and the grains. A max: the same on any number of threads (written
+ * as a comparison, not fmax, so that it vectorises: both skip a NaN the same way). */
 static double advective_rate(const gf_resolved *c, const gf_particles *p)
 {
     const gf_grid *g = &c->fluid->grid;
+    const int nt = c->n_threads;
     double s = 0.0;
     for (int a = 0; a < 3; ++a) {
         double m = 0.0;
-        for (size_t q = 0; q < g->n_faces[a]; ++q)
-            m = fmax(m, fabs(c->fluid->u[a][q]));
+        const double *u = c->fluid->u[a];
+        const long n = (long)g->n_faces[a];
+#pragma omp parallel for num_threads(nt) if (nt > 1) schedule(static) reduction(max : m)
+        for (long q = 0; q < n; ++q)
+            m = fabs(u[q]) > m ? fabs(u[q]) : m;
         if (p) {
             const double *v = a == 0 ? p->vx_m_s : a == 1 ? p->vy_m_s : p->vz_m_s;
             for (size_t i = 0; i < p->n_local; ++i)
@@ -300,7 +312,7 @@ static void output_fields(gf_resolved *c)
     gf_fluid *f = c->fluid;
     const gf_grid *g = &f->grid;
     const double *const as[3] = {c->alpha_sum[0], c->alpha_sum[1], c->alpha_sum[2]};
-    gf_ibm_cell_fraction(g, as, c->fields[RF_ALPHA]);
+    gf_ibm_cell_fraction(g, as, c->n_threads, c->fields[RF_ALPHA]);
     for (int a = 0; a < 3; ++a)
         gf_grid_cell_velocity(g, a, f->u[a], c->fields[RF_U + a]);
     memcpy(c->fields[RF_P], f->p_Pa, g->n_cells * sizeof(double));
@@ -423,6 +435,28 @@ static gf_status resolved_set_gravity(gf_coupling *cc, const double g[3])
     return GF_OK;
 }
 
+/* The fluid step on n_threads OpenMP threads (gf_sim calls it once, after create, with any count >= 1): the
+ * stencils and the immersed boundary give the same bits on any number (each face alone, sums in grain order,
+ * maxima), and so do the FFTs, planned by slabs for every count (gf_poisson_plan_set_threads): a run is
+ * bitwise the same on 1 or N threads. */
+static void resolved_set_threads(gf_coupling *cc, int n_threads)
+{
+    gf_resolved *c = R_(cc);
+    int n = n_threads > 1 ? n_threads : 1;
+    gf_status st = gf_poisson_plan_set_threads(c->ctx, c->fluid->poisson, n);
+    for (int a = 0; a < 3 && st == GF_OK; ++a)
+        st = gf_helmholtz_plan_set_threads(c->ctx, c->fluid->visc[a], n);
+    if (st != GF_OK) { /* FFTW could not plan threaded: stay on one thread, all plans serial */
+        gf_log(c->ctx, GF_LOG_WARN, "resolved tier: %s; the fluid step stays on one thread", c->ctx->last_msg);
+        n = 1;
+        gf_poisson_plan_set_threads(c->ctx, c->fluid->poisson, 1);
+        for (int a = 0; a < 3; ++a)
+            gf_helmholtz_plan_set_threads(c->ctx, c->fluid->visc[a], 1);
+    }
+    c->n_threads = n;
+    c->map.n_threads = n;
+}
+
 static double resolved_fluid_mass(const gf_coupling *cc)
 {
     const gf_resolved *c = CR(cc);
@@ -515,6 +549,7 @@ const gf_coupling_tier gf_coupling_tier_resolved = {
     .excess_pressure_Pa = resolved_excess_pressure,
     .fields = resolved_fields,
     .set_gravity = resolved_set_gravity,
+    .set_threads = resolved_set_threads,
     .save = resolved_save,
     .load = resolved_load,
     .fluid_flow_rate = resolved_flow_rate,

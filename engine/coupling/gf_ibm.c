@@ -21,6 +21,13 @@ void gf_ibm_free(gf_ibm_map *m)
     memset(m, 0, sizeof *m);
 }
 
+/* Threads for the per-component loops: one component each, at most three. */
+static int component_threads(const gf_ibm_map *m)
+{
+    return m->n_threads >= 3 ? 3 : m->n_threads > 1 ? m->n_threads : 1;
+}
+static int face_threads(const gf_ibm_map *m) { return m->n_threads > 1 ? m->n_threads : 1; }
+
 static gf_status reserve_grains(gf_ctx *ctx, gf_ibm_map *m, size_t n)
 {
     if (n + 1 <= m->cap_grains)
@@ -36,13 +43,14 @@ static gf_status reserve_grains(gf_ctx *ctx, gf_ibm_map *m, size_t n)
     return GF_OK;
 }
 
-static gf_status push(gf_ctx *ctx, gf_ibm_map *m, int a, const gf_ibm_entry *e)
+/* Appends e to component a's entries; GF_ERR_NOMEM (no message: it may run on a worker thread) when full. */
+static gf_status push(gf_ibm_map *m, int a, const gf_ibm_entry *e)
 {
     if (m->n_e[a] == m->cap_e[a]) {
         size_t cap = m->cap_e[a] ? 2 * m->cap_e[a] : 4096;
         gf_ibm_entry *q = realloc(m->e[a], cap * sizeof *q);
         if (!q)
-            return GF_FAIL(ctx, GF_ERR_NOMEM, "ibm: out of memory for %zu face entries", cap);
+            return GF_ERR_NOMEM;
         m->e[a] = q;
         m->cap_e[a] = cap;
     }
@@ -65,7 +73,7 @@ static int face_index(const gf_grid *g, int a, int d, int m)
 }
 
 /* The faces of component a around one grain. */
-static gf_status map_grain(gf_ctx *ctx, gf_ibm_map *m, const gf_grid *g, int a, const double xc[3], double R)
+static gf_status map_grain(gf_ibm_map *m, const gf_grid *g, int a, const double xc[3], double R)
 {
     double h = g->h_m[0], reach = R + GF_IBM_REACH_CELLS * h;
     int m0[3], m1[3];
@@ -104,7 +112,9 @@ static gf_status map_grain(gf_ctx *ctx, gf_ibm_map *m, const gf_grid *g, int a, 
                     continue;
                 e.alpha = gf_ibm_alpha(r - R, n, h);
                 e.face = gf_grid_face(g, a, ii, jj, kk);
-                GF_TRY(push(ctx, m, a, &e));
+                gf_status st = push(m, a, &e);
+                if (st != GF_OK)
+                    return st;
             }
         }
     }
@@ -116,15 +126,21 @@ gf_status gf_ibm_build(gf_ctx *ctx, gf_ibm_map *m, const gf_grid *g, const gf_pa
     size_t n = p->n_local;
     GF_TRY(reserve_grains(ctx, m, n));
     m->n_grains = n;
+    gf_status st[3] = {GF_OK, GF_OK, GF_OK};
+    const int nt = component_threads(m);
+#pragma omp parallel for num_threads(nt) if (nt > 1) schedule(static, 1)
     for (int a = 0; a < 3; ++a) {
         m->n_e[a] = 0;
-        for (size_t i = 0; i < n; ++i) {
+        for (size_t i = 0; i < n && st[a] == GF_OK; ++i) {
             m->start[a][i] = m->n_e[a];
             const double xc[3] = {p->x_m[i], p->y_m[i], p->z_m[i]};
-            GF_TRY(map_grain(ctx, m, g, a, xc, p->radius_m[i]));
+            st[a] = map_grain(m, g, a, xc, p->radius_m[i] - m->retraction_cells * g->h_m[0]);
         }
         m->start[a][n] = m->n_e[a];
     }
+    for (int a = 0; a < 3; ++a)
+        if (st[a] != GF_OK)
+            return GF_FAIL(ctx, st[a], "ibm: out of memory for the face entries of component %d (%zu grains)", a, n);
     return GF_OK;
 }
 
@@ -137,54 +153,79 @@ static double rigid_velocity(const gf_particles *p, size_t i, int a, const doubl
     return v[a] + w[b] * r[c] - w[c] * r[b];
 }
 
+/* sum_i alpha_i and sum_i alpha_i U_i of component a, scattered in grain order. */
+static void scatter_component(const gf_ibm_map *m, const gf_grid *g, const gf_particles *p, int a, double *alpha_sum,
+                              double *aU)
+{
+    memset(alpha_sum, 0, g->n_faces[a] * sizeof(double));
+    memset(aU, 0, g->n_faces[a] * sizeof(double));
+    for (size_t i = 0; i < m->n_grains; ++i)
+        for (size_t q = m->start[a][i]; q < m->start[a][i + 1]; ++q) {
+            const gf_ibm_entry *e = &m->e[a][q];
+            alpha_sum[e->face] += e->alpha;
+            aU[e->face] += e->alpha * rigid_velocity(p, i, a, e->r_m);
+        }
+}
+
+/* f = alpha (U - u~)/dt, alpha = min(1, sum_i alpha_i), face by face on nt threads. */
+static void forcing_component(const gf_grid *g, int a, const double *u_pred, const double *alpha_sum,
+                              const double *aU, double dt_s, int nt, double *force_out)
+{
+    const long n = (long)g->n_faces[a];
+#pragma omp parallel for num_threads(nt) if (nt > 1) schedule(static)
+    for (long fi = 0; fi < n; ++fi) {
+        double s = alpha_sum[fi];
+        force_out[fi] = s > 0.0 ? (s < 1.0 ? s : 1.0) * (aU[fi] / s - u_pred[fi]) / dt_s : 0.0;
+    }
+    gf_grid_sync_periodic(g, a, force_out);
+}
+
+/* Grain i's force and torque from the integral over its own alpha_i (Izard 2014 eqs. (2.32)-(2.33)). */
+static void grain_integrals(const gf_ibm_map *m, const gf_grid *g, const gf_particles *p, size_t i,
+                            const double *const u_pred[3], double dt_s, double rho_f, double *F_N, double *T_Nm)
+{
+    double dV = g->h_m[0] * g->h_m[1] * g->h_m[2];
+    double R = p->radius_m[i];
+    double rho_p = p->mass_kg[i] / (4.0 / 3.0 * M_PI * R * R * R);
+    double factor = -rho_f * rho_p / (rho_p - rho_f) * dV / dt_s;
+    double F[3] = {0, 0, 0}, T[3] = {0, 0, 0};
+    for (int a = 0; a < 3; ++a) {
+        int b = (a + 1) % 3, c = (a + 2) % 3;
+        for (size_t q = m->start[a][i]; q < m->start[a][i + 1]; ++q) {
+            const gf_ibm_entry *e = &m->e[a][q];
+            double fa = e->alpha * (rigid_velocity(p, i, a, e->r_m) - u_pred[a][e->face]);
+            F[a] += fa;
+            T[b] += e->r_m[c] * fa; /* r x (f_a e_a) = f_a (r_c e_b - r_b e_c), (a, b, c) cyclic */
+            T[c] -= e->r_m[b] * fa;
+        }
+    }
+    for (int d = 0; d < 3; ++d) {
+        F_N[3 * i + d] = factor * F[d];
+        T_Nm[3 * i + d] = factor * T[d];
+    }
+}
+
 void gf_ibm_force(const gf_ibm_map *m, const gf_grid *g, const gf_particles *p, const double *const u_pred[3],
                   double dt_s, double rho_f, double *const force_out[3], double *const alpha_sum[3],
                   double *const aU[3], double *F_N, double *T_Nm)
 {
-    double dV = g->h_m[0] * g->h_m[1] * g->h_m[2];
+    const int nc = component_threads(m), nt = face_threads(m);
+#pragma omp parallel for num_threads(nc) if (nc > 1) schedule(static, 1)
+    for (int a = 0; a < 3; ++a)
+        scatter_component(m, g, p, a, alpha_sum[a], aU[a]);
     for (int a = 0; a < 3; ++a) {
-        memset(alpha_sum[a], 0, g->n_faces[a] * sizeof(double));
-        memset(aU[a], 0, g->n_faces[a] * sizeof(double));
-        memset(force_out[a], 0, g->n_faces[a] * sizeof(double));
-        for (size_t i = 0; i < m->n_grains; ++i)
-            for (size_t q = m->start[a][i]; q < m->start[a][i + 1]; ++q) {
-                const gf_ibm_entry *e = &m->e[a][q];
-                alpha_sum[a][e->face] += e->alpha;
-                aU[a][e->face] += e->alpha * rigid_velocity(p, i, a, e->r_m);
-            }
-        for (size_t fi = 0; fi < g->n_faces[a]; ++fi) {
-            double s = alpha_sum[a][fi];
-            if (s > 0.0)
-                force_out[a][fi] = (s < 1.0 ? s : 1.0) * (aU[a][fi] / s - u_pred[a][fi]) / dt_s;
-        }
-        gf_grid_sync_periodic(g, a, force_out[a]);
+        forcing_component(g, a, u_pred[a], alpha_sum[a], aU[a], dt_s, nt, force_out[a]);
         gf_grid_sync_periodic(g, a, alpha_sum[a]);
     }
-    /* each grain's integral over its own alpha_i (Izard 2014 eqs. (2.32)-(2.33)) */
-    for (size_t i = 0; i < m->n_grains; ++i) {
-        double R = p->radius_m[i];
-        double rho_p = p->mass_kg[i] / (4.0 / 3.0 * M_PI * R * R * R);
-        double factor = -rho_f * rho_p / (rho_p - rho_f) * dV / dt_s;
-        double F[3] = {0, 0, 0}, T[3] = {0, 0, 0};
-        for (int a = 0; a < 3; ++a) {
-            int b = (a + 1) % 3, c = (a + 2) % 3;
-            for (size_t q = m->start[a][i]; q < m->start[a][i + 1]; ++q) {
-                const gf_ibm_entry *e = &m->e[a][q];
-                double fa = e->alpha * (rigid_velocity(p, i, a, e->r_m) - u_pred[a][e->face]);
-                F[a] += fa;
-                T[b] += e->r_m[c] * fa; /* r x (f_a e_a) = f_a (r_c e_b - r_b e_c), (a, b, c) cyclic */
-                T[c] -= e->r_m[b] * fa;
-            }
-        }
-        for (int d = 0; d < 3; ++d) {
-            F_N[3 * i + d] = factor * F[d];
-            T_Nm[3 * i + d] = factor * T[d];
-        }
-    }
+    const long n = (long)m->n_grains;
+#pragma omp parallel for num_threads(nt) if (nt > 1 && n > 1) schedule(static)
+    for (long i = 0; i < n; ++i)
+        grain_integrals(m, g, p, (size_t)i, u_pred, dt_s, rho_f, F_N, T_Nm);
 }
 
-void gf_ibm_cell_fraction(const gf_grid *g, const double *const alpha_sum[3], double *alpha_cell)
+void gf_ibm_cell_fraction(const gf_grid *g, const double *const alpha_sum[3], int n_threads, double *alpha_cell)
 {
+#pragma omp parallel for num_threads(n_threads) if (n_threads > 1) schedule(static)
     for (int k = 0; k < g->n[2]; ++k)
         for (int j = 0; j < g->n[1]; ++j)
             for (int i = 0; i < g->n[0]; ++i) {

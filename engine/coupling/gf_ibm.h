@@ -36,6 +36,20 @@
  * a later domain split builds the same map on each rank's grid (its cells
  * plus a halo as wide as GF_IBM_REACH) from the grains that overlap it, and
  * sums the per-grain force over ranks; nothing here assumes the whole domain.
+ *
+ * Retraction (beyond Izard's method). A diffuse boundary makes the grain
+ * hydrodynamically larger than R by a fraction of a cell, an error of first
+ * order in dx on the drag. Breugem (J. Comput. Phys. 231, 2012, §2-3) moves
+ * the forcing points of his sphere inward by 0.3 dx for it. Here the same
+ * idea shifts the tanh profile: alpha_i is evaluated at |x - x_i| - (R_i - c dx),
+ * c = retraction_cells (fluid.ibm_retraction_dx); the force formula keeps
+ * the grain's true mass and radius.
+ *
+ * Threads. The three components' maps are built, and their forcing summed, on
+ * up to three threads, one component each: every face array is summed in
+ * grain order whatever the thread count. The per-face forcing and each
+ * grain's integrals (its own entries, in map order) are split freely. So the
+ * force, the torque and the forcing field are bitwise the same on 1 or N threads.
  */
 #ifndef GF_IBM_H
 #define GF_IBM_H
@@ -58,6 +72,8 @@ typedef struct gf_ibm_entry {
 } gf_ibm_entry;
 
 typedef struct gf_ibm_map {
+    int n_threads;      /* OpenMP threads of the build and the forcing (0 or 1: one); the values do not depend on it */
+    double retraction_cells; /* the profile is centred on R - retraction_cells dx (0: on R, Izard's profile) */
     size_t n_grains, cap_grains;
     size_t *start[3];   /* grain i's entries of component a: e[a][start[a][i] .. start[a][i+1]) */
     gf_ibm_entry *e[3];
@@ -79,7 +95,7 @@ void gf_ibm_force(const gf_ibm_map *m, const gf_grid *g, const gf_particles *p, 
                   double dt_s, double rho_f, double *const force_out[3], double *const alpha_sum[3],
                   double *const aU[3], double *F_N, double *T_Nm);
 
-/* alpha = min(1, sum_i alpha_i) at cell centres (mean of the six faces), for fields.nc. */
-void gf_ibm_cell_fraction(const gf_grid *g, const double *const alpha_sum[3], double *alpha_cell);
+/* alpha = min(1, sum_i alpha_i) at cell centres (mean of the six faces), for fields.nc; on n_threads threads. */
+void gf_ibm_cell_fraction(const gf_grid *g, const double *const alpha_sum[3], int n_threads, double *alpha_cell);
 
 #endif

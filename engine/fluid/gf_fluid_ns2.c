@@ -4,6 +4,11 @@
 #include <math.h>
 #include <string.h>
 
+/* The step's OpenMP threads: those its FFT plans were set for (gf_poisson_plan_set_threads), 1 by default.
+ * Every loop below writes each face or cell from its own inputs alone, or takes a max: the values do not
+ * depend on the thread count (nor do the slab FFTs'; gf_poisson.h). */
+static int step_threads(const gf_fluid *f) { return gf_poisson_plan_threads(f->poisson); }
+
 /* Visits every free face of component a: body(fi, i, j, k). */
 #define FOR_FREE_FACES(g, a, fi, i, j, k)                                        \
     for (int k = 0; k < (g)->nf[a][2]; ++k)                                      \
@@ -61,8 +66,10 @@ void gf_fluid_ns2_advection(const gf_fluid *f, double *const A[3])
 {
     const gf_grid *g = &f->grid;
     const double *const uu[3] = {f->u[0], f->u[1], f->u[2]};
+    const int nt = step_threads(f);
     for (int a = 0; a < 3; ++a) {
         memset(A[a], 0, g->n_faces[a] * sizeof(double));
+#pragma omp parallel for num_threads(nt) if (nt > 1) schedule(static)
         FOR_FREE_FACES(g, a, fi, i, j, k)
         A[a][fi] = -(interior_face(g, a, i, j, k) ? advection_interior(g, uu, a, fi, i, j, k)
                                                    : advection_generic(g, uu, a, fi, i, j, k));
@@ -93,8 +100,10 @@ void gf_fluid_ns2_rates(const gf_fluid *f, const double *const A[3], const doubl
 {
     const gf_grid *g = &f->grid;
     double rho = f->rho_kg_m3, nu = f->mu_Pa_s / rho;
+    const int nt = step_threads(f);
     for (int a = 0; a < 3; ++a) {
         memset(r[a], 0, g->n_faces[a] * sizeof(double));
+#pragma omp parallel for num_threads(nt) if (nt > 1) schedule(static)
         FOR_FREE_FACES(g, a, fi, i, j, k)
         {
             double adv = 1.5 * A[a][fi] - 0.5 * A_old[a][fi];
@@ -108,9 +117,13 @@ void gf_fluid_ns2_rates(const gf_fluid *f, const double *const A[3], const doubl
 void gf_fluid_ns2_predict(const gf_fluid *f, const double *const r[3], double dt_s, double *const u_pred[3])
 {
     const gf_grid *g = &f->grid;
-    for (int a = 0; a < 3; ++a)
-        for (size_t q = 0; q < g->n_faces[a]; ++q)
+    const int nt = step_threads(f);
+    for (int a = 0; a < 3; ++a) {
+        const long n = (long)g->n_faces[a];
+#pragma omp parallel for num_threads(nt) if (nt > 1) schedule(static)
+        for (long q = 0; q < n; ++q)
             u_pred[a][q] = f->u[a][q] + dt_s * r[a][q];
+    }
 }
 
 gf_status gf_fluid_ns2_viscous(gf_ctx *ctx, gf_fluid *f, const double *const r[3], const double *const force[3],
@@ -118,50 +131,79 @@ gf_status gf_fluid_ns2_viscous(gf_ctx *ctx, gf_fluid *f, const double *const r[3
 {
     const gf_grid *g = &f->grid;
     double nu = f->mu_Pa_s / f->rho_kg_m3;
+    const int nt = step_threads(f);
     for (int a = 0; a < 3; ++a) {
         double *w = f->work[a];
-        for (size_t q = 0; q < g->n_faces[a]; ++q)
-            w[q] = dt_s * (r[a][q] + (force ? force[a][q] : 0.0));
+        const double *fa = force ? force[a] : NULL;
+        const long n = (long)g->n_faces[a];
+#pragma omp parallel for num_threads(nt) if (nt > 1) schedule(static)
+        for (long q = 0; q < n; ++q)
+            w[q] = dt_s * (r[a][q] + (fa ? fa[q] : 0.0));
         /* wall faces stay 0: r and force are 0 there */
         gf_helmholtz_solve(f->visc[a], 0.5 * dt_s * nu, w);
-        double s = 0.0;
-        for (size_t q = 0; q < g->n_faces[a]; ++q) {
+        int finite = 1;
+#pragma omp parallel for num_threads(nt) if (nt > 1) schedule(static) reduction(&& : finite)
+        for (long q = 0; q < n; ++q) {
             w[q] += f->u[a][q];
-            s += w[q] * w[q];
+            finite = finite && isfinite(w[q]);
         }
-        if (!isfinite(s))
+        if (!finite)
             return GF_FAIL(ctx, GF_ERR_NUMERIC, "resolved fluid step: non-finite velocity (component %d)", a);
     }
     return GF_OK;
 }
 
+/* div u at every cell, times scale: gf_grid_divergence's sum (x, y, z faces in that order), by z-slabs on nt
+ * threads. */
+static void scaled_divergence(const gf_grid *g, const double *const u[3], double scale, int nt, double *div)
+{
+#pragma omp parallel for num_threads(nt) if (nt > 1) schedule(static)
+    for (int k = 0; k < g->n[2]; ++k)
+        for (int j = 0; j < g->n[1]; ++j)
+            for (int i = 0; i < g->n[0]; ++i) {
+                double s = 0.0;
+                for (int a = 0; a < 3; ++a) {
+                    int hi[3] = {i, j, k};
+                    hi[a] += 1;
+                    s += (u[a][gf_grid_face(g, a, hi[0], hi[1], hi[2])] - u[a][gf_grid_face(g, a, i, j, k)]) /
+                         g->h_m[a];
+                }
+                div[gf_grid_cell(g, i, j, k)] = s * scale;
+            }
+}
+
 gf_status gf_fluid_ns2_project(gf_ctx *ctx, gf_fluid *f, double dt_s)
 {
     const gf_grid *g = &f->grid;
+    const int nt = step_threads(f);
+    const long n_cells = (long)g->n_cells;
     double rho = f->rho_kg_m3;
     double *rhs = f->tmp[0], *phi = f->tmp[1];
     const double *const w[3] = {f->work[0], f->work[1], f->work[2]};
-    gf_grid_divergence(g, w, NULL, rhs);
-    for (size_t c = 0; c < g->n_cells; ++c)
-        rhs[c] *= rho / dt_s;
+    scaled_divergence(g, w, rho / dt_s, nt, rhs);
     gf_poisson_solve_const(f->poisson, rhs, phi);
-    for (size_t c = 0; c < g->n_cells; ++c) {
-        if (!isfinite(phi[c]))
-            return GF_FAIL(ctx, GF_ERR_NUMERIC, "resolved fluid step: non-finite pressure (check the fluid step "
-                           "against its advective limit)");
+    int finite = 1;
+#pragma omp parallel for num_threads(nt) if (nt > 1) schedule(static) reduction(&& : finite)
+    for (long c = 0; c < n_cells; ++c) {
+        finite = finite && isfinite(phi[c]);
         f->p_Pa[c] += phi[c];
     }
+    if (!finite)
+        return GF_FAIL(ctx, GF_ERR_NUMERIC, "resolved fluid step: non-finite pressure (check the fluid step against "
+                       "its advective limit)");
     for (int a = 0; a < 3; ++a) {
         memcpy(f->u[a], f->work[a], g->n_faces[a] * sizeof(double));
+#pragma omp parallel for num_threads(nt) if (nt > 1) schedule(static)
         FOR_FREE_FACES(g, a, fi, i, j, k)
         f->u[a][fi] -= dt_s / rho * pressure_gradient(g, phi, a, i, j, k);
         gf_grid_sync_periodic(g, a, f->u[a]);
     }
     const double *const uu[3] = {f->u[0], f->u[1], f->u[2]};
-    gf_grid_divergence(g, uu, NULL, rhs);
-    double res = 0.0;
-    for (size_t c = 0; c < g->n_cells; ++c)
-        res = fmax(res, fabs(rhs[c]) * dt_s);
+    scaled_divergence(g, uu, dt_s, nt, rhs);
+    double res = 0.0; /* a max: the same on any number of threads */
+#pragma omp parallel for num_threads(nt) if (nt > 1) schedule(static) reduction(max : res)
+    for (long c = 0; c < n_cells; ++c)
+        res = fabs(rhs[c]) > res ? fabs(rhs[c]) : res;
     f->last_mass_residual = res;
     return GF_OK;
 }

@@ -8,9 +8,87 @@
 
 #include "core/gf_timer.h"
 
+/*
+ * A 3-D in-place r2r transform pair (row-major dims: z, y, x), in one of two forms:
+ *   whole: FFTW's own 3-D plans (serial), what the plans are created with: the unresolved tier's bits;
+ *   slabs: the same transform as a 2-D (y, x) plan applied to each z-plane, then a 1-D plan along z applied
+ *          to each y-row of columns, every call on a piece of the same shape: the pieces go to OpenMP threads
+ *          and each line is transformed by the same plan whatever the thread count, so the result is bitwise
+ *          the same on 1 or N threads. FFTW's own threaded plans (libfftw3_omp) split differently per
+ *          thread count and, measured on the shared 2-core machine, spent most of the time switching
+ *          threads (one parallel region per batch of lines).
+ * FFTW_ESTIMATE throughout: the plan depends only on the sizes and kinds, so a run is bitwise reproducible
+ * (FFTW_MEASURE times candidate algorithms, which differ in their rounding). FFTW_UNALIGNED on the slab
+ * plans: they run on sub-arrays whose alignment differs from the planned one.
+ */
+typedef struct transform3 {
+    int dims[3];
+    fftw_r2r_kind kind[2][3];       /* [0] forward, [1] backward */
+    fftw_plan whole[2];
+    fftw_plan plane[2], line[2];
+    int slabs, n_threads;
+} transform3;
+
+static void transform3_free_plans(transform3 *t)
+{
+    for (int w = 0; w < 2; ++w) {
+        if (t->whole[w])
+            fftw_destroy_plan(t->whole[w]);
+        if (t->plane[w])
+            fftw_destroy_plan(t->plane[w]);
+        if (t->line[w])
+            fftw_destroy_plan(t->line[w]);
+        t->whole[w] = t->plane[w] = t->line[w] = NULL;
+    }
+}
+
+/* (Re)plans t on work: whole (slabs = 0) or by slabs on n_threads threads. 0 when FFTW cannot plan. */
+static int transform3_plan(transform3 *t, double *work, int slabs, int n_threads)
+{
+    transform3_free_plans(t);
+    t->slabs = slabs;
+    t->n_threads = n_threads > 1 ? n_threads : 1;
+    const int nz = t->dims[0], ny = t->dims[1], nx = t->dims[2], plane_n[2] = {ny, nx};
+    for (int w = 0; w < 2; ++w) {
+        if (!slabs) {
+            t->whole[w] = fftw_plan_r2r(3, t->dims, work, work, t->kind[w], FFTW_ESTIMATE);
+            if (!t->whole[w])
+                return 0;
+            continue;
+        }
+        const unsigned flags = FFTW_ESTIMATE | FFTW_UNALIGNED;
+        t->plane[w] = fftw_plan_many_r2r(2, plane_n, 1, work, NULL, 1, 0, work, NULL, 1, 0, t->kind[w] + 1, flags);
+        t->line[w] = fftw_plan_many_r2r(1, &t->dims[0], nx, work, NULL, nx * ny, 1, work, NULL, nx * ny, 1,
+                                        t->kind[w], flags);
+        if (!t->plane[w] || (nz > 1 && !t->line[w]))
+            return 0;
+    }
+    return 1;
+}
+
+/* The forward (backward = 0) or backward transform of work in place. */
+static void transform3_execute(const transform3 *t, double *work, int backward)
+{
+    if (!t->slabs) {
+        fftw_execute(t->whole[backward]);
+        return;
+    }
+    const int nz = t->dims[0], ny = t->dims[1], nx = t->dims[2], nt = t->n_threads;
+    const size_t plane = (size_t)nx * ny;
+    /* new-array execution of one plan from several threads at once is thread-safe (FFTW manual §5.4) */
+#pragma omp parallel for num_threads(nt) if (nt > 1) schedule(static)
+    for (int k = 0; k < nz; ++k)
+        fftw_execute_r2r(t->plane[backward], work + k * plane, work + k * plane);
+    if (nz > 1) {
+#pragma omp parallel for num_threads(nt) if (nt > 1) schedule(static)
+        for (int j = 0; j < ny; ++j)
+            fftw_execute_r2r(t->line[backward], work + (size_t)j * nx, work + (size_t)j * nx);
+    }
+}
+
 struct gf_poisson_plan {
     const gf_grid *g;
-    fftw_plan fwd, bwd;
+    transform3 tr;
     double *work;
     double *eig[3];       /* eigenvalues of the 1-D second difference per mode */
     double norm;          /* forward+backward scaling of FFTW's unnormalised transforms */
@@ -58,11 +136,11 @@ gf_status gf_poisson_plan_create(gf_ctx *ctx, const gf_grid *g, gf_poisson_plan 
         return GF_FAIL(ctx, GF_ERR_NOMEM, "poisson plan: out of memory for %zu cells", n);
     }
     /* FFTW is row-major: the slowest index (z) first. */
-    fftw_r2r_kind kf3[3] = {kf[2], kf[1], kf[0]}, kb3[3] = {kb[2], kb[1], kb[0]};
-    int dims[3] = {g->n[2], g->n[1], g->n[0]};
-    pl->fwd = fftw_plan_r2r(3, dims, pl->work, pl->work, kf3, FFTW_ESTIMATE);
-    pl->bwd = fftw_plan_r2r(3, dims, pl->work, pl->work, kb3, FFTW_ESTIMATE);
-    if (!pl->fwd || !pl->bwd) {
+    for (int d = 0; d < 3; ++d) {
+        pl->tr.kind[0][d] = kf[2 - d], pl->tr.kind[1][d] = kb[2 - d];
+        pl->tr.dims[d] = g->n[2 - d];
+    }
+    if (!transform3_plan(&pl->tr, pl->work, 0, 1)) {
         gf_poisson_plan_destroy(&pl);
         return GF_FAIL(ctx, GF_ERR_UNSUPPORTED, "poisson plan: FFTW could not plan a %dx%dx%d transform", g->n[0],
                        g->n[1], g->n[2]);
@@ -76,10 +154,7 @@ void gf_poisson_plan_destroy(gf_poisson_plan **plan)
     if (!plan || !*plan)
         return;
     gf_poisson_plan *pl = *plan;
-    if (pl->fwd)
-        fftw_destroy_plan(pl->fwd);
-    if (pl->bwd)
-        fftw_destroy_plan(pl->bwd);
+    transform3_free_plans(&pl->tr);
     fftw_free(pl->work);
     for (int d = 0; d < 3; ++d)
         free(pl->eig[d]);
@@ -91,11 +166,23 @@ void gf_poisson_plan_destroy(gf_poisson_plan **plan)
     *plan = NULL;
 }
 
+gf_status gf_poisson_plan_set_threads(gf_ctx *ctx, gf_poisson_plan *pl, int n_threads)
+{
+    if (!transform3_plan(&pl->tr, pl->work, 1, n_threads))
+        return GF_FAIL(ctx, GF_ERR_UNSUPPORTED, "poisson plan: FFTW could not plan the slab transforms");
+    return GF_OK;
+}
+
+int gf_poisson_plan_threads(const gf_poisson_plan *pl) { return pl ? pl->tr.n_threads : 1; }
+
 void gf_poisson_solve_const(gf_poisson_plan *pl, const double *rhs, double *phi)
 {
     const gf_grid *g = pl->g;
+    const int nt = pl->tr.n_threads;
     memcpy(pl->work, rhs, g->n_cells * sizeof(double));
-    fftw_execute(pl->fwd);
+    transform3_execute(&pl->tr, pl->work, 0);
+    /* pointwise: the same values on any number of threads */
+#pragma omp parallel for num_threads(nt) if (nt > 1) schedule(static)
     for (int k = 0; k < g->n[2]; ++k)
         for (int j = 0; j < g->n[1]; ++j)
             for (int i = 0; i < g->n[0]; ++i) {
@@ -103,7 +190,7 @@ void gf_poisson_solve_const(gf_poisson_plan *pl, const double *rhs, double *phi)
                 double lam = pl->eig[0][i] + pl->eig[1][j] + pl->eig[2][k];
                 pl->work[c] = (i == 0 && j == 0 && k == 0) ? 0.0 : pl->work[c] / (lam * pl->norm);
             }
-    fftw_execute(pl->bwd);
+    transform3_execute(&pl->tr, pl->work, 1);
     memcpy(phi, pl->work, g->n_cells * sizeof(double));
 }
 
@@ -260,7 +347,7 @@ struct gf_helmholtz_plan {
     int a;
     int len[3], off[3];   /* unknowns per axis and first face index */
     size_t n;
-    fftw_plan fwd, bwd;
+    transform3 tr;
     double *work, *eig[3], norm;
 };
 
@@ -272,6 +359,7 @@ gf_status gf_helmholtz_plan_create(gf_ctx *ctx, const gf_grid *g, int a, gf_helm
         return GF_FAIL(ctx, GF_ERR_NOMEM, "helmholtz plan: out of memory");
     pl->g = g;
     pl->a = a;
+    pl->tr.n_threads = 1;
     pl->norm = 1.0;
     pl->n = 1;
     fftw_r2r_kind kf[3], kb[3];
@@ -331,13 +419,11 @@ gf_status gf_helmholtz_plan_create(gf_ctx *ctx, const gf_grid *g, int a, gf_helm
     }
     if (pl->n > 0) {
         pl->work = fftw_malloc(pl->n * sizeof(double));
-        int dims[3] = {pl->len[2], pl->len[1], pl->len[0]};
-        fftw_r2r_kind kf3[3] = {kf[2], kf[1], kf[0]}, kb3[3] = {kb[2], kb[1], kb[0]};
-        if (pl->work) {
-            pl->fwd = fftw_plan_r2r(3, dims, pl->work, pl->work, kf3, FFTW_ESTIMATE);
-            pl->bwd = fftw_plan_r2r(3, dims, pl->work, pl->work, kb3, FFTW_ESTIMATE);
+        for (int d = 0; d < 3; ++d) {
+            pl->tr.dims[d] = pl->len[2 - d];
+            pl->tr.kind[0][d] = kf[2 - d], pl->tr.kind[1][d] = kb[2 - d];
         }
-        if (!pl->work || !pl->fwd || !pl->bwd) {
+        if (!pl->work || !transform3_plan(&pl->tr, pl->work, 0, 1)) {
             gf_helmholtz_plan_destroy(&pl);
             return GF_FAIL(ctx, GF_ERR_UNSUPPORTED, "helmholtz plan: FFTW could not plan component %d", a);
         }
@@ -351,10 +437,7 @@ void gf_helmholtz_plan_destroy(gf_helmholtz_plan **plan)
     if (!plan || !*plan)
         return;
     gf_helmholtz_plan *pl = *plan;
-    if (pl->fwd)
-        fftw_destroy_plan(pl->fwd);
-    if (pl->bwd)
-        fftw_destroy_plan(pl->bwd);
+    transform3_free_plans(&pl->tr);
     fftw_free(pl->work);
     for (int d = 0; d < 3; ++d)
         free(pl->eig[d]);
@@ -362,28 +445,48 @@ void gf_helmholtz_plan_destroy(gf_helmholtz_plan **plan)
     *plan = NULL;
 }
 
+gf_status gf_helmholtz_plan_set_threads(gf_ctx *ctx, gf_helmholtz_plan *pl, int n_threads)
+{
+    if (pl->n == 0) {
+        pl->tr.n_threads = n_threads > 1 ? n_threads : 1;
+        return GF_OK;
+    }
+    if (!transform3_plan(&pl->tr, pl->work, 1, n_threads))
+        return GF_FAIL(ctx, GF_ERR_UNSUPPORTED, "helmholtz plan: FFTW could not plan the slab transforms of "
+                       "component %d", pl->a);
+    return GF_OK;
+}
+
+/* The unknowns of plan pl, row by row, to and from the transform's work array (to_work: 1 gathers u). */
+static void helmholtz_copy(const gf_helmholtz_plan *pl, double *u, int to_work)
+{
+    const gf_grid *g = pl->g;
+#pragma omp parallel for num_threads(pl->tr.n_threads) if (pl->tr.n_threads > 1) schedule(static)
+    for (int k = 0; k < pl->len[2]; ++k)
+        for (int j = 0; j < pl->len[1]; ++j) {
+            double *w = pl->work + ((size_t)k * pl->len[1] + j) * pl->len[0];
+            double *row = u + gf_grid_face(g, pl->a, pl->off[0], j + pl->off[1], k + pl->off[2]);
+            if (to_work)
+                memcpy(w, row, (size_t)pl->len[0] * sizeof(double));
+            else
+                memcpy(row, w, (size_t)pl->len[0] * sizeof(double));
+        }
+}
+
 void gf_helmholtz_solve(gf_helmholtz_plan *pl, double c, double *u)
 {
     if (pl->n == 0)
         return;
-    const gf_grid *g = pl->g;
-    int a = pl->a;
-    size_t q = 0;
+    helmholtz_copy(pl, u, 1);
+    transform3_execute(&pl->tr, pl->work, 0);
+#pragma omp parallel for num_threads(pl->tr.n_threads) if (pl->tr.n_threads > 1) schedule(static)
     for (int k = 0; k < pl->len[2]; ++k)
-        for (int j = 0; j < pl->len[1]; ++j)
+        for (int j = 0; j < pl->len[1]; ++j) {
+            double *w = pl->work + ((size_t)k * pl->len[1] + j) * pl->len[0];
             for (int i = 0; i < pl->len[0]; ++i)
-                pl->work[q++] = u[gf_grid_face(g, a, i + pl->off[0], j + pl->off[1], k + pl->off[2])];
-    fftw_execute(pl->fwd);
-    q = 0;
-    for (int k = 0; k < pl->len[2]; ++k)
-        for (int j = 0; j < pl->len[1]; ++j)
-            for (int i = 0; i < pl->len[0]; ++i, ++q)
-                pl->work[q] /= pl->norm * (1.0 - c * (pl->eig[0][i] + pl->eig[1][j] + pl->eig[2][k]));
-    fftw_execute(pl->bwd);
-    q = 0;
-    for (int k = 0; k < pl->len[2]; ++k)
-        for (int j = 0; j < pl->len[1]; ++j)
-            for (int i = 0; i < pl->len[0]; ++i)
-                u[gf_grid_face(g, a, i + pl->off[0], j + pl->off[1], k + pl->off[2])] = pl->work[q++];
-    gf_grid_sync_periodic(g, a, u);
+                w[i] /= pl->norm * (1.0 - c * (pl->eig[0][i] + pl->eig[1][j] + pl->eig[2][k]));
+        }
+    transform3_execute(&pl->tr, pl->work, 1);
+    helmholtz_copy(pl, u, 0);
+    gf_grid_sync_periodic(pl->g, pl->a, u);
 }

@@ -40,6 +40,14 @@ typedef struct gf_solve_stats {
 gf_status gf_poisson_plan_create(gf_ctx *ctx, const gf_grid *g, gf_poisson_plan **out);
 void gf_poisson_plan_destroy(gf_poisson_plan **plan);
 
+/* Re-plans the transforms as z-planes then z-lines shared among n_threads OpenMP threads (and runs the
+ * pointwise loops on as many): the result is bitwise the same for any n_threads >= 1, but differs by rounding
+ * from the 3-D plans a plan is created with (which the unresolved tier keeps). Not thread-safe (FFTW's
+ * planner): call it from one thread. */
+gf_status gf_poisson_plan_set_threads(gf_ctx *ctx, gf_poisson_plan *plan, int n_threads);
+/* The thread count set (1 by default); NULL: 1. */
+int gf_poisson_plan_threads(const gf_poisson_plan *plan);
+
 /* L phi = rhs, zero-mean phi. rhs and phi are cell arrays; may alias. */
 void gf_poisson_solve_const(gf_poisson_plan *plan, const double *rhs, double *phi);
 
@@ -68,5 +76,7 @@ void gf_poisson_apply_var(const gf_grid *g, const double *const a_face[3], const
 typedef struct gf_helmholtz_plan gf_helmholtz_plan;
 gf_status gf_helmholtz_plan_create(gf_ctx *ctx, const gf_grid *g, int a, gf_helmholtz_plan **out);
 void gf_helmholtz_plan_destroy(gf_helmholtz_plan **plan);
+/* As gf_poisson_plan_set_threads, for the Helmholtz transforms of one component. */
+gf_status gf_helmholtz_plan_set_threads(gf_ctx *ctx, gf_helmholtz_plan *plan, int n_threads);
 /* In place on the face array u of component a; wall faces untouched, periodic duplicates synced. */
 void gf_helmholtz_solve(gf_helmholtz_plan *plan, double c_m2, double *u);

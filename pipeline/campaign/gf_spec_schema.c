@@ -69,6 +69,8 @@ static const gf_spec_field fields[] = {
     B("fluid", "lub_overlap_off", fluid.lub_overlap_off,
       "no lubrication while surfaces overlap (1), or the gap clamped at 0 (0: constant damping in contact)"),
     D("fluid", "d_over_dx", fluid.d_over_dx, 0, 64.0, 0, "1", "resolved tier: grid cells per diameter D/dx (8-20; 0: 16)"),
+    D("fluid", "ibm_retraction_dx", fluid.ibm_retraction_dx, 0, 1.0, 0, "1",
+      "resolved tier: solid-fraction profile centred on R minus this many cells (Breugem 2012; 0: on R)"),
     D("output", "interval_nd", output.interval_nd, 0, 1e7, 1, "1", "output interval in sqrt(D/g)"),
     B("output", "particles", output.particles, "write particles.nc"),
     B("output", "fields", output.fields, "write fields.nc"),

@@ -71,6 +71,8 @@ size_t gf_spec_text(const gf_run_spec *spec, char *buf, size_t n)
                     continue;
                 if (strcmp(f[i].key, "lub_overlap_off") == 0 && spec->fluid.lub_overlap_off == 0)
                     continue;
+                if (strcmp(f[i].key, "ibm_retraction_dx") == 0 && spec->fluid.ibm_retraction_dx == 0.0)
+                    continue;
                 gf_spec_field_format(&f[i], spec, value, sizeof value);
                 put(&o, "  %s: %s\n", f[i].key, value);
             }

@@ -16,7 +16,8 @@
  * then slows the sphere down).
  *
  * Usage: resolved_settling [dx=D/dx] [box=W/D] [height=H/D] [end=t sqrt(g/D)] [cfl=c]
- *                          [early_dx=] [early_box=] [early_height=] [check=fast|full|none]
+ *                          [early_dx=] [early_box=] [early_height=] [threads=n] [retract=c]
+ *                          [check=fast|full|none]
  *   check=fast (the default suite, ~10 s of CPU): the early phase at D/dx = 12
  *     in a 4 D x 6 D box, the acceleration within 5 % of (2/3) g (the smoothed
  *     shell adds pi^2 a^2/R^2 of the volume to the added mass: -8 % at
@@ -25,6 +26,7 @@
  *     terminal state within 2 %, and u_T within 25 % of 1.24 sqrt(gD) (the
  *     4 D box alone lowers it by ~20 %, docs/resolved.md);
  *   check=full: the early acceleration within 5 %, u_T and Re_T within 3 %.
+ * retract=c: fluid.ibm_retraction_dx (the profile centred on R - c dx, Breugem 2012; 0: Izard's).
  * Prints the history and one summary line.
  */
 #include <math.h>
@@ -40,6 +42,8 @@
 typedef struct args {
     double dx, box, height, end, cfl;
     double early_dx, early_box, early_height; /* the early phase's grid and box (0: those of the run) */
+    int threads;                              /* OpenMP threads of the run (0: the library default) */
+    double retract;                           /* fluid.ibm_retraction_dx */
     char check[16];
 } args;
 
@@ -69,6 +73,10 @@ static void parse(int argc, char **argv, args *a)
             a->early_box = atof(v);
         else if (!strcmp(k, "early_height"))
             a->early_height = atof(v);
+        else if (!strcmp(k, "retract"))
+            a->retract = atof(v);
+        else if (!strcmp(k, "threads"))
+            a->threads = atoi(v);
         else if (!strcmp(k, "check"))
             snprintf(a->check, sizeof a->check, "%s", v);
     }
@@ -113,6 +121,7 @@ static gf_status run(const args *a, double cfl, double t_end_nd, double dt_sampl
     spec.fluid.viscosity_Pa_s = eta;
     spec.fluid.lubrication = 0;
     spec.fluid.d_over_dx = a->dx;
+    spec.fluid.ibm_retraction_dx = a->retract;
     spec.fluid.cfl = cfl;
     spec.contact.t_contact_nd = 0.05; /* no contact happens; the DEM step only integrates the held force */
     spec.end_time_nd = t_end_nd;
@@ -120,7 +129,7 @@ static gf_status run(const args *a, double cfl, double t_end_nd, double dt_sampl
     GF_TRY(gf_run_spec_set_param(&ctx, &spec, "release_depth_over_D", 2.5));
     GF_TRY(gf_run_spec_set_param(&ctx, &spec, "box_over_D", a->box));
     GF_TRY(gf_run_spec_set_param(&ctx, &spec, "height_over_D", a->height));
-    gf_sim_options opt = {0};
+    gf_sim_options opt = {.n_threads = a->threads};
     gf_sim *sim = NULL;
     gf_status st = gf_sim_create(&ctx, &spec, &opt, &sim);
     if (st != GF_OK) {
@@ -203,10 +212,11 @@ int main(int argc, char **argv)
     double Re_ref = schiller_naumann_Re(AR), uT_ref = Re_ref * eta / (RHO * D) / sqrt(G * D);
     double Re = RHO * umax * sqrt(G * D) * D / eta;
     double F_end = late.n ? late.F[late.n - 1] : NAN; /* -> 1 at terminal velocity: F_h = -m g (Izard 2014 §2.2.2) */
-    printf("resolved settling: D/dx %g, box %g x %g D, cfl %g: early a/g = %.4f at D/dx %g (ref 2/3, %+.1f %%), "
+    printf("resolved settling: D/dx %g, box %g x %g D, cfl %g, retraction %g dx: "
+           "early a/g = %.4f at D/dx %g (ref 2/3, %+.1f %%), "
            "u_T/sqrt(gD) = %.4f at t = %.2f (ref %.4f, %+.1f %%), Re_T = %.2f (ref %.2f), F_h/(m g) at the end %.4f; "
            "wall %.1f s, cpu %.1f s (early %.1f s)\n",
-           a.dx, a.box, a.height, a.cfl, a0, ea.dx, 100 * (a0 / (2.0 / 3.0) - 1), umax, t_umax, uT_ref,
+           a.dx, a.box, a.height, a.cfl, a.retract, a0, ea.dx, 100 * (a0 / (2.0 / 3.0) - 1), umax, t_umax, uT_ref,
            100 * (umax / uT_ref - 1), Re, Re_ref, F_end, late.wall_s + early.wall_s, late.cpu_s + early.cpu_s,
            early.cpu_s);
     if (!strcmp(a.check, "fast")) {
