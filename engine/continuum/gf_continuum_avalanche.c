@@ -89,6 +89,11 @@ static void geometry(const gf_run_spec *spec, avalanche_geom *ag)
     };
 }
 
+static double end_time_s(const gf_run_spec *spec, const avalanche_geom *ag)
+{
+    return (spec->end_time_nd > 0.0 ? spec->end_time_nd : 200.0) * ag->t_grain;
+}
+
 static gf_status open_diagnostics(gf_ctx *ctx, const gf_run_spec *spec, const avalanche_geom *ag, const char *dir,
                                   const char *yaml, gf_nc_writer **w)
 {
@@ -121,7 +126,7 @@ static void sample(const gf_continuum *s, const avalanche_geom *ag, double v[5])
 static gf_status run_steps(gf_ctx *ctx, const gf_run_spec *spec, const avalanche_geom *ag, gf_continuum *s,
                            gf_nc_writer *w, volatile int *interrupt, gf_continuum_avalanche_result *r)
 {
-    double t_end = (spec->end_time_nd > 0.0 ? spec->end_time_nd : 200.0) * ag->t_grain;
+    double t_end = end_time_s(spec, ag);
     double every = spec->output.interval_nd * ag->t_grain, next = 0.0, v[5];
     while (1) {
         double t = gf_continuum_time(s);
@@ -166,4 +171,13 @@ gf_status gf_continuum_avalanche_run(gf_ctx *ctx, const gf_run_spec *spec, const
     gf_nc_writer_abort(&w);
     gf_continuum_destroy(&s);
     return st;
+}
+
+void gf_continuum_avalanche_size(const gf_run_spec *spec, double *cells, double *steps)
+{
+    avalanche_geom ag;
+    geometry(spec, &ag);
+    gf_continuum_params p = gf_continuum_layer_params(&ag.layer);
+    *cells = (double)p.n[0] * p.n[1] * p.n[2];
+    *steps = ceil(end_time_s(spec, &ag) / ag.layer.dt_s);
 }

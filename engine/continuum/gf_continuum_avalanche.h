@@ -49,6 +49,8 @@ typedef struct gf_continuum_avalanche_result {
     double surface_velocity_m_s;
 } gf_continuum_avalanche_result;
 
+/* The run's grid cells and time steps, from the spec alone (`grainflow check`'s cost estimate). */
+void gf_continuum_avalanche_size(const gf_run_spec *spec, double *cells, double *steps);
 /* output_dir and resolved_yaml may be NULL; interrupt (may be NULL) stops the run between steps. */
 gf_status gf_continuum_avalanche_run(gf_ctx *ctx, const gf_run_spec *spec, const char *output_dir,
                                      const char *resolved_yaml, volatile int *interrupt,

@@ -35,6 +35,11 @@ static gf_status geometry(gf_ctx *ctx, const gf_run_spec *spec, collapse_geom *c
     return GF_OK;
 }
 
+static double end_time_s(const gf_run_spec *spec, const collapse_geom *cg)
+{
+    return (spec->end_time_nd > 0.0 ? spec->end_time_nd : 6.0 * sqrt(cg->H0 / cg->D) + 10.0) * cg->t_grain;
+}
+
 static gf_continuum_params solver_params(const gf_run_spec *spec, const collapse_geom *cg)
 {
     const gf_continuum_spec *c = &spec->continuum;
@@ -123,7 +128,7 @@ static gf_status open_diagnostics(gf_ctx *ctx, const gf_run_spec *spec, const co
 static gf_status run_steps(gf_ctx *ctx, const gf_run_spec *spec, const collapse_geom *cg, gf_continuum *s,
                            gf_nc_writer *w, volatile int *interrupt, gf_continuum_collapse_result *r)
 {
-    double t_end = (spec->end_time_nd > 0.0 ? spec->end_time_nd : 6.0 * sqrt(cg->H0 / cg->D) + 10.0) * cg->t_grain;
+    double t_end = end_time_s(spec, cg);
     double every = spec->output.interval_nd * cg->t_grain, next = 0.0, front, height, volume;
     while (1) {
         double t = gf_continuum_time(s);
@@ -181,4 +186,14 @@ gf_status gf_continuum_collapse_run(gf_ctx *ctx, const gf_run_spec *spec, const 
     gf_nc_writer_abort(&w);
     gf_continuum_destroy(&s);
     return st;
+}
+
+gf_status gf_continuum_collapse_size(gf_ctx *ctx, const gf_run_spec *spec, double *cells, double *steps)
+{
+    collapse_geom cg;
+    GF_TRY(geometry(ctx, spec, &cg));
+    gf_continuum_params p = solver_params(spec, &cg);
+    *cells = (double)p.n[0] * p.n[1] * p.n[2];
+    *steps = ceil(end_time_s(spec, &cg) / p.dt_s);
+    return GF_OK;
 }

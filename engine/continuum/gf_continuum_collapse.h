@@ -37,6 +37,8 @@ double gf_continuum_collapse_extent(const gf_continuum *s, double depth_m);
  * D/4, interpolated linearly between column centres where it crosses D/4. */
 double gf_continuum_collapse_front(const gf_continuum *s, double phi, double D);
 
+/* The run's grid cells and time steps, from the spec alone (`grainflow check`'s cost estimate). */
+gf_status gf_continuum_collapse_size(gf_ctx *ctx, const gf_run_spec *spec, double *cells, double *steps);
 /* output_dir and resolved_yaml may be NULL; interrupt (may be NULL) stops the run between steps. */
 gf_status gf_continuum_collapse_run(gf_ctx *ctx, const gf_run_spec *spec, const char *output_dir,
                                     const char *resolved_yaml, volatile int *interrupt,

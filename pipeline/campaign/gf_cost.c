@@ -5,6 +5,9 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "continuum/gf_continuum_avalanche.h"
+#include "continuum/gf_continuum_collapse.h"
+#include "core/gf_status.h"
 #include "scenes/gf_scene.h"
 
 /*
@@ -23,6 +26,15 @@
 #define COST_DEM_S_PER_GRAIN_STEP 3.5e-8
 #define COST_FLUID_S_PER_GRAIN_STEP 8.8e-8
 #define COST_PACK_S_PER_GRAIN 2.5e-3
+/* method: continuum, CPU per cell and time step. The implicit mu(I) viscous
+ * solve (a sparse LU) dominates and its cost per cell grows with the grid:
+ * measured on configs/column_collapse_methods.yaml at cell D/2, quiet
+ * machine, one core: a = 0.5, 2 600 cells x 2 263 steps, 26.9 s (4.6 us per
+ * cell-step); a = 1, 6 624 cells x 3 200 steps, 147.5 s (7.0 us), i.e.
+ * 4.6 us x (cells / 2 600)^0.45. */
+#define COST_CONTINUUM_S_PER_CELL_STEP 4.6e-6
+#define COST_CONTINUUM_REF_CELLS 2600.0
+#define COST_CONTINUUM_CELL_EXPONENT 0.45
 /* netCDF-4 (deflated) bytes per grain and output record, same runs:
  * particles.nc 38.7 and 39.9, fields.nc 42 and 34 (the fluid grid follows
  * the domain, which follows the grains); diagnostics and probes ~100 kB. */
@@ -44,10 +56,34 @@ static double grain_estimate(const gf_scene_desc *scene, const gf_run_spec *s)
     return n > 0 ? n : NAN;
 }
 
+/* method: continuum: the grid's cells and steps; small files only. */
+static void continuum_estimate(const gf_run_spec *s, gf_run_cost *out)
+{
+    double cells = NAN, steps = NAN;
+    if (strcmp(s->scene, "avalanche") == 0) {
+        gf_continuum_avalanche_size(s, &cells, &steps);
+    } else {
+        gf_ctx ctx = {.log_level = GF_LOG_QUIET};
+        if (gf_continuum_collapse_size(&ctx, s, &cells, &steps) != GF_OK)
+            cells = steps = NAN;
+    }
+    out->n_grains = NAN;
+    out->n_cells = cells;
+    out->steps = steps;
+    out->cpu_s = cells * steps * COST_CONTINUUM_S_PER_CELL_STEP *
+                 pow(cells / COST_CONTINUUM_REF_CELLS, COST_CONTINUUM_CELL_EXPONENT);
+    out->output_bytes = COST_SMALL_FILES_B;
+}
+
 void gf_cost_estimate(const gf_run_spec *s, gf_run_cost *out)
 {
     const gf_scene_desc *scene = gf_scene_find(s->scene);
     memset(out, 0, sizeof *out);
+    out->n_cells = NAN;
+    if (strcmp(s->method, "continuum") == 0) {
+        continuum_estimate(s, out);
+        return;
+    }
     out->immersed = is_immersed(scene, s);
     out->may_stop_early = scene && scene->done != NULL;
     out->n_grains = grain_estimate(scene, s);

@@ -7,7 +7,8 @@
  *
  * with N the scene's grain estimate (gf_scene_desc.grain_count), c_fluid
  * only when immersed, and the per grain-step constants measured on this
- * code (gf_cost.c). A scene that stops at its own end condition (a deposit
+ * code (gf_cost.c). A run with method: continuum costs its cells times
+ * its time steps times a constant per cell-step instead. A scene that stops at its own end condition (a deposit
  * at rest) may finish earlier: its figures are upper bounds.
  */
 #ifndef GF_COST_H
@@ -18,7 +19,8 @@
 #include "gf_run_spec.h"
 
 typedef struct gf_run_cost {
-    double n_grains;       /* estimated grains, NaN when the scene gives no estimate */
+    double n_grains;       /* estimated grains, NaN when the scene gives no estimate (and for method: continuum) */
+    double n_cells;        /* method: continuum: the grid's cells; NaN for grains */
     double steps;          /* DEM steps from t = 0 to the end time; NaN when the end is the scene's condition only */
     double cpu_s;          /* estimated CPU seconds on one core; NaN when n_grains or steps is */
     double output_bytes;   /* estimated bytes of the netCDF files; NaN when unknown */

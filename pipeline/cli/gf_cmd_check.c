@@ -117,6 +117,11 @@ static void cost_text(const gf_run_cost *k, char *buf, size_t n)
     char cpu[32], out[32], grains[32], steps[32];
     gf_cost_format_time(k->cpu_s, cpu, sizeof cpu);
     gf_cost_format_bytes(k->output_bytes, out, sizeof out);
+    if (!isnan(k->n_cells)) { /* method: continuum */
+        snprintf(buf, n, "%s cells, %s steps, CPU %s (continuum), output %s", count_text(k->n_cells, 9, grains, sizeof grains),
+                 count_text(k->steps, 3, steps, sizeof steps), cpu, out);
+        return;
+    }
     snprintf(buf, n, "%s grains, %s steps, CPU %s%s, output %s%s", count_text(round(k->n_grains), 9, grains, sizeof grains),
              count_text(k->steps, 3, steps, sizeof steps), cpu, k->immersed ? " (DEM + fluid)" : "", out,
              k->may_stop_early ? " (at most: stops at rest)" : "");
@@ -129,8 +134,8 @@ static void warn_cost(const char *file, const gf_campaign_run *r, const gf_run_c
     const char *id = r->spec.run_id;
     if (k->cpu_s > GF_COST_WARN_CPU_S) {
         gf_cost_format_time(k->cpu_s, text, sizeof text);
-        fprintf(stderr, "%s: warning: run %d (%s) needs about %s of CPU (%.3g steps of %.0f grains)\n", file,
-                r->index, id, text, k->steps, k->n_grains);
+        fprintf(stderr, "%s: warning: run %d (%s) needs about %s of CPU (%.3g steps of %.0f %s)\n", file, r->index,
+                id, text, k->steps, isnan(k->n_cells) ? k->n_grains : k->n_cells, isnan(k->n_cells) ? "grains" : "cells");
     }
     if (k->output_bytes > GF_COST_WARN_BYTES) {
         gf_cost_format_bytes(k->output_bytes, text, sizeof text);
@@ -229,7 +234,7 @@ static int check_file(const char *file, const char *out_dir, const char *const *
         }
         warn_cost(file, r, &k);
         warn_realised_packing(file, out_dir, c, r);
-        total.n_grains += k.n_grains;
+        total.n_grains += isnan(k.n_cells) ? k.n_grains : 0.0; /* continuum runs have cells, not grains */
         total.steps += k.steps;
         total.cpu_s += k.cpu_s;
         total.output_bytes += k.output_bytes;

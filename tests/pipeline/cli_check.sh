@@ -25,6 +25,13 @@ n_head=$(grep -c '^# .*: campaign .*, scene ' out.txt)
   ok "check with one invalid file: exit 2, file:line:col, the others checked" ||
   fail "check with one invalid file: exit $rc; $(cat err.txt)"
 
+# method: continuum is priced by its grid: a = 0.5, R0 = 16 D, cell D/2 gives
+# (2 + 2.5 a) R0 / (D/2) = 104 by (1.3 H0 + 2 D) / (D/2) = 25 cells, and
+# 40 sqrt(D/g) / (0.1 (D/2) / sqrt(g H0)) = 2263 steps (engine/continuum/gf_continuum_collapse.c)
+"$g" check "$src/configs/column_collapse_methods.yaml" --brief --set grid.a=0.5 >out.txt 2>err.txt
+grep -q '^ *2600 cells, 2.26e+03 steps, CPU [0-9:]* (continuum)' out.txt && grep -q '[0-9]* grains, 2e+05 steps' out.txt &&
+  ok "continuum runs priced by cells and steps, DEM runs by grains" || fail "continuum cost: $(grep -E 'cells|grains' out.txt)"
+
 # a scene key the grid overrides is said, at the key
 "$g" check "$src/configs/column_collapse_dry.yaml" --brief --set scene.aspect_ratio=2 >out.txt 2>err.txt
 grep -q -- '--set scene.aspect_ratio=2: warning: scene.aspect_ratio is overridden by the group a that 4 of the 4 runs set' err.txt &&
