@@ -30,6 +30,7 @@ typedef struct gf_param_info {
 typedef struct gf_scene_desc {
     const char *name;
     const char *caption;         /* one line: what and after whom */
+    int internal;                /* 1: built only by the library (a preparation's container); a campaign cannot name it */
     unsigned needs;
     const gf_param_info *params;
     int n_params;

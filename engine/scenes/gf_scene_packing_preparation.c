@@ -78,6 +78,7 @@ static const char *prep_check(const gf_run_spec *spec, char *why, size_t n)
 const gf_scene_desc gf_scene_packing_preparation = {
     .name = "packing_preparation",
     .caption = "the container of a packing preparation (particles/gf_packing.h), grains added by the preparation",
+    .internal = 1,
     .needs = GF_NEED_CONTACTS,
     .params = prep_params,
     .n_params = (int)(sizeof prep_params / sizeof prep_params[0]),

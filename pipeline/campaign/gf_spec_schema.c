@@ -284,7 +284,8 @@ gf_status gf_spec_read(gf_ctx *ctx, const gf_cfg_doc *doc, const gf_cfg_node *ro
     const char *names[64];
     int nn = 0;
     for (int i = 0; i < n_scenes && nn < 63; ++i)
-        names[nn++] = all[i]->name;
+        if (!all[i]->internal)
+            names[nn++] = all[i]->name;
     names[nn] = NULL;
     GF_TRY(gf_cfg_to_name(ctx, doc, name_node, names, spec->scene, sizeof spec->scene));
     const gf_scene_desc *scene = gf_scene_find(spec->scene);

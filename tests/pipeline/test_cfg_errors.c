@@ -45,6 +45,9 @@ static void test_unknown_key_suggests_the_nearest(void)
     expect_error(BASE "contact:\n  zzzzzzzzzz: 1\n", GF_ERR_CONFIG, "t.yaml:3:3: unknown key 'zzzzzzzzzz' in contact");
     expect_error("scene: {name: binary_colision}\n", GF_ERR_CONFIG,
                  "t.yaml:1:15: name: unknown value 'binary_colision' (did you mean 'binary_collision'?)");
+    /* a scene only the library builds (a packing preparation's container) is not a campaign's */
+    expect_error("scene: {name: packing_preparation}\n", GF_ERR_CONFIG,
+                 "t.yaml:1:15: name: unknown value 'packing_preparation' (one of: avalanche,");
     expect_error(BASE "fluid: {model: unresolvd}\n", GF_ERR_CONFIG,
                  "t.yaml:2:16: model: unknown value 'unresolvd' (did you mean 'unresolved'?)");
 }
