@@ -63,24 +63,48 @@ static void run_id_unchanged(void)
     gf_campaign_destroy(&ca), gf_campaign_destroy(&cb), gf_campaign_destroy(&cc);
 }
 
+/* Loads the one-run campaign text and runs it through the campaign path into
+ * a fresh temporary folder (m->dir, removed by run_done); 0 when the text does not load. */
+typedef struct method_run {
+    gf_campaign *campaign;
+    char dir[64], run_dir[256];
+    gf_run_result res;
+} method_run;
+
+static int run_text(gf_ctx *ctx, const char *name, const char *text, method_run *m)
+{
+    m->campaign = NULL;
+    GF_CHECK_OK(gf_campaign_load_string(ctx, name, text, strlen(text), NULL, 0, &m->campaign), ctx);
+    if (!m->campaign)
+        return 0;
+    snprintf(m->dir, sizeof m->dir, "/tmp/gf_continuum_method_XXXXXX");
+    GF_CHECK(mkdtemp(m->dir) != NULL);
+    snprintf(m->run_dir, sizeof m->run_dir, "%s/run", m->dir);
+    gf_run_exec_opts opt = {.run_dir = m->run_dir, .campaign = name};
+    GF_CHECK_OK(gf_run_execute(ctx, &m->campaign->runs[0].spec, &opt, &m->res), ctx);
+    GF_CHECK(m->res.status == GF_OK);
+    return 1;
+}
+
+static void run_done(method_run *m)
+{
+    char cmd[400];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", m->dir);
+    GF_CHECK(system(cmd) == 0);
+    gf_campaign_destroy(&m->campaign);
+}
+
 static void small_collapse(void)
 {
     const char *text = "method: continuum\nend_time: 25\n"
                        "scene: {name: column_collapse, column_length_over_D: 16, aspect_ratio: 0.5}\n"
                        "grains: {diameter_m: 0.01, density_kg_m3: 2500}\ncontinuum: {cell_over_D: 1.0}\n";
     gf_ctx ctx = {0};
-    gf_campaign *c = NULL;
-    GF_CHECK_OK(gf_campaign_load_string(&ctx, "s.yaml", text, strlen(text), NULL, 0, &c), &ctx);
-    if (!c)
+    method_run m;
+    if (!run_text(&ctx, "s", text, &m))
         return;
-    char dir[] = "/tmp/gf_continuum_method_XXXXXX";
-    GF_CHECK(mkdtemp(dir) != NULL);
-    char run_dir[256];
-    snprintf(run_dir, sizeof run_dir, "%s/run", dir);
-    gf_run_exec_opts opt = {.run_dir = run_dir, .campaign = "s"};
-    gf_run_result res;
-    GF_CHECK_OK(gf_run_execute(&ctx, &c->runs[0].spec, &opt, &res), &ctx);
-    GF_CHECK(res.status == GF_OK);
+    const gf_campaign *c = m.campaign;
+    const char *run_dir = m.run_dir;
     char path[300];
     snprintf(path, sizeof path, "%s/diagnostics.nc", run_dir);
     GF_CHECK(access(path, R_OK) == 0);
@@ -93,10 +117,7 @@ static void small_collapse(void)
     GF_CHECK(fabs(r.mass_drift) < 1e-3);
     GF_CHECK(r.front_m > R0 + D);
     GF_CHECK_ABS(r.height_m, H0, D);
-    char cmd[400];
-    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
-    GF_CHECK(system(cmd) == 0);
-    gf_campaign_destroy(&c);
+    run_done(&m);
 }
 
 static double last_flow_rate(gf_ctx *ctx, const char *run_dir)
@@ -122,30 +143,19 @@ static void small_avalanche(void)
                        "grains: {diameter_m: 0.005, density_kg_m3: 2500}\n"
                        "continuum: {mu_s: 0.280, mu_2: 0.703, I0: 0.3, phi: 0.6, cell_over_D: 0.5}\n";
     gf_ctx ctx = {0};
-    gf_campaign *c = NULL;
-    GF_CHECK_OK(gf_campaign_load_string(&ctx, "v.yaml", text, strlen(text), NULL, 0, &c), &ctx);
-    if (!c)
+    method_run m;
+    if (!run_text(&ctx, "v", text, &m))
         return;
-    char dir[] = "/tmp/gf_continuum_method_XXXXXX";
-    GF_CHECK(mkdtemp(dir) != NULL);
-    char run_dir[256];
-    snprintf(run_dir, sizeof run_dir, "%s/run", dir);
-    gf_run_exec_opts opt = {.run_dir = run_dir, .campaign = "v"};
-    gf_run_result res;
-    GF_CHECK_OK(gf_run_execute(&ctx, &c->runs[0].spec, &opt, &res), &ctx);
-    GF_CHECK(res.status == GF_OK);
+    const gf_campaign *c = m.campaign;
     double D = 0.005, g = c->runs[0].spec.gravity_m_s2, W = 6.0 * D, phi = 0.6;
     gf_bagnold b = {.law = {.mu_s = 0.280, .mu_2 = 0.703, .I0 = 0.3}, .theta_rad = 25.0 * M_PI / 180.0, .phi = phi,
                     .g_m_s2 = g, .d_m = D, .h_m = 12.0 * D};
-    double q = last_flow_rate(&ctx, run_dir), q_exact = W * phi * gf_bagnold_flux(&b);
+    double q = last_flow_rate(&ctx, m.run_dir), q_exact = W * phi * gf_bagnold_flux(&b);
     printf("continuum avalanche 25 deg, h = 12 D, cell D/2: Q_g = %.5e m3/s at t = 300 sqrt(D/g), Bagnold %.5e "
            "(%+.2f %%), %ld steps\n",
-           q, q_exact, 100.0 * (q / q_exact - 1.0), res.steps);
+           q, q_exact, 100.0 * (q / q_exact - 1.0), m.res.steps);
     GF_CHECK_REL(q, q_exact, 1e-2);
-    char cmd[400];
-    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
-    GF_CHECK(system(cmd) == 0);
-    gf_campaign_destroy(&c);
+    run_done(&m);
 }
 
 int main(void)
