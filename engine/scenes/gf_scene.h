@@ -27,6 +27,11 @@ typedef struct gf_param_info {
     const char *doc;
 } gf_param_info;
 
+/* A descriptor's parameter and diagnostic tables with their lengths, e.g.
+ * { .name = "x", GF_SCENE_PARAMS(x_params), GF_SCENE_DIAG(x_diag), ... }. */
+#define GF_SCENE_PARAMS(table) .params = (table), .n_params = (int)(sizeof(table) / sizeof((table)[0]))
+#define GF_SCENE_DIAG(table) .diag = (table), .n_diag = (int)(sizeof(table) / sizeof((table)[0]))
+
 typedef struct gf_scene_desc {
     const char *name;
     const char *caption;         /* one line: what and after whom */

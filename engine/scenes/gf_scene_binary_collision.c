@@ -59,8 +59,7 @@ const gf_scene_desc gf_scene_binary_collision = {
     .name = "binary_collision",
     .caption = "two grains or grain-wall, oblique impact (Foerster et al. 1994; Izard 2014 §2.1.3.1)",
     .needs = GF_NEED_CONTACTS,
-    .params = collision_params,
-    .n_params = (int)(sizeof collision_params / sizeof collision_params[0]),
+    GF_SCENE_PARAMS(collision_params),
     .default_end_time_nd = 0.0,
     .build = collision_build,
 };

@@ -72,11 +72,9 @@ const gf_scene_desc gf_scene_bounce = {
     .name = "bounce",
     .caption = "a sphere falling onto a wall in a viscous fluid (Gondret et al. 2002; Izard 2014 §3.1)",
     .needs = GF_NEED_CONTACTS | GF_NEED_FLUID,
-    .params = bounce_params,
-    .n_params = (int)(sizeof bounce_params / sizeof bounce_params[0]),
+    GF_SCENE_PARAMS(bounce_params),
     .default_end_time_nd = 30.0,
     .build = bounce_build,
-    .n_diag = (int)(sizeof bounce_diag / sizeof bounce_diag[0]),
-    .diag = bounce_diag,
+    GF_SCENE_DIAG(bounce_diag),
     .diagnose = bounce_diagnose,
 };

@@ -55,8 +55,7 @@ const gf_scene_desc gf_scene_elastic_gas = {
     .name = "elastic_gas",
     .caption = "periodic granular gas, energy and momentum conservation",
     .needs = GF_NEED_CONTACTS,
-    .params = gas_params,
-    .n_params = (int)(sizeof gas_params / sizeof gas_params[0]),
+    GF_SCENE_PARAMS(gas_params),
     .default_end_time_nd = 10.0,
     .build = gas_build,
 };

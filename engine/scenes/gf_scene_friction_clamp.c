@@ -36,8 +36,7 @@ const gf_scene_desc gf_scene_friction_clamp = {
     .name = "friction_clamp",
     .caption = "a grain held by friction between two glued grains (static friction, contact history)",
     .needs = GF_NEED_CONTACTS,
-    .params = clamp_params,
-    .n_params = (int)(sizeof clamp_params / sizeof clamp_params[0]),
+    GF_SCENE_PARAMS(clamp_params),
     .default_end_time_nd = 10.0,
     .build = clamp_build,
 };
