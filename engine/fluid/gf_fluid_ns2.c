@@ -153,23 +153,14 @@ gf_status gf_fluid_ns2_viscous(gf_ctx *ctx, gf_fluid *f, const double *const r[3
     return GF_OK;
 }
 
-/* div u at every cell, times scale: gf_grid_divergence's sum (x, y, z faces in that order), by z-slabs on nt
- * threads. */
+/* div u at every cell, times scale (gf_grid_cell_divergence), by z-slabs on nt threads. */
 static void scaled_divergence(const gf_grid *g, const double *const u[3], double scale, int nt, double *div)
 {
 #pragma omp parallel for num_threads(nt) if (nt > 1) schedule(static)
     for (int k = 0; k < g->n[2]; ++k)
         for (int j = 0; j < g->n[1]; ++j)
-            for (int i = 0; i < g->n[0]; ++i) {
-                double s = 0.0;
-                for (int a = 0; a < 3; ++a) {
-                    int hi[3] = {i, j, k};
-                    hi[a] += 1;
-                    s += (u[a][gf_grid_face(g, a, hi[0], hi[1], hi[2])] - u[a][gf_grid_face(g, a, i, j, k)]) /
-                         g->h_m[a];
-                }
-                div[gf_grid_cell(g, i, j, k)] = s * scale;
-            }
+            for (int i = 0; i < g->n[0]; ++i)
+                div[gf_grid_cell(g, i, j, k)] = gf_grid_cell_divergence(g, u, NULL, i, j, k) * scale;
 }
 
 gf_status gf_fluid_ns2_project(gf_ctx *ctx, gf_fluid *f, double dt_s)

@@ -124,23 +124,27 @@ double gf_grid_face_from_cells(const gf_grid *g, const double *c, int a, int i, 
     return 0.5 * (c[gf_grid_cell(g, il[0], il[1], il[2])] + c[gf_grid_cell(g, ih[0], ih[1], ih[2])]);
 }
 
+double gf_grid_cell_divergence(const gf_grid *g, const double *const u[3], const double *coef, int i, int j, int k)
+{
+    double s = 0.0;
+    for (int a = 0; a < 3; ++a) {
+        int hi[3] = {i, j, k};
+        hi[a] += 1;
+        double ul = u[a][gf_grid_face(g, a, i, j, k)];
+        double uh = u[a][gf_grid_face(g, a, hi[0], hi[1], hi[2])];
+        if (coef) {
+            ul *= gf_grid_face_from_cells(g, coef, a, i, j, k);
+            uh *= gf_grid_face_from_cells(g, coef, a, hi[0], hi[1], hi[2]);
+        }
+        s += (uh - ul) / g->h_m[a];
+    }
+    return s;
+}
+
 void gf_grid_divergence(const gf_grid *g, const double *const u[3], const double *coef, double *div)
 {
     for (int k = 0; k < g->n[2]; ++k)
         for (int j = 0; j < g->n[1]; ++j)
-            for (int i = 0; i < g->n[0]; ++i) {
-                double s = 0.0;
-                for (int a = 0; a < 3; ++a) {
-                    int hi[3] = {i, j, k};
-                    hi[a] += 1;
-                    double ul = u[a][gf_grid_face(g, a, i, j, k)];
-                    double uh = u[a][gf_grid_face(g, a, hi[0], hi[1], hi[2])];
-                    if (coef) {
-                        ul *= gf_grid_face_from_cells(g, coef, a, i, j, k);
-                        uh *= gf_grid_face_from_cells(g, coef, a, hi[0], hi[1], hi[2]);
-                    }
-                    s += (uh - ul) / g->h_m[a];
-                }
-                div[gf_grid_cell(g, i, j, k)] = s;
-            }
+            for (int i = 0; i < g->n[0]; ++i)
+                div[gf_grid_cell(g, i, j, k)] = gf_grid_cell_divergence(g, u, coef, i, j, k);
 }

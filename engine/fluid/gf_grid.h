@@ -77,5 +77,7 @@ void gf_grid_cell_velocity(const gf_grid *g, int a, const double *u, double *uc)
 double gf_grid_face_from_cells(const gf_grid *g, const double *c, int a, int i, int j, int k);
 /* div(coef u) at every cell: coef is a cell field averaged to faces, NULL for 1. */
 void gf_grid_divergence(const gf_grid *g, const double *const u[3], const double *coef, double *div);
+/* The same at one cell (x, y, z faces summed in that order). */
+double gf_grid_cell_divergence(const gf_grid *g, const double *const u[3], const double *coef, int i, int j, int k);
 
 #endif
