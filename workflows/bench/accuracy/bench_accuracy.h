@@ -62,7 +62,8 @@ typedef struct bench_case {
     const double *tc_list;      /* optional: the case's own t_c sqrt(g/D) values (NULL: the common sweep) */
     int n_tc;
     int n_cell_quick;           /* --quick runs only the first n_cell_quick of cell_list (0: all of them) */
-    int cell_as_resolution;     /* 1: labels say D/dx = 1/cell_over_D (the resolved tier's grid) */
+    int cell_as_resolution;     /* labels: 0 cell/D; 1 D/dx = 1/cell_over_D (the resolved tier's grid);
+                                   2 the tier by the cell: below one D, resolved at D/dx, else unresolved */
     const double *retract_list; /* the case's fluid.ibm_retraction_dx values (BENCH_KNOB_RETRACT) */
     int n_retract;
 } bench_case;
@@ -83,6 +84,14 @@ gf_status bench_janssen_measure(gf_ctx *ctx, const bench_knobs *k, int full, ben
 extern const double bench_resolved_cells[], bench_resolved_retract[];
 int bench_resolved_available(const char **why);
 gf_status bench_resolved_measure(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out);
+/* The sphere of both: rho_p/rho 4, Ar 800, D = 10 mm, scene bounce with free-slip walls, released 2.5 D
+ * below the top of a box_over_D x height_over_D box; tier and its knobs left to the caller. */
+struct gf_run_spec;
+gf_status bench_settling_sphere_spec(gf_ctx *ctx, double box_over_D, double height_over_D, struct gf_run_spec *s);
+
+/* settling_terminal_tiers (bench_tiers.c): the same sphere's terminal velocity, unresolved and resolved tiers */
+extern const double bench_tiers_cells[];
+gf_status bench_tiers_measure(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out);
 
 /* Default of a knob for case c: the common default, or the first of the
  * case's own list when that list does not hold the common default. */

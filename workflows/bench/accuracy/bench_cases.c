@@ -61,6 +61,11 @@
  *                   (Izard 2014 eq. (2.34)), tolerance 5 %; knobs D/dx in
  *                   {8, 12, 16} (--quick: 8, 12) and the solid fraction's
  *                   retraction in {0, 0.3} dx (Breugem 2012).
+ *  settling_terminal_tiers (bench_tiers.c) the same sphere in a 6 D x 16 D
+ *                   box: u_T/sqrt(gD) against Schiller-Naumann 1.244
+ *                   (Izard 2014 eq. (2.35)), tolerance 3 %; the cell knob
+ *                   picks the tier: unresolved at cell/D in {3, 2, 1.5},
+ *                   resolved at D/dx = 8 (cell/D = 1/8).
  *  janssen_saturation (--full, bench_janssen.c) the 6 D x 30 D Janssen
  *                   column of test_janssen: saturation stress (lower-half
  *                   mean), mean of 3 seeds, against the same at dt = t_c/100,
@@ -590,6 +595,10 @@ static const bench_case cases[] = {
      "added mass C_M = 1/2: (2/3) g (Izard 2014 eq. (2.34))", "|a/a_added_mass - 1| (1)", 0.05,
      BENCH_KNOB_CELL | BENCH_KNOB_RETRACT, 0, bench_resolved_available, bench_resolved_measure, NULL,
      bench_resolved_cells, 0, 3, NULL, NULL, 0, 2, 1, bench_resolved_retract, 2},
+    {"settling_terminal_tiers", "terminal velocity u_T/sqrt(gD), the same sphere in a 6 D x 16 D box, both tiers (1)",
+     "Schiller & Naumann 1933 with C_D Re^2 = (4/3) Ar: 1.244 (Izard 2014 eq. (2.35))", "|u_T/u_SN - 1| (1)", 0.03,
+     BENCH_KNOB_CELL, 0, bench_resolved_available, bench_tiers_measure, NULL, bench_tiers_cells, 0, 4, NULL, NULL, 0,
+     0, 2, NULL, 0},
 };
 
 const bench_case *bench_cases(int *n)

@@ -167,7 +167,9 @@ void bench_print_cell_orders(const bench_point *pts, int n, const bench_case *ca
         for (int i = 0; i + 1 < m; ++i) {
             double e1 = s[i]->r.error, e2 = s[i + 1]->r.error, r = s[i]->k.cell_over_D / s[i + 1]->k.cell_over_D;
             double p = (e1 > 0.0 && e2 > 0.0) ? log(e1 / e2) / log(r) : NAN;
-            if (cases[c].cell_as_resolution)
+            if (cases[c].cell_as_resolution == 2 && (s[i]->k.cell_over_D < 1.0) != (s[i + 1]->k.cell_over_D < 1.0))
+                continue; /* two tiers: no order between them */
+            if (cases[c].cell_as_resolution == 1 || (cases[c].cell_as_resolution == 2 && s[i]->k.cell_over_D < 1.0))
                 printf("  D/dx %g->%g: p %.2f", 1.0 / s[i]->k.cell_over_D, 1.0 / s[i + 1]->k.cell_over_D, p);
             else
                 printf("  %gD->%gD: p %.2f", s[i]->k.cell_over_D, s[i + 1]->k.cell_over_D, p);

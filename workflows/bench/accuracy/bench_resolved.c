@@ -60,25 +60,31 @@ int bench_resolved_available(const char **why)
     return 1;
 }
 
-static gf_status early_spec(gf_ctx *ctx, const bench_knobs *k, gf_run_spec *s)
+gf_status bench_settling_sphere_spec(gf_ctx *ctx, double box_over_D, double height_over_D, gf_run_spec *s)
 {
     gf_run_spec_defaults(s);
     const double g = s->gravity_m_s2;
     snprintf(s->scene, sizeof s->scene, "bounce");
     s->grains = (gf_grains_spec){.diameter_m = RES_D, .polydispersity = 0.0, .density_kg_m3 = RES_RATIO * RES_RHO};
-    snprintf(s->fluid.model, sizeof s->fluid.model, "resolved");
     s->fluid.density_kg_m3 = RES_RHO;
     s->fluid.viscosity_Pa_s = sqrt(RES_RHO * (RES_RATIO - 1.0) * RES_RHO * g * pow(RES_D, 3) / RES_AR);
     s->fluid.lubrication = 0;
+    s->contact.t_contact_nd = 0.05; /* no contact happens: the DEM steps only integrate the hydrodynamic force */
+    GF_TRY(gf_run_spec_set_param(ctx, s, "bottom_no_slip", 0.0));
+    GF_TRY(gf_run_spec_set_param(ctx, s, "release_depth_over_D", 2.5));
+    GF_TRY(gf_run_spec_set_param(ctx, s, "box_over_D", box_over_D));
+    return gf_run_spec_set_param(ctx, s, "height_over_D", height_over_D);
+}
+
+static gf_status early_spec(gf_ctx *ctx, const bench_knobs *k, gf_run_spec *s)
+{
+    GF_TRY(bench_settling_sphere_spec(ctx, 4.0, 6.0, s));
+    snprintf(s->fluid.model, sizeof s->fluid.model, "resolved");
     s->fluid.d_over_dx = 1.0 / k->cell_over_D;
     s->fluid.ibm_retraction_dx = k->retract_dx;
     s->fluid.cfl = RES_DT_ND * s->fluid.d_over_dx;
-    s->contact.t_contact_nd = 0.05;
     s->end_time_nd = RES_T_END_ND;
-    GF_TRY(gf_run_spec_set_param(ctx, s, "bottom_no_slip", 0.0));
-    GF_TRY(gf_run_spec_set_param(ctx, s, "release_depth_over_D", 2.5));
-    GF_TRY(gf_run_spec_set_param(ctx, s, "box_over_D", 4.0));
-    return gf_run_spec_set_param(ctx, s, "height_over_D", 6.0);
+    return GF_OK;
 }
 
 /* Least squares F = c0 + c1 sqrt(t) + c2 t over the samples; returns c0. */

@@ -59,10 +59,13 @@ static void label_of(const bench_case *c, const bench_knobs *k, char *buf, size_
         n += snprintf(buf + n, len - (size_t)n, " skin=%g", k->skin_over_D);
     if (c->knobs & BENCH_KNOB_TC)
         n += snprintf(buf + n, len - (size_t)n, " tc=%g", k->t_contact_nd);
-    if ((c->knobs & BENCH_KNOB_CELL) && c->cell_as_resolution)
-        n += snprintf(buf + n, len - (size_t)n, "%sD/dx=%g", n ? " " : "", 1.0 / k->cell_over_D);
+    int resolved_grid = c->cell_as_resolution == 1 || (c->cell_as_resolution == 2 && k->cell_over_D < 1.0);
+    if (c->cell_as_resolution == 2)
+        n += snprintf(buf + n, len - (size_t)n, "%s%s", n ? " " : "", resolved_grid ? "resolved " : "unresolved ");
+    if ((c->knobs & BENCH_KNOB_CELL) && resolved_grid)
+        n += snprintf(buf + n, len - (size_t)n, "%sD/dx=%g", n && buf[n - 1] != ' ' ? " " : "", 1.0 / k->cell_over_D);
     else if (c->knobs & BENCH_KNOB_CELL)
-        n += snprintf(buf + n, len - (size_t)n, "%scell=%gD", n ? " " : "", k->cell_over_D);
+        n += snprintf(buf + n, len - (size_t)n, "%scell=%gD", n && buf[n - 1] != ' ' ? " " : "", k->cell_over_D);
     if (c->knobs & BENCH_KNOB_RETRACT)
         snprintf(buf + n, len - (size_t)n, "%sretract=%gdx", n ? " " : "", k->retract_dx);
 }
