@@ -90,8 +90,9 @@ struct gf_run_spec;
 gf_status bench_settling_sphere_spec(gf_ctx *ctx, double box_over_D, double height_over_D, struct gf_run_spec *s);
 
 /* settling_terminal_tiers (bench_tiers.c): the same sphere's terminal velocity, unresolved and resolved tiers */
-extern const double bench_tiers_cells[];
+extern const double bench_tiers_cells[], bench_tiers_unresolved_cells[];
 gf_status bench_tiers_measure(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out);
+gf_status bench_tiers_measure_tenneti(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out);
 
 /* Default of a knob for case c: the common default, or the first of the
  * case's own list when that list does not hold the common default. */

@@ -65,7 +65,10 @@
  *                   box: u_T/sqrt(gD) against Schiller-Naumann 1.244
  *                   (Izard 2014 eq. (2.35)), tolerance 3 %; the cell knob
  *                   picks the tier: unresolved at cell/D in {3, 2, 1.5},
- *                   resolved at D/dx = 8 (cell/D = 1/8).
+ *                   resolved at D/dx = 8 (cell/D = 1/8); the unresolved
+ *                   tier's default closure (di_felice). Its twin
+ *                   settling_terminal_tenneti: the unresolved cells with the
+ *                   closure tenneti (isolated limit Schiller-Naumann).
  *  janssen_saturation (--full, bench_janssen.c) the 6 D x 30 D Janssen
  *                   column of test_janssen: saturation stress (lower-half
  *                   mean), mean of 3 seeds, against the same at dt = t_c/100,
@@ -599,6 +602,10 @@ static const bench_case cases[] = {
      "Schiller & Naumann 1933 with C_D Re^2 = (4/3) Ar: 1.244 (Izard 2014 eq. (2.35))", "|u_T/u_SN - 1| (1)", 0.03,
      BENCH_KNOB_CELL, 0, bench_resolved_available, bench_tiers_measure, NULL, bench_tiers_cells, 0, 4, NULL, NULL, 0,
      0, 2, NULL, 0},
+    {"settling_terminal_tenneti", "terminal velocity u_T/sqrt(gD), the same, unresolved tier, closure tenneti (1)",
+     "Schiller & Naumann 1933 with C_D Re^2 = (4/3) Ar: 1.244 (Izard 2014 eq. (2.35))", "|u_T/u_SN - 1| (1)", 0.03,
+     BENCH_KNOB_CELL, 0, bench_resolved_available, bench_tiers_measure_tenneti, NULL, bench_tiers_unresolved_cells, 0,
+     3, NULL, NULL, 0, 0, 2, NULL, 0},
 };
 
 const bench_case *bench_cases(int *n)
