@@ -19,7 +19,7 @@
  * Breugem 2012, J. Comput. Phys. 231, §2.3). The fluid step is held at
  * 0.002 sqrt(D/g) for every grid (cfl = 0.002 D/dx on the free-fall speed
  * sqrt(gD)), so only the grid and the profile change; the fit's window then
- * holds 65 samples. No contact happens: t_c is set to 0.05 sqrt(D/g) so that
+ * holds ~65 samples. No contact happens: t_c is set to 0.05 sqrt(D/g) so that
  * the DEM sub-steps only integrate the held hydrodynamic force.
  */
 #include <math.h>
