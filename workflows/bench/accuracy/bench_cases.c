@@ -600,12 +600,12 @@ static const bench_case cases[] = {
      bench_resolved_cells, 0, 3, NULL, NULL, 0, 2, 1, bench_resolved_retract, 2},
     {"settling_terminal_tiers", "terminal velocity u_T/sqrt(gD), the same sphere in a 6 D x 16 D box, both tiers (1)",
      "Schiller & Naumann 1933 with C_D Re^2 = (4/3) Ar: 1.244 (Izard 2014 eq. (2.35))", "|u_T/u_SN - 1| (1)", 0.03,
-     BENCH_KNOB_CELL, 0, bench_resolved_available, bench_tiers_measure, NULL, bench_tiers_cells, 0, 4, NULL, NULL, 0,
-     0, 2, NULL, 0},
+     BENCH_KNOB_CELL, 0, bench_resolved_available, bench_tiers_measure, NULL, bench_tiers_cells, 0, 4,
+     "time of the largest speed, sqrt(D/g) (1)", NULL, 0, 0, 2, NULL, 0},
     {"settling_terminal_tenneti", "terminal velocity u_T/sqrt(gD), the same, unresolved tier, closure tenneti (1)",
      "Schiller & Naumann 1933 with C_D Re^2 = (4/3) Ar: 1.244 (Izard 2014 eq. (2.35))", "|u_T/u_SN - 1| (1)", 0.03,
      BENCH_KNOB_CELL, 0, bench_resolved_available, bench_tiers_measure_tenneti, NULL, bench_tiers_unresolved_cells, 0,
-     3, NULL, NULL, 0, 0, 2, NULL, 0},
+     3, "time of the largest speed, sqrt(D/g) (1)", NULL, 0, 0, 2, NULL, 0},
 };
 
 const bench_case *bench_cases(int *n)
