@@ -16,7 +16,7 @@
  *
  * Knobs: D/dx in {8, 12, 16} (cell_over_D = dx/D; --quick: 8 and 12), and
  * fluid.ibm_retraction_dx in {0, 0.3} (the profile centred on R - c dx,
- * Breugem 2012, J. Comput. Phys. 231, §2.3). The fluid step is held at
+ * Breugem, J. Comput. Phys. 231, 2012). The fluid step is held at
  * 0.002 sqrt(D/g) for every grid (cfl = 0.002 D/dx on the free-fall speed
  * sqrt(gD)), so only the grid and the profile change; the fit's window then
  * holds ~65 samples. No contact happens: t_c is set to 0.05 sqrt(D/g) so that
