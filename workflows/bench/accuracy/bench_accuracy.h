@@ -18,16 +18,24 @@
 
 #include "core/gf_status.h"
 
-enum { BENCH_KNOB_DT = 1u << 0, BENCH_KNOB_SKIN = 1u << 1, BENCH_KNOB_TC = 1u << 2, BENCH_KNOB_CELL = 1u << 3 };
+enum {
+    BENCH_KNOB_DT = 1u << 0,
+    BENCH_KNOB_SKIN = 1u << 1,
+    BENCH_KNOB_TC = 1u << 2,
+    BENCH_KNOB_CELL = 1u << 3,
+    BENCH_KNOB_RETRACT = 1u << 4 /* resolved tier: fluid.ibm_retraction_dx */
+};
 
 /* Defaults of the knobs a case does not sweep: the run-spec defaults. */
 #define BENCH_DEFAULT_DT_OVER_TC 0.02
 #define BENCH_DEFAULT_SKIN_OVER_D 0.1
 #define BENCH_DEFAULT_TC_ND 1e-2
 #define BENCH_DEFAULT_CELL_OVER_D 2.0
+#define BENCH_DEFAULT_RETRACT_DX 0.0
 
 typedef struct bench_knobs {
     double dt_over_tc, skin_over_D, t_contact_nd, cell_over_D;
+    double retract_dx; /* resolved tier: the solid fraction's profile centred on R - retract_dx dx */
 } bench_knobs;
 
 typedef struct bench_result {
@@ -53,6 +61,11 @@ typedef struct bench_case {
     const char *aux;            /* name and units of bench_result.aux; NULL when the case has none */
     const double *tc_list;      /* optional: the case's own t_c sqrt(g/D) values (NULL: the common sweep) */
     int n_tc;
+    int n_cell_quick;           /* --quick runs only the first n_cell_quick of cell_list (0: all of them) */
+    int cell_as_resolution;     /* labels: 0 cell/D; 1 D/dx = 1/cell_over_D (the resolved tier's grid);
+                                   2 the tier by the cell: below one D, resolved at D/dx, else unresolved */
+    const double *retract_list; /* the case's fluid.ibm_retraction_dx values (BENCH_KNOB_RETRACT) */
+    int n_retract;
 } bench_case;
 
 const bench_case *bench_cases(int *n);
@@ -66,6 +79,24 @@ gf_status bench_sphere_measure(gf_ctx *ctx, const bench_knobs *k, int full, benc
 extern const double bench_janssen_dt[], bench_janssen_tc[];
 int bench_janssen_available(const char **why);
 gf_status bench_janssen_measure(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out);
+
+/* resolved_early_acceleration (bench_resolved.c): early acceleration of the settling sphere, resolved tier */
+extern const double bench_resolved_cells[], bench_resolved_retract[];
+int bench_resolved_available(const char **why);
+gf_status bench_resolved_measure(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out);
+/* The sphere of both: rho_p/rho 4, Ar 800, D = 10 mm, scene bounce with free-slip walls, released 2.5 D
+ * below the top of a box_over_D x height_over_D box; tier and its knobs left to the caller. */
+struct gf_run_spec;
+gf_status bench_settling_sphere_spec(gf_ctx *ctx, double box_over_D, double height_over_D, struct gf_run_spec *s);
+
+/* settling_terminal_tiers (bench_tiers.c): the same sphere's terminal velocity, unresolved and resolved tiers */
+extern const double bench_tiers_cells[], bench_tiers_unresolved_cells[];
+gf_status bench_tiers_measure(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out);
+gf_status bench_tiers_measure_tenneti(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out);
+
+/* Default of a knob for case c: the common default, or the first of the
+ * case's own list when that list does not hold the common default. */
+double bench_case_default(const bench_case *c, unsigned knob);
 
 /* One measured point. */
 typedef struct bench_point {

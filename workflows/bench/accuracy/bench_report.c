@@ -62,32 +62,61 @@ void bench_analyse(bench_point *pts, int n, const bench_case *cases, int n_cases
     free(cost), free(err), free(idx), free(front);
 }
 
-/* Value of one knob (a BENCH_KNOB_* bit) of a setting, and its default. */
+/* Value of one knob (a BENCH_KNOB_* bit) of a setting. */
 static double knob_value(const bench_knobs *k, unsigned knob)
 {
-    return knob == BENCH_KNOB_DT     ? k->dt_over_tc
-           : knob == BENCH_KNOB_SKIN ? k->skin_over_D
-           : knob == BENCH_KNOB_TC   ? k->t_contact_nd
-                                     : k->cell_over_D;
+    return knob == BENCH_KNOB_DT        ? k->dt_over_tc
+           : knob == BENCH_KNOB_SKIN    ? k->skin_over_D
+           : knob == BENCH_KNOB_TC      ? k->t_contact_nd
+           : knob == BENCH_KNOB_RETRACT ? k->retract_dx
+                                        : k->cell_over_D;
 }
 
 static const bench_knobs bench_defaults = {BENCH_DEFAULT_DT_OVER_TC, BENCH_DEFAULT_SKIN_OVER_D, BENCH_DEFAULT_TC_ND,
-                                           BENCH_DEFAULT_CELL_OVER_D};
+                                           BENCH_DEFAULT_CELL_OVER_D, BENCH_DEFAULT_RETRACT_DX};
 
-/* Points of case c that vary only `knob` (every other knob at its default),
- * by decreasing value of the knob. */
-static int knob_sweep(const bench_point *pts, int n, int c, unsigned knob, const bench_point **out, int cap)
+static int list_holds(const double *list, int n, double v)
 {
-    static const unsigned all[4] = {BENCH_KNOB_DT, BENCH_KNOB_SKIN, BENCH_KNOB_TC, BENCH_KNOB_CELL};
+    for (int i = 0; i < n; ++i)
+        if (fabs(list[i] - v) <= 1e-12 * fmax(1.0, fabs(v)))
+            return 1;
+    return 0;
+}
+
+double bench_case_default(const bench_case *c, unsigned knob)
+{
+    double d = knob_value(&bench_defaults, knob);
+    const double *own = knob == BENCH_KNOB_DT        ? c->dt_list
+                        : knob == BENCH_KNOB_TC      ? c->tc_list
+                        : knob == BENCH_KNOB_CELL    ? c->cell_list
+                        : knob == BENCH_KNOB_RETRACT ? c->retract_list
+                                                     : NULL;
+    int n_own = knob == BENCH_KNOB_DT        ? c->n_dt
+                : knob == BENCH_KNOB_TC      ? c->n_tc
+                : knob == BENCH_KNOB_CELL    ? c->n_cell
+                : knob == BENCH_KNOB_RETRACT ? c->n_retract
+                                             : 0;
+    if (!(c->knobs & knob) || !own || n_own < 1 || list_holds(own, n_own, d))
+        return d;
+    return own[0];
+}
+
+/* Points of case c that vary only `knob` (every other knob at the case's
+ * default), by decreasing value of the knob. */
+static int knob_sweep(const bench_point *pts, int n, const bench_case *cases, int c, unsigned knob,
+                      const bench_point **out, int cap)
+{
+    static const unsigned all[5] = {BENCH_KNOB_DT, BENCH_KNOB_SKIN, BENCH_KNOB_TC, BENCH_KNOB_CELL,
+                                    BENCH_KNOB_RETRACT};
     int m = 0;
     for (int i = 0; i < n && m < cap; ++i) {
         const bench_point *p = &pts[i];
         if (p->case_index != c || p->status != GF_OK)
             continue;
         int at_defaults = 1;
-        for (int q = 0; q < 4; ++q) {
-            double v = knob_value(&p->k, all[q]), d = knob_value(&bench_defaults, all[q]);
-            if (all[q] != knob && fabs(v - d) > 1e-9 * fabs(d))
+        for (int q = 0; q < 5; ++q) {
+            double v = knob_value(&p->k, all[q]), d = bench_case_default(&cases[c], all[q]);
+            if (all[q] != knob && fabs(v - d) > 1e-9 * fmax(fabs(d), 1e-12))
                 at_defaults = 0;
         }
         if (!at_defaults)
@@ -107,7 +136,7 @@ void bench_print_orders(const bench_point *pts, int n, const bench_case *cases, 
     printf("\nmeasured convergence in dt (other knobs at default):\n");
     for (int c = 0; c < n_cases; ++c) {
         const bench_point *s[32];
-        int m = knob_sweep(pts, n, c, BENCH_KNOB_DT, s, 32);
+        int m = knob_sweep(pts, n, cases, c, BENCH_KNOB_DT, s, 32);
         if (m < 2)
             continue;
         printf("  %-17s", cases[c].name);
@@ -131,14 +160,19 @@ void bench_print_cell_orders(const bench_point *pts, int n, const bench_case *ca
         const bench_point *s[32];
         if (!(cases[c].knobs & BENCH_KNOB_CELL))
             continue;
-        int m = knob_sweep(pts, n, c, BENCH_KNOB_CELL, s, 32);
+        int m = knob_sweep(pts, n, cases, c, BENCH_KNOB_CELL, s, 32);
         if (m < 2)
             continue;
         printf("  %-17s", cases[c].name);
         for (int i = 0; i + 1 < m; ++i) {
             double e1 = s[i]->r.error, e2 = s[i + 1]->r.error, r = s[i]->k.cell_over_D / s[i + 1]->k.cell_over_D;
             double p = (e1 > 0.0 && e2 > 0.0) ? log(e1 / e2) / log(r) : NAN;
-            printf("  %gD->%gD: p %.2f", s[i]->k.cell_over_D, s[i + 1]->k.cell_over_D, p);
+            if (cases[c].cell_as_resolution == 2 && (s[i]->k.cell_over_D < 1.0) != (s[i + 1]->k.cell_over_D < 1.0))
+                continue; /* two tiers: no order between them */
+            if (cases[c].cell_as_resolution == 1 || (cases[c].cell_as_resolution == 2 && s[i]->k.cell_over_D < 1.0))
+                printf("  D/dx %g->%g: p %.2f", 1.0 / s[i]->k.cell_over_D, 1.0 / s[i + 1]->k.cell_over_D, p);
+            else
+                printf("  %gD->%gD: p %.2f", s[i]->k.cell_over_D, s[i + 1]->k.cell_over_D, p);
         }
         printf("\n");
     }
@@ -149,12 +183,12 @@ static gf_status write_csv(gf_ctx *ctx, const char *path, const bench_point *pts
     FILE *f = fopen(path, "w");
     if (!f)
         return GF_FAIL(ctx, GF_ERR_IO, "bench: cannot write %s", path);
-    fprintf(f, "case,dt_over_tc,skin_over_D,t_contact_nd,cell_over_D,observable,reference,error,tolerance,cpu_time_s,"
+    fprintf(f, "case,dt_over_tc,skin_over_D,t_contact_nd,cell_over_D,ibm_retraction_dx,observable,reference,error,tolerance,cpu_time_s,"
                "wall_time_s,on_front,recommended,status,aux_observable\n");
     for (int i = 0; i < n; ++i) {
         const bench_point *p = &pts[i];
-        fprintf(f, "%s,%.6g,%.6g,%.6g,%.6g,%.10g,%.10g,%.6g,%.3g,%.6g,%.6g,%d,%d,%s,", cases[p->case_index].name,
-                p->k.dt_over_tc, p->k.skin_over_D, p->k.t_contact_nd, p->k.cell_over_D, p->r.observable,
+        fprintf(f, "%s,%.6g,%.6g,%.6g,%.6g,%.6g,%.10g,%.10g,%.6g,%.3g,%.6g,%.6g,%d,%d,%s,", cases[p->case_index].name,
+                p->k.dt_over_tc, p->k.skin_over_D, p->k.t_contact_nd, p->k.cell_over_D, p->k.retract_dx, p->r.observable,
                 p->r.reference, p->r.error, cases[p->case_index].tolerance, p->r.cpu_s, p->wall_s, p->on_front,
                 p->recommended,
                 p->status == GF_OK ? "ok" : gf_status_str(p->status));
@@ -252,6 +286,7 @@ static gf_status write_nc(gf_ctx *ctx, const char *path, const bench_point *pts,
         {"skin_over_D", "1", "Verlet skin / grain diameter"},
         {"t_contact_nd", "1", "contact duration t_c sqrt(g/D)"},
         {"fluid_cell_over_D", "1", "fluid cell size / grain diameter"},
+        {"ibm_retraction_dx", "1", "resolved tier: retraction of the solid fraction's profile / grid spacing"},
         {"observable", "1", "measured observable (dimensionless; see case_observable)"},
         {"reference", "1", "reference value of the observable"},
         {"error", "1", "error against the reference"},
@@ -311,7 +346,7 @@ static gf_status write_nc(gf_ctx *ctx, const char *path, const bench_point *pts,
         NC(nc_put_var1_int(ncid, v_ci, &i1, &p->case_index));
         int ok = p->status == GF_OK;
         int has_aux = ok && cases[p->case_index].aux != NULL;
-        double vals[10] = {p->k.dt_over_tc, p->k.skin_over_D, p->k.t_contact_nd, p->k.cell_over_D,
+        double vals[11] = {p->k.dt_over_tc, p->k.skin_over_D, p->k.t_contact_nd, p->k.cell_over_D, p->k.retract_dx,
                            ok ? p->r.observable : NAN, ok ? p->r.reference : NAN, ok ? p->r.error : NAN,
                            ok ? p->r.cpu_s : NAN, ok ? p->wall_s : NAN, has_aux ? p->r.aux : NAN};
         for (int k = 0; k < n_dv; ++k)

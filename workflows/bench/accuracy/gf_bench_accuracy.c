@@ -11,11 +11,15 @@
  *   skin/D        in {0.05, 0.1, 0.2, 0.4}   (cost only: the Verlet list)
  *   t_c sqrt(g/D) in {1e-2, 5e-3}            (where the physics sees it)
  *   fluid cell/D  in {1.5, 2, 3, 4}          (where the fluid works)
+ *   fluid.ibm_retraction_dx                   (resolved tier only, its own list)
  * unless a case lists its own values (bench_case.dt_list, cell_list): the
  * fluid cases take cell/D in {4, 2, 1, 0.5} of a nominal D, the immersed
  * collapse cell/D in {4, 2, 1.5, 1} and dt/t_c in {1/20, 1/50}, the settling
  * sphere cell/D in {4, 3, 2.5, 2}, the Janssen column dt/t_c in
- * {1/20, 1/50, 1/100} and t_c sqrt(g/D) in {2e-2, 1e-2, 5e-3}. A case that
+ * {1/20, 1/50, 1/100} and t_c sqrt(g/D) in {2e-2, 1e-2, 5e-3}, the resolved
+ * sphere D/dx in {8, 12, 16} (--quick: 8, 12) and the retraction in {0, 0.3}
+ * dx. A knob's default is the common one, or the first of the case's own
+ * list when that list does not hold it. A case that
  * does not sweep dt (the grain-free fluid cases) runs at one dt.
  * --quick (default): the dt sweep with the other knobs at default, plus the
  *   sweep of each other knob at the default dt (t_c/50); a minute or two on
@@ -43,6 +47,7 @@ static const double dt_sweep[] = {1.0 / 10, 1.0 / 20, 1.0 / 50, 1.0 / 100, 1.0 /
 static const double skin_sweep[] = {0.05, 0.1, 0.2, 0.4};
 static const double tc_sweep[] = {1e-2, 5e-3};
 static const double cell_sweep[] = {1.5, 2.0, 3.0, 4.0};
+static const double retract_none[] = {BENCH_DEFAULT_RETRACT_DX}; /* no common sweep: only resolved cases list theirs */
 
 static void label_of(const bench_case *c, const bench_knobs *k, char *buf, size_t len)
 {
@@ -54,8 +59,15 @@ static void label_of(const bench_case *c, const bench_knobs *k, char *buf, size_
         n += snprintf(buf + n, len - (size_t)n, " skin=%g", k->skin_over_D);
     if (c->knobs & BENCH_KNOB_TC)
         n += snprintf(buf + n, len - (size_t)n, " tc=%g", k->t_contact_nd);
-    if (c->knobs & BENCH_KNOB_CELL)
-        snprintf(buf + n, len - (size_t)n, "%scell=%gD", n ? " " : "", k->cell_over_D);
+    int resolved_grid = c->cell_as_resolution == 1 || (c->cell_as_resolution == 2 && k->cell_over_D < 1.0);
+    if (c->cell_as_resolution == 2)
+        n += snprintf(buf + n, len - (size_t)n, "%s%s", n ? " " : "", resolved_grid ? "resolved " : "unresolved ");
+    if ((c->knobs & BENCH_KNOB_CELL) && resolved_grid)
+        n += snprintf(buf + n, len - (size_t)n, "%sD/dx=%g", n && buf[n - 1] != ' ' ? " " : "", 1.0 / k->cell_over_D);
+    else if (c->knobs & BENCH_KNOB_CELL)
+        n += snprintf(buf + n, len - (size_t)n, "%scell=%gD", n && buf[n - 1] != ' ' ? " " : "", k->cell_over_D);
+    if (c->knobs & BENCH_KNOB_RETRACT)
+        snprintf(buf + n, len - (size_t)n, "%sretract=%gdx", n ? " " : "", k->retract_dx);
 }
 
 /* Values of one knob for case c: the case's own list, else the common sweep.
@@ -69,51 +81,67 @@ static int knob_values(unsigned knobs, unsigned bit, const double *own, int n_ow
     return own ? n_own : n_common;
 }
 
-static bench_knobs knobs_at(const bench_case *c, const double *dt, int a, const double *cell, int q, int b,
-                            const double *tc, int t)
+/* A setting of case c: index a of dt, q of cell, b of skin, t of t_c, r of
+ * the retraction; -1: that knob at the case's default. */
+typedef struct knob_lists {
+    const double *dt, *cell, *tc, *retract;
+} knob_lists;
+
+static bench_knobs knobs_at(const bench_case *c, const knob_lists *l, int a, int q, int b, int t, int r)
 {
-    bench_knobs k = {BENCH_DEFAULT_DT_OVER_TC, BENCH_DEFAULT_SKIN_OVER_D, BENCH_DEFAULT_TC_ND,
-                     BENCH_DEFAULT_CELL_OVER_D};
+    bench_knobs k = {bench_case_default(c, BENCH_KNOB_DT), BENCH_DEFAULT_SKIN_OVER_D, bench_case_default(c, BENCH_KNOB_TC),
+                     bench_case_default(c, BENCH_KNOB_CELL), bench_case_default(c, BENCH_KNOB_RETRACT)};
     if (a >= 0 && (c->knobs & BENCH_KNOB_DT))
-        k.dt_over_tc = dt[a];
+        k.dt_over_tc = l->dt[a];
     if (q >= 0 && (c->knobs & BENCH_KNOB_CELL))
-        k.cell_over_D = cell[q];
+        k.cell_over_D = l->cell[q];
     if (b >= 0 && (c->knobs & BENCH_KNOB_SKIN))
         k.skin_over_D = skin_sweep[b];
     if (t >= 0 && (c->knobs & BENCH_KNOB_TC))
-        k.t_contact_nd = tc[t];
+        k.t_contact_nd = l->tc[t];
+    if (r >= 0 && (c->knobs & BENCH_KNOB_RETRACT))
+        k.retract_dx = l->retract[r];
     return k;
 }
+
+static int differs(double v, double d) { return fabs(v - d) > 1e-12 * fmax(1.0, fabs(d)); }
 
 /* Settings of case c: appends to ks (capacity cap), returns the count. */
 static int settings_of(const bench_case *c, int full, bench_knobs *ks, int cap)
 {
-    const double *dt, *cell, *tc;
-    int n_dt = knob_values(c->knobs, BENCH_KNOB_DT, c->dt_list, c->n_dt, dt_sweep, 5, &dt);
-    int n_cell = knob_values(c->knobs, BENCH_KNOB_CELL, c->cell_list, c->n_cell, cell_sweep, 4, &cell);
-    int n_tc = knob_values(c->knobs, BENCH_KNOB_TC, c->tc_list, c->n_tc, tc_sweep, 2, &tc);
+    knob_lists l;
+    int n_dt = knob_values(c->knobs, BENCH_KNOB_DT, c->dt_list, c->n_dt, dt_sweep, 5, &l.dt);
+    int n_cell = knob_values(c->knobs, BENCH_KNOB_CELL, c->cell_list, c->n_cell, cell_sweep, 4, &l.cell);
+    int n_tc = knob_values(c->knobs, BENCH_KNOB_TC, c->tc_list, c->n_tc, tc_sweep, 2, &l.tc);
+    int n_ret = knob_values(c->knobs, BENCH_KNOB_RETRACT, c->retract_list, c->n_retract, retract_none, 1, &l.retract);
     int n_skin = (c->knobs & BENCH_KNOB_SKIN) ? 4 : 1;
     int n = 0;
     if (full) {
         for (int a = 0; a < n_dt; ++a)
             for (int b = 0; b < n_skin; ++b)
                 for (int t = 0; t < n_tc; ++t)
-                    for (int q = 0; q < n_cell && n < cap; ++q)
-                        ks[n++] = knobs_at(c, dt, a, cell, q, b, tc, t);
+                    for (int r = 0; r < n_ret; ++r)
+                        for (int q = 0; q < n_cell && n < cap; ++q)
+                            ks[n++] = knobs_at(c, &l, a, q, b, t, r);
         return n;
     }
     /* --quick: the dt sweep at the other defaults, then each other knob's sweep at the default dt */
+    if (c->cell_list && c->n_cell_quick > 0 && c->n_cell_quick < n_cell)
+        n_cell = c->n_cell_quick;
     for (int a = 0; a < n_dt && n < cap; ++a)
-        ks[n++] = knobs_at(c, dt, a, cell, -1, -1, tc, -1);
+        ks[n++] = knobs_at(c, &l, a, -1, -1, -1, -1);
     for (int b = 0; (c->knobs & BENCH_KNOB_SKIN) && b < 4 && n < cap; ++b)
-        if (fabs(skin_sweep[b] - BENCH_DEFAULT_SKIN_OVER_D) > 1e-12)
-            ks[n++] = knobs_at(c, dt, -1, cell, -1, b, tc, -1);
+        if (differs(skin_sweep[b], BENCH_DEFAULT_SKIN_OVER_D))
+            ks[n++] = knobs_at(c, &l, -1, -1, b, -1, -1);
     for (int t = 0; (c->knobs & BENCH_KNOB_TC) && t < n_tc && n < cap; ++t)
-        if (fabs(tc[t] - BENCH_DEFAULT_TC_ND) > 1e-15)
-            ks[n++] = knobs_at(c, dt, -1, cell, -1, -1, tc, t);
+        if (differs(l.tc[t], bench_case_default(c, BENCH_KNOB_TC)))
+            ks[n++] = knobs_at(c, &l, -1, -1, -1, t, -1);
     for (int q = 0; (c->knobs & BENCH_KNOB_CELL) && q < n_cell && n < cap; ++q)
-        if (fabs(cell[q] - BENCH_DEFAULT_CELL_OVER_D) > 1e-12)
-            ks[n++] = knobs_at(c, dt, -1, cell, q, -1, tc, -1);
+        if (differs(l.cell[q], bench_case_default(c, BENCH_KNOB_CELL)))
+            ks[n++] = knobs_at(c, &l, -1, q, -1, -1, -1);
+    for (int r = 0; (c->knobs & BENCH_KNOB_RETRACT) && r < n_ret && n < cap; ++r)
+        if (differs(l.retract[r], bench_case_default(c, BENCH_KNOB_RETRACT)))
+            ks[n++] = knobs_at(c, &l, -1, -1, -1, -1, r);
     return n;
 }
 
