@@ -18,7 +18,7 @@
  *   (Gondret et al. 2002), e = V_R/V_I, eps = V_R/V_T, the contact time (gap <= 0 during
  *   the first contact).
  * Usage: resolved_bounce [dx=D/dx] [box=] [height=] [depth=] [end=] [ratio=] [Ar=] [eta_e=] [lub=0|1] [overlap_off=0|1]
- *        [check=st60]
+ *        [threads=n] [check=st60]
  *   check=st60: eps within +-0.05 of the thesis' 0.63 (slow, label open until it passes).
  */
 #include <math.h>
@@ -57,7 +57,7 @@ static int trace_push(trace *tr, double t, double v, double gap)
 
 typedef struct args {
     double dx, box, height, depth, end, ratio, Ar, eta_e;
-    int lub, overlap_off;
+    int lub, overlap_off, threads;            /* threads: OpenMP threads of the run (0: the library default) */
     char check[16];
 } args;
 
@@ -93,6 +93,8 @@ static void parse(int argc, char **argv, args *a)
             a->lub = (int)x;
         else if (!strcmp(k, "overlap_off"))
             a->overlap_off = (int)x;
+        else if (!strcmp(k, "threads"))
+            a->threads = (int)x;
         else if (!strcmp(k, "check"))
             snprintf(a->check, sizeof a->check, "%s", v);
     }
@@ -124,7 +126,7 @@ int main(int argc, char **argv)
     GF_CHECK_OK(gf_run_spec_set_param(&ctx, &spec, "box_over_D", a.box), &ctx);
     GF_CHECK_OK(gf_run_spec_set_param(&ctx, &spec, "height_over_D", a.height), &ctx);
     GF_CHECK_OK(gf_run_spec_set_param(&ctx, &spec, "release_depth_over_D", a.depth), &ctx);
-    gf_sim_options opt = {0};
+    gf_sim_options opt = {.n_threads = a.threads};
     gf_sim *sim = NULL;
     GF_CHECK_OK(gf_sim_create(&ctx, &spec, &opt, &sim), &ctx);
     if (!sim)
