@@ -38,6 +38,7 @@
 #include "core/gf_timer.h"
 #include "gf_sim.h"
 #include "gf_test.h"
+#include "stages/gf_early_force.h"
 
 typedef struct args {
     double dx, box, height, end, cfl;
@@ -160,32 +161,6 @@ static gf_status run(const args *a, double cfl, double t_end_nd, double dt_sampl
     return st;
 }
 
-/* Least squares F = c0 + c1 sqrt(t) + c2 t over t in [t0, t1]: c0 is the force as t -> 0 once the history
- * (Basset) force, which grows as sqrt(t) from a start at rest, is taken out. */
-static double early_force(const history *h, double t0, double t1)
-{
-    double A[3][3] = {{0}}, b[3] = {0};
-    for (int i = 0; i < h->n; ++i) {
-        if (h->t[i] < t0 || h->t[i] > t1)
-            continue;
-        double x[3] = {1.0, sqrt(h->t[i]), h->t[i]};
-        for (int r = 0; r < 3; ++r) {
-            b[r] += x[r] * h->F[i];
-            for (int c = 0; c < 3; ++c)
-                A[r][c] += x[r] * x[c];
-        }
-    }
-    for (int k = 0; k < 3; ++k) /* Gauss elimination, no pivoting (SPD normal equations) */
-        for (int r = k + 1; r < 3; ++r) {
-            double m = A[r][k] / A[k][k];
-            for (int c = k; c < 3; ++c)
-                A[r][c] -= m * A[k][c];
-            b[r] -= m * b[k];
-        }
-    double x2 = b[2] / A[2][2], x1 = (b[1] - A[1][2] * x2) / A[1][1];
-    return (b[0] - A[0][1] * x1 - A[0][2] * x2) / A[0][0];
-}
-
 int main(int argc, char **argv)
 {
     args a;
@@ -201,7 +176,7 @@ int main(int argc, char **argv)
     ea.box = a.early_box > 0.0 ? a.early_box : a.box;
     ea.height = a.early_height > 0.0 ? a.early_height : a.height;
     GF_CHECK(run(&ea, 0.002 * ea.dx, 0.15, 0.002, &early) == GF_OK);
-    double c0 = early_force(&early, 0.02, 0.15);
+    double c0 = gf_early_force_fit(early.t, early.F, early.n, 0.02, 0.15);
     double a0 = 1.0 - c0; /* du/dt / g as t -> 0 */
     printf("# terminal phase\n");
     GF_CHECK(run(&a, a.cfl, a.end, 0.05, &late) == GF_OK);

@@ -30,6 +30,7 @@
 #include "coupling/gf_coupling_tier.h"
 #include "gf_sim.h"
 #include "scenes/gf_scene.h"
+#include "stages/gf_early_force.h"
 
 #define RES_D 0.01
 #define RES_RHO 1000.0
@@ -87,29 +88,6 @@ static gf_status early_spec(gf_ctx *ctx, const bench_knobs *k, gf_run_spec *s)
     return GF_OK;
 }
 
-/* Least squares F = c0 + c1 sqrt(t) + c2 t over the samples; returns c0. */
-static double force_at_start(const double *t, const double *F, int n)
-{
-    double A[3][3] = {{0}}, b[3] = {0};
-    for (int i = 0; i < n; ++i) {
-        double x[3] = {1.0, sqrt(t[i]), t[i]};
-        for (int r = 0; r < 3; ++r) {
-            b[r] += x[r] * F[i];
-            for (int c = 0; c < 3; ++c)
-                A[r][c] += x[r] * x[c];
-        }
-    }
-    for (int k = 0; k < 3; ++k) /* normal equations: symmetric positive definite, no pivoting needed */
-        for (int r = k + 1; r < 3; ++r) {
-            double m = A[r][k] / A[k][k];
-            for (int c = k; c < 3; ++c)
-                A[r][c] -= m * A[k][c];
-            b[r] -= m * b[k];
-        }
-    double x2 = b[2] / A[2][2], x1 = (b[1] - A[1][2] * x2) / A[1][1];
-    return (b[0] - A[0][1] * x1 - A[0][2] * x2) / A[0][0];
-}
-
 /* Runs the early phase, sampling F_h/(m g) (upwards) inside the fit window. */
 static gf_status sample_force(gf_sim *sim, double g, double *t, double *F, int *n)
 {
@@ -146,7 +124,7 @@ gf_status bench_resolved_measure(gf_ctx *ctx, const bench_knobs *k, int full, be
     GF_TRY(st);
     if (n < 10)
         return GF_FAIL(ctx, GF_ERR_NUMERIC, "resolved_early_acceleration: %d samples in the fit window", n);
-    double a = 1.0 - force_at_start(t, F, n), ref = 2.0 / 3.0;
+    double a = 1.0 - gf_early_force_fit(t, F, n, RES_FIT_FROM_ND, RES_T_END_ND + 1e-9), ref = 2.0 / 3.0;
     *out = (bench_result){a, ref, fabs(a / ref - 1.0), cost, NAN};
     return GF_OK;
 }
