@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "core/gf_groups.h"
+#include "continuum/gf_continuum_run.h"
 #include "io/gf_nc.h"
 
 gf_continuum_params gf_continuum_layer_params(const gf_continuum_layer *l)
@@ -112,8 +113,10 @@ static gf_status open_diagnostics(gf_ctx *ctx, const gf_run_spec *spec, const av
     return gf_nc_diagnostics_open(ctx, path, &meta, avalanche_diag, 5, w);
 }
 
-static void sample(const gf_continuum *s, const avalanche_geom *ag, double v[5])
+/* The record of avalanche_diag (a gf_continuum_sampler; user: the avalanche_geom). */
+static void sample(const gf_continuum *s, void *user, double *v)
 {
+    const avalanche_geom *ag = user;
     double u_top, q;
     gf_continuum_layer_measure(s, &u_top, &q);
     v[0] = ag->width_m * ag->layer.phi * q;
@@ -126,23 +129,10 @@ static void sample(const gf_continuum *s, const avalanche_geom *ag, double v[5])
 static gf_status run_steps(gf_ctx *ctx, const gf_run_spec *spec, const avalanche_geom *ag, gf_continuum *s,
                            gf_nc_writer *w, volatile int *interrupt, gf_continuum_avalanche_result *r)
 {
-    double t_end = end_time_s(spec, ag);
-    double every = spec->output.interval_nd * ag->t_grain, next = 0.0, v[5];
-    while (1) {
-        double t = gf_continuum_time(s);
-        if (w && t >= next - 1e-9 * every) {
-            sample(s, ag, v);
-            GF_TRY(gf_nc_diagnostics_append(w, t, v));
-            next += every;
-        }
-        if (t >= t_end - 1e-9 * every)
-            break;
-        if (interrupt && *interrupt)
-            return GF_FAIL(ctx, GF_ERR_INTERRUPTED, "continuum avalanche interrupted at t = %g s", t);
-        GF_TRY(gf_continuum_step(s));
-        ++r->steps;
-    }
-    sample(s, ag, v);
+    double v[5];
+    GF_TRY(gf_continuum_run_until(ctx, s, end_time_s(spec, ag), spec->output.interval_nd * ag->t_grain, w,
+                                  sample, (void *)ag, interrupt, "continuum avalanche", &r->steps));
+    sample(s, (void *)ag, v);
     r->flow_rate_m3_s = v[0];
     r->surface_velocity_m_s = v[4];
     r->time_s = gf_continuum_time(s);

@@ -7,6 +7,7 @@
 
 #include "continuum/gf_continuum.h"
 #include "core/gf_groups.h"
+#include "continuum/gf_continuum_run.h"
 #include "io/gf_nc.h"
 #include "scenes/gf_scene.h"
 
@@ -125,27 +126,26 @@ static gf_status open_diagnostics(gf_ctx *ctx, const gf_run_spec *spec, const co
     return gf_nc_diagnostics_open(ctx, path, &meta, collapse_diag, 3, w);
 }
 
+typedef struct sample_ctx {
+    const collapse_geom *cg;
+    double phi;
+} sample_ctx;
+
+/* front_position, deposit_height, packing_fraction */
+static void sample_record(const gf_continuum *s, void *user, double *values)
+{
+    const sample_ctx *sc = user;
+    double front, height, volume, height_max;
+    measure(s, sc->cg, sc->phi, &front, &height, &volume, &height_max);
+    values[0] = front, values[1] = height_max, values[2] = sc->phi;
+}
+
 static gf_status run_steps(gf_ctx *ctx, const gf_run_spec *spec, const collapse_geom *cg, gf_continuum *s,
                            gf_nc_writer *w, volatile int *interrupt, gf_continuum_collapse_result *r)
 {
-    double t_end = end_time_s(spec, cg);
-    double every = spec->output.interval_nd * cg->t_grain, next = 0.0, front, height, volume;
-    while (1) {
-        double t = gf_continuum_time(s);
-        if (w && t >= next - 1e-9 * every) {
-            double height_max;
-            measure(s, cg, spec->continuum.phi, &front, &height, &volume, &height_max);
-            double v[3] = {front, height_max, spec->continuum.phi};
-            GF_TRY(gf_nc_diagnostics_append(w, t, v));
-            next += every;
-        }
-        if (t >= t_end - 1e-9 * every)
-            break;
-        if (interrupt && *interrupt)
-            return GF_FAIL(ctx, GF_ERR_INTERRUPTED, "continuum collapse interrupted at t = %g s", t);
-        GF_TRY(gf_continuum_step(s));
-        ++r->steps;
-    }
+    sample_ctx sc = {cg, spec->continuum.phi};
+    GF_TRY(gf_continuum_run_until(ctx, s, end_time_s(spec, cg), spec->output.interval_nd * cg->t_grain, w,
+                                  sample_record, &sc, interrupt, "continuum collapse", &r->steps));
     r->time_s = gf_continuum_time(s);
     return GF_OK;
 }

@@ -1,0 +1,23 @@
+/* The continuum scenes' time loop; see gf_continuum_run.h. */
+#include "continuum/gf_continuum_run.h"
+
+gf_status gf_continuum_run_until(gf_ctx *ctx, gf_continuum *s, double t_end_s, double every_s, gf_nc_writer *w,
+                                 gf_continuum_sampler sample, void *user, volatile int *interrupt, const char *what,
+                                 long *steps)
+{
+    double next = 0.0, values[16];
+    while (1) {
+        double t = gf_continuum_time(s);
+        if (w && t >= next - 1e-9 * every_s) {
+            sample(s, user, values);
+            GF_TRY(gf_nc_diagnostics_append(w, t, values));
+            next += every_s;
+        }
+        if (t >= t_end_s - 1e-9 * every_s)
+            return GF_OK;
+        if (interrupt && *interrupt)
+            return GF_FAIL(ctx, GF_ERR_INTERRUPTED, "%s interrupted at t = %g s", what, t);
+        GF_TRY(gf_continuum_step(s));
+        ++*steps;
+    }
+}
