@@ -67,7 +67,7 @@ gf_status gf_sim_setup_lubrication(gf_sim *s)
     s->lub_roughness_m = f->roughness_over_R * R;
     s->lub_cutoff_m = f->lub_cutoff_over_R * R;
     s->lub_in_overlap = !f->lub_overlap_off;
-    s->extra_m = s->lub_cutoff_m; /* the neighbour reach covers the lubrication range */
+    s->nb.extra_m = s->lub_cutoff_m; /* the neighbour reach covers the lubrication range */
     return GF_OK;
 }
 

@@ -55,9 +55,9 @@ static inline __attribute__((always_inline)) void pair_rows_impl(gf_sim *s, size
                                                                  const int linear, const int normal_only)
 {
     const gf_particles *p = s->p;
-    const gf_nlist *nl = s->nl;
+    const gf_nlist *nl = s->nb.nl;
     const double *x = p->x_m, *y = p->y_m, *z = p->z_m, *R = p->radius_m;
-    const double *restrict pair_meff = s->pair_meff, *restrict pair_sqrt_mk = s->pair_sqrt_mk;
+    const double *restrict pair_meff = s->nb.pair_meff, *restrict pair_sqrt_mk = s->nb.pair_sqrt_mk;
     uint8_t *restrict touching = nl->touching;
     double *restrict hist = nl->hist;
     const double lub_cut = s->lubrication ? s->lub_cutoff_m : 0.0;
@@ -65,7 +65,7 @@ static inline __attribute__((always_inline)) void pair_rows_impl(gf_sim *s, size
     const gf_contact_params cp = s->cp; /* local copy: history stores cannot alias it */
     size_t n_contacts = 0;
     double max_overlap = acc->max_overlap_m;
-    const double *vpx = s->vx_pred, *vpy = s->vy_pred, *vpz = s->vz_pred;
+    const double *vpx = s->nb.vx_pred, *vpy = s->nb.vy_pred, *vpz = s->nb.vz_pred;
     gf_contact_kernel *kernel = s->law->kernel;
     for (size_t i = i0; i < i1; ++i) {
         const double xi = x[i], yi = y[i], zi = z[i], ri = R[i];
@@ -170,7 +170,7 @@ static void pair_rows_table(gf_sim *s, size_t i0, size_t i1, double *const f[6],
 
 static gf_status reserve_accumulators(gf_sim *s, size_t n)
 {
-    for (int t = 0; t + 1 < s->nl->n_chunks; ++t) { /* the last chunk has no partners beyond it */
+    for (int t = 0; t + 1 < s->nb.nl->n_chunks; ++t) { /* the last chunk has no partners beyond it */
         gf_sim_accum *a = &s->acc[t];
         if (a->cap >= n)
             continue;
@@ -193,7 +193,7 @@ static gf_status reserve_accumulators(gf_sim *s, size_t n)
  * (the last chunk has none: everything into the store). */
 static void open_chunk(gf_sim *s, int c, double *const store[6], size_t n)
 {
-    const gf_nlist *nl = s->nl;
+    const gf_nlist *nl = s->nb.nl;
     gf_sim_accum *a = &s->acc[c];
     a->n_contacts = 0;
     a->max_overlap_m = 0.0;
@@ -217,7 +217,7 @@ static void open_chunk(gf_sim *s, int c, double *const store[6], size_t n)
  * once every chunk has run. */
 static void add_from_earlier_chunks(const gf_sim *s, int c, double *const store[6])
 {
-    const gf_nlist *nl = s->nl;
+    const gf_nlist *nl = s->nb.nl;
     const size_t lo = nl->chunk_row[c], hi = nl->chunk_row[c + 1];
     for (size_t r = 0; r < nl->n_reach_runs; ++r) {
         size_t b = nl->reach_run[2 * r], e = nl->reach_run[2 * r + 1];
@@ -246,7 +246,7 @@ static void wait_for_earlier_chunks(gf_sim *s, int c, unsigned long count)
 static void run_chunk(gf_sim *s, int c, double *const store[6], size_t n, unsigned long count, int own)
 {
     gf_sim_accum *a = &s->acc[c];
-    const size_t i0 = s->nl->chunk_row[c], i1 = s->nl->chunk_row[c + 1];
+    const size_t i0 = s->nb.nl->chunk_row[c], i1 = s->nb.nl->chunk_row[c + 1];
     a->finished = 0;
     a->finish_s = 0.0;
     open_chunk(s, c, store, n);
@@ -255,12 +255,12 @@ static void run_chunk(gf_sim *s, int c, double *const store[6], size_t n, unsign
     else if (s->law->kernel == gf_contact_linear && s->opt.tuning.generic_pair_loop)
         pair_rows_linear(s, i0, i1, store, a);
     else if (s->law->kernel == gf_contact_linear) {
-        if (s->near.use && !s->near.valid)
-            gf_sim_near_build_chunk(s, c);
+        if (s->nb.near.use && !s->nb.near.valid)
+            gf_near_list_build_chunk(&s->nb, s->p, s->lubrication ? s->lub_cutoff_m : 0.0, c);
         /* a step that ends here, on the thread that finishes the chunk: the
          * grains no earlier chunk reaches are finished as their rows complete
          * (their forces are then whole, and no other row reads them) */
-        a->finished = s->stepper.fuse && (s->nl->n_chunks == 1 || own);
+        a->finished = s->stepper.fuse && (s->nb.nl->n_chunks == 1 || own);
         a->finished_d2 = gf_sim_pair_rows_blocked_linear(s, i0, i1, store, a, a->finished);
     }
     else
@@ -283,12 +283,12 @@ static void run_chunk(gf_sim *s, int c, double *const store[6], size_t n, unsign
  * meanwhile). */
 static gf_drift_d2 complete_chunks(gf_sim *s, int t, int m, int drift, double *const store[6], unsigned long count)
 {
-    const int nc = s->nl->n_chunks;
+    const int nc = s->nb.nl->n_chunks;
     if (drift && nc == 1 && s->acc[0].finished) /* by the pair loop, row batch by row batch */
         return t == 0 ? s->acc[0].finished_d2 : (gf_drift_d2){0.0, 0.0};
     if (drift && m == nc && m > 1) {
         gf_drift_d2 d2[2];
-        const size_t lo = s->nl->chunk_row[t], hi = s->nl->chunk_row[t + 1];
+        const size_t lo = s->nb.nl->chunk_row[t], hi = s->nb.nl->chunk_row[t + 1];
         d2[0] = s->acc[t].finished ? s->acc[t].finished_d2 : gf_sim_finish_runs(s, lo, hi, 0);
         wait_for_earlier_chunks(s, t, count);
         add_from_earlier_chunks(s, t, store);
@@ -317,7 +317,7 @@ static void sum_chunk_totals(gf_sim *s)
     s->max_overlap_m = 0.0;
     for (int w = 0; w < s->n_walls; ++w)
         s->walls[w].force_N[0] = s->walls[w].force_N[1] = s->walls[w].force_N[2] = 0.0;
-    for (int t = 0; t < s->nl->n_chunks; ++t) {
+    for (int t = 0; t < s->nb.nl->n_chunks; ++t) {
         s->n_contacts += s->acc[t].n_contacts;
         if (s->acc[t].max_overlap_m > s->max_overlap_m)
             s->max_overlap_m = s->acc[t].max_overlap_m;
@@ -331,17 +331,17 @@ gf_status gf_sim_compute_forces(gf_sim *s)
 {
     gf_particles *p = s->p;
     size_t n = p->n_local;
-    if (!s->near.use) /* this evaluation runs over the whole list */
-        gf_sim_near_flush(s);
-    if (s->nl->n != n)
+    if (!s->nb.near.use) /* this evaluation runs over the whole list */
+        gf_near_list_flush(&s->nb);
+    if (s->nb.nl->n != n)
         GF_TRY(gf_sim_rebuild(s));
     GF_TRY(reserve_accumulators(s, n));
     GF_TRY(gf_sim_reserve(s, n));
     gf_step_state *stp = &s->stepper;
     if (stp->phase != GF_STEP_MOVED) { /* not called from a step: the dashpot sees v(t) itself */
-        memcpy(s->vx_pred, p->vx_m_s, n * sizeof(double));
-        memcpy(s->vy_pred, p->vy_m_s, n * sizeof(double));
-        memcpy(s->vz_pred, p->vz_m_s, n * sizeof(double));
+        memcpy(s->nb.vx_pred, p->vx_m_s, n * sizeof(double));
+        memcpy(s->nb.vy_pred, p->vy_m_s, n * sizeof(double));
+        memcpy(s->nb.vz_pred, p->vz_m_s, n * sizeof(double));
     }
     /* the drift zeroed [0, n_moved) on the threads that own them */
     gf_particles_clear_forces_from(p, stp->phase == GF_STEP_MOVED ? stp->n_moved : 0);
@@ -363,16 +363,16 @@ gf_status gf_sim_compute_forces(gf_sim *s)
     {
         const gf_team team = gf_sim_team();
         const int t = team.t, m = team.m;
-        for (int c = t; c < s->nl->n_chunks; c += m)
-            run_chunk(s, c, store, n, count, m == s->nl->n_chunks);
+        for (int c = t; c < s->nb.nl->n_chunks; c += m)
+            run_chunk(s, c, store, n, count, m == s->nb.nl->n_chunks);
         if (t == 0)
             used = m, drift_t0 = gf_wtime();
         d2[t] = complete_chunks(s, t, m, drift, store, count);
     }
     sum_chunk_totals(s);
-    if (s->near.use && !s->near.valid) { /* every chunk built its part */
-        s->near.valid = s->near.held = 1;
-        s->near.n_builds++;
+    if (s->nb.near.use && !s->nb.near.valid) { /* every chunk built its part */
+        s->nb.near.valid = s->nb.near.held = 1;
+        s->nb.near.n_builds++;
     }
     if (!drift) {
         stp->phase = GF_STEP_AT_T;

@@ -21,8 +21,8 @@
  * split (the results do not depend on the split: each grain alone). */
 void gf_sim_thread_grains(const gf_sim *s, size_t n, int t, int m, size_t *i0, size_t *i1)
 {
-    if (s->nl->n_chunks == m && s->nl->n == n) {
-        *i0 = s->nl->chunk_row[t], *i1 = s->nl->chunk_row[t + 1];
+    if (s->nb.nl->n_chunks == m && s->nb.nl->n == n) {
+        *i0 = s->nb.nl->chunk_row[t], *i1 = s->nb.nl->chunk_row[t + 1];
         return;
     }
     *i0 = (size_t)((long)n * (long)t / m), *i1 = (size_t)((long)n * (long)(t + 1) / m);
@@ -32,7 +32,7 @@ void gf_sim_thread_grains(const gf_sim *s, size_t n, int t, int m, size_t *i0, s
  * (no torque ever, GF_SKIP_TANGENTIAL). */
 gf_integrate_factors gf_sim_integrate_factors(const gf_sim *s)
 {
-    return (gf_integrate_factors){s->inv_mass, (s->skips & GF_SKIP_TANGENTIAL) ? NULL : s->inv_inertia, s->mobile};
+    return (gf_integrate_factors){s->nb.inv_mass, (s->skips & GF_SKIP_TANGENTIAL) ? NULL : s->nb.inv_inertia, s->nb.mobile};
 }
 
 /* The arrays the kicks and drift read besides the store: the displacement
@@ -40,9 +40,9 @@ gf_integrate_factors gf_sim_integrate_factors(const gf_sim *s)
  * displacement is the build's: the same arrays, no second stream. */
 static void drift_inputs(const gf_sim *s, gf_drift_refs *ref, gf_integrate_factors *k)
 {
-    const int near = s->near.skin_m > 0.0;
-    *ref = (gf_drift_refs){{s->x_ref, s->y_ref, s->z_ref},
-                           {near ? s->x_near : s->x_ref, near ? s->y_near : s->y_ref, near ? s->z_near : s->z_ref}};
+    const int near = s->nb.near.skin_m > 0.0;
+    *ref = (gf_drift_refs){{s->nb.x_ref, s->nb.y_ref, s->nb.z_ref},
+                           {near ? s->nb.x_near : s->nb.x_ref, near ? s->nb.y_near : s->nb.y_ref, near ? s->nb.z_near : s->nb.z_ref}};
     *k = gf_sim_integrate_factors(s);
 }
 
@@ -51,7 +51,7 @@ gf_drift_d2 gf_sim_kick_drift_range(gf_sim *s, size_t i0, size_t i1, int n_kicks
     gf_drift_refs ref;
     gf_integrate_factors k;
     drift_inputs(s, &ref, &k);
-    double *vp[3] = {s->vx_pred, s->vy_pred, s->vz_pred};
+    double *vp[3] = {s->nb.vx_pred, s->nb.vy_pred, s->nb.vz_pred};
     return gf_integrate_kick_drift(s->p, i0, i1, n_kicks, s->dt_s, s->gravity_m_s2, &ref, vp, &k);
 }
 
@@ -91,7 +91,7 @@ gf_drift_d2 gf_sim_finish_share(gf_sim *s, int t, int m)
  * and so do the chunks and the pair loop's row batches. */
 gf_drift_d2 gf_sim_finish_runs(gf_sim *s, size_t i0, size_t i1, int in_runs)
 {
-    const gf_nlist *nl = s->nl;
+    const gf_nlist *nl = s->nb.nl;
     const size_t *run = nl->reach_run, n_runs = nl->n_reach_runs;
     size_t r = 0, hi = n_runs; /* the first run that ends after i0 (row batches call this often) */
     while (r < hi) {

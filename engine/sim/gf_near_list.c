@@ -19,7 +19,7 @@
  * the neighbour-build schedule does not depend on the near list: the results
  * are bitwise the same (tests/engine/test_near_list.c) and a restart needs
  * nothing of it. While the near list holds its pairs' history, the
- * neighbour list's copy is stale; gf_sim_near_flush writes it back before
+ * neighbour list's copy is stale; gf_near_list_flush writes it back before
  * anything reads the list's history. The same idea is the inner skin of
  * two-level Verlet lists in molecular dynamics.
  *
@@ -32,39 +32,37 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "gf_sim_internal.h"
+#include "gf_neighbours.h"
 
-void gf_sim_near_check(gf_sim *s, double near_d2)
+void gf_near_list_check(gf_near_list *nr, double near_d2, int normal_only)
 {
-    gf_near_list *nr = &s->near;
-    nr->use = nr->skin_m > 0.0 && !(s->skips & GF_SKIP_TANGENTIAL); /* skin 0 unless the loop is the blocked one */
+    nr->use = nr->skin_m > 0.0 && !normal_only; /* skin 0 unless the loop is the blocked one */
     if (nr->valid && near_d2 > 0.25 * nr->skin_m * nr->skin_m)
         nr->valid = 0;
 }
 
-void gf_sim_near_free(gf_sim *s)
+void gf_near_list_free(gf_near_list *nr)
 {
-    gf_near_list *nr = &s->near;
     free(nr->i), free(nr->j), free(nr->k), free(nr->image), free(nr->touching);
     free(nr->hist), free(nr->sqrt_mk), free(nr->meff);
     nr->i = nr->j = nr->k = NULL, nr->image = nr->touching = NULL, nr->hist = nr->sqrt_mk = nr->meff = NULL;
     nr->cap = 0;
 }
 
-gf_status gf_sim_near_reserve(gf_sim *s)
+gf_status gf_near_list_reserve(gf_ctx *ctx, gf_neighbours *nb)
 {
-    gf_near_list *nr = &s->near;
-    if (nr->skin_m <= 0.0 || s->nl->n_pairs <= nr->cap)
+    gf_near_list *nr = &nb->near;
+    if (nr->skin_m <= 0.0 || nb->nl->n_pairs <= nr->cap)
         return GF_OK;
-    gf_sim_near_free(s); /* nothing held: a neighbour build precedes */
-    size_t cap = s->nl->n_pairs + s->nl->n_pairs / 4 + 64;
+    gf_near_list_free(nr); /* nothing held: a neighbour build precedes */
+    size_t cap = nb->nl->n_pairs + nb->nl->n_pairs / 4 + 64;
     nr->i = malloc(cap * sizeof *nr->i), nr->j = malloc(cap * sizeof *nr->j), nr->k = malloc(cap * sizeof *nr->k);
     nr->image = malloc(cap), nr->touching = malloc(cap);
     nr->hist = malloc(3 * cap * sizeof(double)), nr->sqrt_mk = malloc(cap * sizeof(double));
     nr->meff = malloc(cap * sizeof(double));
     if (!nr->i || !nr->j || !nr->k || !nr->image || !nr->touching || !nr->hist || !nr->sqrt_mk || !nr->meff) {
-        gf_sim_near_free(s);
-        return GF_FAIL(s->ctx, GF_ERR_NOMEM, "sim: cannot allocate the near list (%zu pairs)", cap);
+        gf_near_list_free(nr);
+        return GF_FAIL(ctx, GF_ERR_NOMEM, "sim: cannot allocate the near list (%zu pairs)", cap);
     }
     nr->cap = cap;
     return GF_OK;
@@ -72,11 +70,9 @@ gf_status gf_sim_near_reserve(gf_sim *s)
 
 /* Chunk c's pairs of the near list back into the neighbour list: history
  * and contact flags (the only per-pair data the pair loop writes). */
-static void write_back_chunk(const gf_sim *s, int c)
+static void write_back_chunk(const gf_near_list *nr, gf_nlist *nl, int c)
 {
-    const gf_near_list *nr = &s->near;
-    gf_nlist *nl = s->nl;
-    const size_t k0 = nl->row_start[nl->chunk_row[c]], m1 = k0 + s->acc[c].near_len;
+    const size_t k0 = nl->row_start[nl->chunk_row[c]], m1 = k0 + nr->len[c];
     for (size_t m = k0; m < m1; ++m) {
         const size_t k = k0 + (size_t)nr->k[m];
         nl->hist[3 * k] = nr->hist[3 * m];
@@ -86,31 +82,31 @@ static void write_back_chunk(const gf_sim *s, int c)
     }
 }
 
-void gf_sim_near_sync(const gf_sim *s)
+void gf_near_list_sync(const gf_neighbours *nb)
 {
-    if (!s->near.held)
+    if (!nb->near.held)
         return;
-    for (int c = 0; c < s->nl->n_chunks; ++c)
-        write_back_chunk(s, c);
+    for (int c = 0; c < nb->nl->n_chunks; ++c)
+        write_back_chunk(&nb->near, nb->nl, c);
 }
 
-void gf_sim_near_flush(gf_sim *s)
+void gf_near_list_flush(gf_neighbours *nb)
 {
-    gf_sim_near_sync(s);
-    s->near.held = s->near.valid = 0;
+    gf_near_list_sync(nb);
+    nb->near.held = nb->near.valid = 0;
 }
 
-void gf_sim_near_build_chunk(gf_sim *s, int c)
+void gf_near_list_build_chunk(gf_neighbours *nb, const gf_particles *p, double lub_reach_m, int c)
 {
-    gf_near_list *nr = &s->near;
-    const gf_nlist *nl = s->nl;
-    const gf_particles *p = s->p;
+    gf_near_list *nr = &nb->near;
+    const gf_nlist *nl = nb->nl;
     if (nr->held)
-        write_back_chunk(s, c);
+        write_back_chunk(nr, nb->nl, c);
     const size_t i0 = nl->chunk_row[c], i1 = nl->chunk_row[c + 1];
     const size_t k0 = nl->row_start[i0], k1 = nl->row_start[i1];
     const double *x = p->x_m, *y = p->y_m, *z = p->z_m, *R = p->radius_m;
-    const double range = (s->lubrication ? s->lub_cutoff_m : 0.0) + nr->skin_m;
+    const double *pair_sqrt_mk = nb->pair_sqrt_mk, *pair_meff = nb->pair_meff;
+    const double range = lub_reach_m + nr->skin_m;
     size_t m = k0;
     for (size_t k = k0; k < k1; ++k) { /* branch-free compaction: every field is written, the count advances or not */
         const int32_t i = nl->i[k], j = nl->j[k];
@@ -121,19 +117,11 @@ void gf_sim_near_build_chunk(gf_sim *s, int c)
         nr->touching[m] = nl->touching[k];
         nr->hist[3 * m] = nl->hist[3 * k], nr->hist[3 * m + 1] = nl->hist[3 * k + 1];
         nr->hist[3 * m + 2] = nl->hist[3 * k + 2];
-        nr->sqrt_mk[m] = s->pair_sqrt_mk[k], nr->meff[m] = s->pair_meff[k];
+        nr->sqrt_mk[m] = pair_sqrt_mk[k], nr->meff[m] = pair_meff[k];
         m += (size_t)((dx * dx + dy * dy + dz * dz < reach * reach) | (nl->touching[k] != 0));
     }
-    s->acc[c].near_len = m - k0;
-    memcpy(s->x_near + i0, x + i0, (i1 - i0) * sizeof(double));
-    memcpy(s->y_near + i0, y + i0, (i1 - i0) * sizeof(double));
-    memcpy(s->z_near + i0, z + i0, (i1 - i0) * sizeof(double));
-}
-
-gf_sim_list_stats gf_sim_list_counters(const gf_sim *s)
-{
-    gf_sim_list_stats st = {(long)s->nl->n_builds, s->near.n_builds, s->nl->n_pairs, 0};
-    for (int c = 0; c < s->nl->n_chunks && s->near.valid; ++c)
-        st.near_pairs += s->acc[c].near_len;
-    return st;
+    nr->len[c] = m - k0;
+    memcpy(nb->x_near + i0, x + i0, (i1 - i0) * sizeof(double));
+    memcpy(nb->y_near + i0, y + i0, (i1 - i0) * sizeof(double));
+    memcpy(nb->z_near + i0, z + i0, (i1 - i0) * sizeof(double));
 }

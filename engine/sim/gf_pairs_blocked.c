@@ -92,7 +92,7 @@ static inline __attribute__((always_inline)) void prefetch_candidate(const gf_si
                                                                      size_t k)
 {
     const gf_particles *p = s->p;
-    const double *const rd[9] = {s->vx_pred, s->vy_pred, s->vz_pred, p->vx_m_s, p->vy_m_s,
+    const double *const rd[9] = {s->nb.vx_pred, s->nb.vy_pred, s->nb.vz_pred, p->vx_m_s, p->vy_m_s,
                                  p->vz_m_s,  p->wx_rad_s, p->wy_rad_s, p->wz_rad_s};
     const double *const wr[6] = {p->fx_N, p->fy_N, p->fz_N, p->tx_N_m, p->ty_N_m, p->tz_N_m};
     for (int q = 0; q < 9; ++q)
@@ -117,7 +117,7 @@ static inline __attribute__((always_inline)) size_t scan_impl(const gf_sim *s, c
 {
     const double lub_cut = s->lub_cutoff_m;
     const gf_particles *p = s->p;
-    const gf_nlist *nl = s->nl;
+    const gf_nlist *nl = s->nb.nl;
     const double *x = p->x_m, *y = p->y_m, *z = p->z_m, *R = p->radius_m;
     const uint8_t *flags = p->flags;
     const int32_t *pi = v->i, *pj = v->j;
@@ -181,7 +181,7 @@ static inline __attribute__((always_inline)) void compute_impl(const gf_sim *s, 
 {
     const gf_particles *p = s->p;
     const double *restrict R = p->radius_m;
-    const double *restrict vpx = s->vx_pred, *restrict vpy = s->vy_pred, *restrict vpz = s->vz_pred;
+    const double *restrict vpx = s->nb.vx_pred, *restrict vpy = s->nb.vy_pred, *restrict vpz = s->nb.vz_pred;
     const double *restrict vx = p->vx_m_s, *restrict vy = p->vy_m_s, *restrict vz = p->vz_m_s;
     const double *restrict wx = p->wx_rad_s, *restrict wy = p->wy_rad_s, *restrict wz = p->wz_rad_s;
     const double *restrict sqrt_mk = v->sqrt_mk, *restrict meff = v->meff;
@@ -321,13 +321,13 @@ gf_drift_d2 gf_sim_pair_rows_blocked_linear(gf_sim *s, size_t i0, size_t i1, dou
 {
     pair_block b;
     row_sums rs = {.i = -1};
-    const gf_nlist *nl = s->nl;
+    const gf_nlist *nl = s->nb.nl;
     size_t k = nl->row_start[i0], k1 = nl->row_start[i1];
-    pair_view v = {nl->i, nl->j, nl->image, nl->touching, nl->hist, s->pair_sqrt_mk, s->pair_meff};
-    if (s->near.use) { /* the rows' near list (gf_near_list.c), stored from the same offset */
-        v = (pair_view){s->near.i, s->near.j, s->near.image, s->near.touching, s->near.hist, s->near.sqrt_mk,
-                        s->near.meff};
-        k1 = k + acc->near_len;
+    pair_view v = {nl->i, nl->j, nl->image, nl->touching, nl->hist, s->nb.pair_sqrt_mk, s->nb.pair_meff};
+    const gf_near_list *nr = &s->nb.near;
+    if (nr->use) { /* the rows' near list (gf_near_list.c), stored from the same offset */
+        v = (pair_view){nr->i, nr->j, nr->image, nr->touching, nr->hist, nr->sqrt_mk, nr->meff};
+        k1 = k + nr->len[acc - s->acc]; /* acc is the accumulator of these rows' chunk */
     }
     uint8_t any = 0; /* the rows reach grains >= i0 only (j > i) */
     for (size_t g = i0; g < nl->n; ++g)

@@ -89,7 +89,7 @@ gf_status gf_sim_set_box(gf_sim *s, const double lo[3], const double hi[3], cons
         s->lo_m[a] = lo[a], s->hi_m[a] = hi[a], s->periodic[a] = periodic ? periodic[a] != 0 : 0;
     }
     s->box_set = 1;
-    s->need_build = 1;
+    s->nb.need_build = 1;
     return GF_OK;
 }
 
@@ -169,7 +169,7 @@ gf_status gf_sim_set_wall_hole(gf_sim *s, int w, const double lo_m[3], const dou
 gf_status gf_sim_grains_moved(gf_sim *s)
 {
     s->stepper.phase = GF_STEP_STALE;
-    s->need_build = 1;
+    s->nb.need_build = 1;
     return GF_OK;
 }
 
@@ -212,7 +212,7 @@ gf_status gf_sim_set_rotation_locked(gf_sim *s, int locked)
     if (s->rotation_locked)
         for (size_t i = 0; i < p->n_local; ++i)
             p->wx_rad_s[i] = p->wy_rad_s[i] = p->wz_rad_s[i] = 0.0;
-    s->need_build = 1; /* the integrator factors are refreshed at the next build */
+    s->nb.need_build = 1; /* the integrator factors are refreshed at the next build */
     s->stepper.phase = GF_STEP_STALE;
     return GF_OK;
 }
@@ -249,7 +249,7 @@ gf_status gf_sim_check_state(gf_sim *s)
     if (p->n_local == 0)
         return GF_OK;
     GF_TRY(gf_sim_rebuild(s));
-    const gf_nlist *nl = s->nl;
+    const gf_nlist *nl = s->nb.nl;
     for (size_t i = 0; i < p->n_local; ++i)
         for (size_t k = nl->row_start[i]; k < nl->row_start[i + 1]; ++k) {
             size_t j = (size_t)nl->j[k];
@@ -352,22 +352,22 @@ static gf_status create_inner(gf_sim *s, const gf_run_spec *spec, const gf_sim_o
     GF_TRY(compute_scales(s));
     if (!(s->spec.contact.skin_over_D > 0.0))
         return GF_FAIL(s->ctx, GF_ERR_CONFIG, "contact.skin_over_D: must be > 0 (got %g)", s->spec.contact.skin_over_D);
-    s->skin_m = s->spec.contact.skin_over_D * s->spec.grains.diameter_m;
+    s->nb.skin_m = s->spec.contact.skin_over_D * s->spec.grains.diameter_m;
     /* only the blocked linear loop scans a near list (gf_near_list.c) */
     const int blocked = s->law->kernel == gf_contact_linear && !s->opt.tuning.generic_pair_loop;
-    s->near.skin_m = (s->opt.tuning.near_skin < 0.0 || !blocked) ? 0.0
-                     : (s->opt.tuning.near_skin == 0.0 ? GF_SIM_NEAR_SKIN_DEFAULT : fmin(s->opt.tuning.near_skin, 1.0)) * s->skin_m;
+    s->nb.near.skin_m = (s->opt.tuning.near_skin < 0.0 || !blocked) ? 0.0
+                     : (s->opt.tuning.near_skin == 0.0 ? GF_SIM_NEAR_SKIN_DEFAULT : fmin(s->opt.tuning.near_skin, 1.0)) * s->nb.skin_m;
     if (!(s->spec.contact.sleep_speed_nd >= 0.0 && s->spec.contact.sleep_speed_nd <= 0.05))
         return GF_FAIL(s->ctx, GF_ERR_CONFIG,
                        "contact.sleep_speed_nd: must be in [0, 0.05] (got %g; above 0.05 a grain at the top of a "
                        "hop could be taken for one at rest)", s->spec.contact.sleep_speed_nd);
     s->n_threads = pick_threads(opt);
-    s->sort_every = s->opt.tuning.sort_every == 0 ? GF_SIM_SORT_EVERY_DEFAULT : (s->opt.tuning.sort_every < 0 ? 0 : s->opt.tuning.sort_every);
-    s->store_layout = -1;
+    s->nb.sort_every = s->opt.tuning.sort_every == 0 ? GF_SIM_SORT_EVERY_DEFAULT : (s->opt.tuning.sort_every < 0 ? 0 : s->opt.tuning.sort_every);
+    s->nb.store_layout = -1;
     s->gravity_m_s2[1] = -s->spec.gravity_m_s2; /* y is vertical (docs/output.md) unless the scene says */
     gf_rng_seed(&s->rng, s->spec.seed);
     GF_TRY(gf_particles_create(s->ctx, 1024, &s->p));
-    GF_TRY(gf_nlist_create(s->ctx, &s->nl));
+    GF_TRY(gf_nlist_create(s->ctx, &s->nb.nl));
     s->in_build = 1;
     GF_TRY(s->scene->build(s, &s->spec));
     s->in_build = 0;
@@ -407,12 +407,10 @@ gf_status gf_sim_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_sim_optio
     memset(s, 0, bytes);
     s->ctx = ctx;
     gf_status st = create_inner(s, spec, opt);
-    if (st != GF_OK) {
-        gf_sim_destroy(&s);
-        return st;
-    }
+    if (st != GF_OK)
+        gf_sim_destroy(&s); /* and s = NULL: the caller gets no sim */
     *out = s;
-    return GF_OK;
+    return st;
 }
 
 void gf_sim_destroy(gf_sim **ps)
@@ -422,12 +420,9 @@ void gf_sim_destroy(gf_sim **ps)
     gf_sim *s = *ps;
     gf_coupling_destroy(&s->coupling);
     gf_particles_destroy(&s->p);
-    gf_nlist_destroy(&s->nl);
-    gf_soa_free(s->ref_block);
+    gf_neighbours_free(&s->nb);
     free(s->wall_hist);
-    free(s->pair_meff), free(s->pair_sqrt_mk), free(s->wall_cand), free(s->wall_contacts);
     free(s->sleep_quiet_steps);
-    gf_sim_near_free(s);
     for (int t = 0; t < GF_SIM_MAX_THREADS; ++t)
         gf_soa_free(s->acc[t].buf_block);
     free(s);

@@ -10,8 +10,8 @@
 
 const gf_nlist *gf_sim_neighbour_list(const gf_sim *s)
 {
-    gf_sim_near_sync(s); /* the near list's history into the list's (gf_near_list.c) */
-    return s->nl;
+    gf_near_list_sync(&s->nb); /* the near list's history into the list's (gf_near_list.c) */
+    return s->nb.nl;
 }
 
 gf_status gf_sim_rebuild_neighbours(gf_sim *s)
@@ -21,13 +21,13 @@ gf_status gf_sim_rebuild_neighbours(gf_sim *s)
 
 void gf_sim_rebuild_at_next_step(gf_sim *s)
 {
-    s->need_build = 1;
+    s->nb.need_build = 1;
 }
 
 void gf_sim_forget_pair_history(gf_sim *s)
 {
-    gf_sim_near_flush(s); /* the list's history is then the only one */
-    gf_nlist_clear_history(s->nl);
+    gf_near_list_flush(&s->nb); /* the list's history is then the only one */
+    gf_nlist_clear_history(s->nb.nl);
 }
 
 gf_status gf_sim_evaluate_forces(gf_sim *s)
@@ -73,7 +73,9 @@ int gf_sim_gauge_position(const gf_sim *s, const char *name, double x_m[3])
 gf_status gf_sim_sort(gf_sim *s)
 {
     GF_TRY(gf_sim_reserve(s, s->p->n_local));
-    GF_TRY(gf_sim_sort_grains(s));
+    const gf_nb_grains g = gf_sim_nb_grains(s);
+    const gf_nb_tuning t = gf_sim_nb_tuning(s);
+    GF_TRY(gf_sort_grains(s->ctx, &s->nb, &g, &t));
     GF_TRY(gf_sim_rebuild(s));
     return gf_sim_compute_forces(s);
 }

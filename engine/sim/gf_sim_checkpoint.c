@@ -42,9 +42,9 @@ static gf_checkpoint_view state_view(gf_sim *s)
     gf_checkpoint_view v = {.scene = s->spec.scene, .p = s->p, .step = &s->step, .t_s = &s->t_s, .dt_s = &s->dt_s,
                             .t_end_s = &s->t_end_s, .max_overlap_m = &s->max_overlap_m,
                             .n_contacts = &s->n_contacts, .rng_s = s->rng.s, .gravity_m_s2 = s->gravity_m_s2,
-                            .n_rebuilds = &s->n_rebuilds, .store_layout = &s->store_layout,
+                            .n_rebuilds = &s->nb.n_rebuilds, .store_layout = &s->nb.store_layout,
                             .scene_counters = s->scene_counters, .n_scene_counters = GF_SIM_SCENE_COUNTERS,
-                            .n_walls = s->n_walls, .ref_m = {s->x_ref, s->y_ref, s->z_ref},
+                            .n_walls = s->n_walls, .ref_m = {s->nb.x_ref, s->nb.y_ref, s->nb.z_ref},
                             .wall_hist = s->wall_hist};
     for (int w = 0; w < s->n_walls; ++w)
         v.wall_active[w] = &s->walls[w].active, v.wall_force_N[w] = s->walls[w].force_N;
@@ -56,7 +56,7 @@ static gf_checkpoint_view state_view(gf_sim *s)
 static gf_status collect_pairs(gf_sim *s, gf_checkpoint_view *v)
 {
     const gf_particles *p = s->p;
-    const gf_nlist *nl = s->nl;
+    const gf_nlist *nl = s->nb.nl;
     size_t m = 0;
     for (size_t k = 0; k < nl->n_pairs; ++k)
         m += nl->hist[3 * k] != 0.0 || nl->hist[3 * k + 1] != 0.0 || nl->hist[3 * k + 2] != 0.0;
@@ -82,7 +82,7 @@ gf_status gf_sim_checkpoint(gf_sim *s, const char *path)
 {
     if (s->stepper.phase != GF_STEP_AT_T)
         GF_TRY(gf_sim_compute_forces(s));
-    gf_sim_near_sync(s); /* the near list's history into the list's (gf_near_list.c) */
+    gf_near_list_sync(&s->nb); /* the near list's history into the list's (gf_near_list.c) */
     gf_checkpoint_view v = state_view(s);
     gf_status st = collect_pairs(s, &v);
     if (st == GF_OK)
@@ -104,9 +104,13 @@ gf_status gf_sim_checkpoint(gf_sim *s, const char *path)
  * schedule (sort_state) is left as it was. */
 static gf_status resort_for_threads(gf_sim *s, int layout_saved)
 {
-    if (!layout_saved || s->store_layout < 0 || s->store_layout == gf_sim_sort_layout(s) || !gf_sim_sorts(s))
+    const gf_nb_grains g = gf_sim_nb_grains(s);
+    const gf_nb_tuning t = gf_sim_nb_tuning(s);
+    const size_t n = s->p->n_local;
+    if (!layout_saved || s->nb.store_layout < 0 || s->nb.store_layout == gf_sort_layout(t.n_chunks, n) ||
+        !gf_sort_enabled(&s->nb, &t, n))
         return GF_OK;
-    GF_TRY(gf_sim_sort_grains(s));
+    GF_TRY(gf_sort_grains(s->ctx, &s->nb, &g, &t));
     return gf_sim_rebuild_unscheduled(s);
 }
 
@@ -114,10 +118,10 @@ static gf_status resort_for_threads(gf_sim *s, int layout_saved)
  * reference positions (which reproduces the original list). */
 static gf_status apply_pairs(gf_sim *s, const gf_checkpoint_view *v)
 {
-    gf_nlist_clear_history(s->nl); /* the preparation's contacts are not the checkpoint's */
+    gf_nlist_clear_history(s->nb.nl); /* the preparation's contacts are not the checkpoint's */
     GF_TRY(gf_sim_rebuild_from_ref(s));
     for (size_t q = 0; q < v->n_pairs; ++q)
-        if (!gf_nlist_set_history(s->nl, s->p->id, v->pair_ids[2 * q], v->pair_ids[2 * q + 1], &v->pair_hist[3 * q]))
+        if (!gf_nlist_set_history(s->nb.nl, s->p->id, v->pair_ids[2 * q], v->pair_ids[2 * q + 1], &v->pair_hist[3 * q]))
             return GF_FAIL(s->ctx, GF_ERR_IO, "restart: contact (%lld, %lld) of the checkpoint is not a neighbour pair",
                            (long long)v->pair_ids[2 * q], (long long)v->pair_ids[2 * q + 1]);
     return GF_OK;

@@ -16,68 +16,14 @@
 
 #include "contact/gf_contact.h"
 #include "contact/gf_nlist.h"
+#include "gf_neighbours.h"
 #include "coupling/gf_coupling.h"
 #include "gf_sim.h"
 #include "scenes/gf_scene.h"
 #include "integrate/gf_integrate.h"
 
-#define GF_SIM_MAX_WALLS 16
 #define GF_SIM_MAX_GAUGES 64
-#define GF_SIM_MAX_THREADS 64
-#define GF_SIM_PARALLEL_MIN_GRAINS 1000 /* below: chunks run serially (fork/join costs more) */
-
-typedef struct gf_wall {
-    double point_m[3], normal[3];
-    double friction;
-    int active;
-    double force_N[3];         /* on the wall, last force evaluation */
-    /* A rectangular hole (a silo's orifice, gf_sim_set_wall_hole): the wall is
-     * the plane less the open rectangle hole_lo..hole_hi on the two axes other
-     * than hole_axis (the normal's). */
-    int has_hole, hole_axis;
-    double hole_lo[3], hole_hi[3];
-} gf_wall;
-
-/* Distance from a grain centre c to the solid part of wall w, and the unit
- * contact normal from the wall towards c in n. A plain wall: the signed
- * distance to its plane, n its normal. A wall with a hole: over the hole (the
- * centre's projection inside the rectangle) the nearest solid point is on the
- * rim, and the contact is with that edge (distance |c - q|, n along c - q), so
- * a grain leaving through the orifice rolls off its edge; a centre behind the
- * plane and outside the hole has gone through and is out of reach (INFINITY). */
-static inline double gf_wall_distance(const gf_wall *w, const double c[3], double n[3])
-{
-    const double *nw = w->normal, *pw = w->point_m;
-    double dist = (c[0] - pw[0]) * nw[0] + (c[1] - pw[1]) * nw[1] + (c[2] - pw[2]) * nw[2];
-    n[0] = nw[0], n[1] = nw[1], n[2] = nw[2];
-    if (!w->has_hole)
-        return dist;
-    int in = 1;
-    double edge = INFINITY;
-    int edge_axis = -1;
-    double edge_at = 0.0;
-    for (int a = 0; a < 3; ++a) {
-        if (a == w->hole_axis)
-            continue;
-        if (c[a] <= w->hole_lo[a] || c[a] >= w->hole_hi[a])
-            in = 0;
-        double to_lo = c[a] - w->hole_lo[a], to_hi = w->hole_hi[a] - c[a];
-        if (to_lo < edge)
-            edge = to_lo, edge_axis = a, edge_at = w->hole_lo[a];
-        if (to_hi < edge)
-            edge = to_hi, edge_axis = a, edge_at = w->hole_hi[a];
-    }
-    if (!in)
-        return dist > 0.0 ? dist : INFINITY;
-    double q[3] = {c[0], c[1], c[2]}; /* the nearest rim point: on the plane, on the nearest edge */
-    q[w->hole_axis] = pw[w->hole_axis];
-    q[edge_axis] = edge_at;
-    double r[3] = {c[0] - q[0], c[1] - q[1], c[2] - q[2]}, len = sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
-    if (!(len > 0.0))
-        return 0.0;
-    n[0] = r[0] / len, n[1] = r[1] / len, n[2] = r[2] / len;
-    return len;
-}
+#define GF_SIM_MAX_THREADS GF_NB_MAX_CHUNKS
 
 typedef struct gf_gauge {
     char name[GF_NAME_LEN];
@@ -99,7 +45,6 @@ typedef struct gf_sim_accum {
     double wall_force_N[GF_SIM_MAX_WALLS][3];
     size_t n_contacts;
     double max_overlap_m;
-    size_t near_len;  /* the chunk's near-list entries (gf_near_list.c) */
     int finished;     /* the pair loop finished the chunk's grains outside the reach runs (gf_sim_finish_rows) */
     gf_drift_d2 finished_d2;
     double finish_s;  /* wall time of those finishes (the integrate timer's share of the force pass) */
@@ -107,24 +52,6 @@ typedef struct gf_sim_accum {
      * finished (its buffer is complete, and it reads no grain any more) */
     _Atomic unsigned long pairs_done;
 } gf_sim_accum;
-
-/* Near list (gf_near_list.c): the neighbour list's pairs within skin_m of
- * the contact (or lubrication) range, with their per-pair data, which the
- * blocked pair loop scans instead of the whole list. Chunk c's pairs are
- * stored from nl->row_start[chunk_row[c]] (acc[c].near_len of them). While
- * valid, the history and contact flags of the pairs it holds are its own
- * (the list's copies are stale until gf_sim_near_flush). */
-typedef struct gf_near_list {
-    double skin_m;              /* 0: no near list */
-    int held;                   /* built and not written back: its history is the current one */
-    int valid;                  /* held, and no grain has moved skin/2 since it was built */
-    int use;                    /* this force evaluation scans it (set by the fused step alone, gf_step.c) */
-    int32_t *i, *j, *k;         /* rows, partners, and offset of each pair in the chunk's part of the list */
-    uint8_t *image, *touching;
-    double *hist, *sqrt_mk, *meff;
-    size_t cap;
-    long n_builds;
-} gf_near_list;
 
 /* Where the step loop stands between two of its operations (gf_step.c owns
  * the transitions; the fused force pass of gf_forces.c writes its result).
@@ -188,33 +115,7 @@ struct gf_sim {
         double lub_eta_Pa_s, lub_roughness_m, lub_cutoff_m;
         int lub_in_overlap;         /* 1: gap clamped at 0 in overlap (default); 0: off while overlapping */
     };
-    struct { /* neighbour upkeep (gf_neighbours.c; the order of the store: gf_sort.c) */
-        gf_nlist *nl;
-        double *x_ref, *y_ref, *z_ref;  /* positions at the last neighbour build */
-        double *vx_pred, *vy_pred, *vz_pred; /* predicted v(t+dt) for the dashpot (gf_integrate.h; written by the drift) */
-        double *inv_mass, *inv_inertia, *mobile; /* integrator factors, refreshed at every neighbour build */
-        double *contact_inv_mass;       /* 1/m in contacts, 0 for glued grains (infinite mass) */
-        double *x_near, *y_near, *z_near; /* positions at the last near-list build (gf_near_list.c) */
-        void *ref_block;                /* owns the thirteen arrays above, staggered (core/gf_soa.h) */
-        size_t ref_cap;
-        double *pair_meff, *pair_sqrt_mk; /* per neighbour pair: m*, sqrt(m* k_n) */
-        size_t pair_cap;
-        double skin_m, extra_m;
-        int need_build;
-        /* grains within reach of each wall until the next neighbour build, ascending
-         * (wall w: wall_cand[wall_cand_start[w] .. wall_cand_start[w + 1]]); valid
-         * while wall_cand_walls == n_walls and wall_cand_grains == n_local */
-        int32_t *wall_cand;
-        size_t wall_cand_start[GF_SIM_MAX_WALLS + 1], wall_cand_cap, wall_cand_grains;
-        int wall_cand_walls;
-        uint8_t *wall_contacts;     /* walls each grain touches at the last build (cost of its row), n */
-        size_t wall_contacts_cap;
-        int sort_every;             /* rebuilds between sorts; 0: never */
-        long n_rebuilds;            /* gf_sim_rebuild calls (checkpointed: the sort schedule) */
-        long n_sorts;               /* sorts that moved a grain (gf_sort.c) */
-        int store_layout;           /* order the store was last sorted into (gf_sim_sort_layout); -1: never sorted */
-    };
-    gf_near_list near;              /* the near list (gf_near_list.c) */
+    gf_neighbours nb;               /* neighbour upkeep (gf_neighbours.h; the sim hands it the pieces: gf_sim_neighbours.c) */
     gf_step_state stepper;          /* where the step loop stands (gf_step.c) */
     struct { /* the force pass (gf_forces.c) */
         unsigned long force_count;  /* force evaluations so far (gf_sim_accum.pairs_done) */
@@ -303,25 +204,6 @@ static inline gf_drift_d2 gf_drift_d2_max(const gf_drift_d2 *d, int n)
     }
     return m;
 }
-/* Near list (gf_near_list.c). At each step, after the neighbour build
- * decision: whether this step's force evaluation scans the near list, and
- * whether it must be rebuilt first (near_d2: the largest squared
- * displacement since its last build). */
-void gf_sim_near_check(gf_sim *s, double near_d2);
-/* Builds chunk c's part of the near list (writing the part it replaces back
- * first) and takes its grains' positions as the new reference; by the
- * chunk's thread, before its pair rows. */
-void gf_sim_near_build_chunk(gf_sim *s, int c);
-/* Writes the near list's history and contact flags back into the neighbour
- * list and drops it: before a list build or a force evaluation over the
- * whole list. */
-void gf_sim_near_flush(gf_sim *s);
-/* The same write-back, the near list kept (its pairs' history unchanged):
- * for readers of the list's history (energy, stress, checkpoint). */
-void gf_sim_near_sync(const gf_sim *s);
-/* Reserves the near list for the current neighbour list (after a build). */
-gf_status gf_sim_near_reserve(gf_sim *s);
-void gf_sim_near_free(gf_sim *s);
 /* Grain-grain contacts (and lubrication, when on) of rows [i0, i1) of the
  * list into f[0..5] (fx..tz), for the linear law: the blocked, vectorised
  * loop of gf_pairs_blocked.c, bitwise the generic loop's results. finish: the
@@ -333,31 +215,23 @@ gf_drift_d2 gf_sim_pair_rows_blocked_linear(gf_sim *s, size_t i0, size_t i1, dou
 /* Wall contacts of grains [i0, i1), whose pair forces are complete, then
  * gf_sim_finish_range on them. gf_kicks.c. */
 gf_drift_d2 gf_sim_finish_rows(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_sim_accum *acc);
+/* The sim's side of neighbour upkeep (gf_sim_neighbours.c): the grains and
+ * run values it hands gf_neighbours.h, and its calls on them. */
+gf_nb_grains gf_sim_nb_grains(gf_sim *s);
+gf_nb_tuning gf_sim_nb_tuning(const gf_sim *s);
 /* Rebuilds the neighbour list from the current positions (wrapping periodic
- * axes first). gf_neighbours.c. */
+ * axes first), with the sort schedule. */
 gf_status gf_sim_rebuild(gf_sim *s);
 /* The same without the sort schedule (no sort, the rebuild count unchanged). */
 gf_status gf_sim_rebuild_unscheduled(gf_sim *s);
-/* Allocates per-grain sim arrays (wall history, reference positions) for n grains. */
-gf_status gf_sim_reserve(gf_sim *s, size_t n);
-/* Re-strides the wall history after a wall was added (history kept). */
-gf_status gf_sim_relayout_walls(gf_sim *s, int n_walls_old);
-/* Reorders the store by the Morton index of each grain's cell, with every
- * per-grain array of the sim; called by gf_sim_rebuild every sort_every
- * rebuilds. gf_sort.c. */
-gf_status gf_sim_sort_grains(gf_sim *s);
-/* The order gf_sim_sort_grains puts this sim's store in: 0 Morton order
- * (one thread, or a store too small to run its chunks in parallel), 1 layers
- * across the cut axis (threads). */
-int gf_sim_sort_layout(const gf_sim *s);
-/* 1 when this sim sorts its store at all (sort_every, store size). */
-int gf_sim_sorts(const gf_sim *s);
-/* Grains below which the default schedule does not sort (the store fits in the caches). */
-#define GF_SIM_SORT_MIN_GRAINS 2048
-/* Default sort period, in neighbour-list rebuilds. */
-#define GF_SIM_SORT_EVERY_DEFAULT 20
 /* Builds the list from the saved reference positions (restart). */
 gf_status gf_sim_rebuild_from_ref(gf_sim *s);
+/* Allocates per-grain sim arrays (reference positions, wall history) for n grains. */
+gf_status gf_sim_reserve(gf_sim *s, size_t n);
+/* The wall history for n grains (gf_wall_forces.c): new grains start without. */
+gf_status gf_sim_reserve_wall_history(gf_sim *s, size_t n);
+/* Re-strides the wall history after a wall was added (history kept). gf_wall_forces.c. */
+gf_status gf_sim_relayout_walls(gf_sim *s, int n_walls_old);
 
 /* Puts quiet grains in contact to sleep and wakes sleeping grains touched by
  * moving ones; called every GF_SLEEP_EVERY steps after the step's last kick

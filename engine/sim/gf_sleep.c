@@ -58,9 +58,9 @@ static int moving(const gf_particles *p, size_t i, double v_s2)
 static void set_factors(gf_sim *s, size_t i, int moves)
 {
     const gf_particles *p = s->p;
-    s->inv_mass[i] = moves ? 1.0 / p->mass_kg[i] : 0.0;
-    s->inv_inertia[i] = moves && !s->rotation_locked ? 1.0 / p->inertia_kg_m2[i] : 0.0;
-    s->mobile[i] = moves ? 1.0 : 0.0;
+    s->nb.inv_mass[i] = moves ? 1.0 / p->mass_kg[i] : 0.0;
+    s->nb.inv_inertia[i] = moves && !s->rotation_locked ? 1.0 / p->inertia_kg_m2[i] : 0.0;
+    s->nb.mobile[i] = moves ? 1.0 : 0.0;
 }
 
 void gf_sim_sleep_wake_all(gf_sim *s)
@@ -69,7 +69,7 @@ void gf_sim_sleep_wake_all(gf_sim *s)
     for (size_t i = 0; i < p->n_local; ++i)
         if ((p->flags[i] & GF_P_SLEEPING) && !(p->flags[i] & GF_P_GLUED)) {
             p->flags[i] &= (uint8_t)~GF_P_SLEEPING;
-            if (s->inv_mass && i < s->ref_cap)
+            if (s->nb.inv_mass && i < s->nb.ref_cap)
                 set_factors(s, i, 1);
             s->n_wake_events++;
         }
@@ -81,7 +81,7 @@ gf_status gf_sim_sleep_update(gf_sim *s)
 {
     gf_particles *p = s->p;
     const size_t n = p->n_local;
-    if (n == 0 || s->nl->n != n)
+    if (n == 0 || s->nb.nl->n != n)
         return GF_OK; /* the list is rebuilt before the next force evaluation */
     if (s->sleep_cap != n) { /* grains added or removed: counters restart */
         long *q = realloc(s->sleep_quiet_steps, n * sizeof *q);
@@ -98,7 +98,7 @@ gf_status gf_sim_sleep_update(gf_sim *s)
     const double v_s = s->spec.contact.sleep_speed_nd * sqrt(g * D), v_s2 = v_s * v_s;
     const double wake_gap = GF_WAKE_GAP_OVER_D * D;
     const long window = (long)ceil(GF_SLEEP_WINDOW_ND * sqrt(D / g) / s->dt_s);
-    const gf_nlist *nl = s->nl;
+    const gf_nlist *nl = s->nb.nl;
     const uint8_t glued = GF_P_GLUED, asleep = GF_P_SLEEPING;
     for (size_t i = 0; i < n; ++i)
         for (size_t k = nl->row_start[i]; k < nl->row_start[i + 1]; ++k) {

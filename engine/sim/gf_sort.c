@@ -1,7 +1,7 @@
 /*
  * Spatial ordering of the particle store (gf_sim_tuning.sort_every).
  *
- * At every sort_every-th neighbour-list rebuild (gf_sim_rebuild, after the
+ * At every sort_every-th neighbour-list rebuild (gf_neighbours_rebuild, after the
  * periodic wrap and before the list is built) the grains are reordered by the
  * Morton (Z-order) index of their cell, ties kept in the current order, so
  * that grains close in space are close in memory: the pair loop's reads of
@@ -44,28 +44,17 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "gf_sim_internal.h"
+#include "gf_neighbours.h"
 
-/* 10 bits of v spread to every third bit (v < 1024). */
-static uint32_t spread3(uint32_t v)
+/* The 10 low bits of v spread to every `every`-th bit (bit b to bit
+ * b every): interleaving such spreads of the cell indices gives the Morton
+ * index (every 3 in 3-D, every 2 within a layer). */
+static uint32_t spread_bits(uint32_t v, int every)
 {
-    v &= 0x3ffu;
-    v = (v | (v << 16)) & 0x030000ffu;
-    v = (v | (v << 8)) & 0x0300f00fu;
-    v = (v | (v << 4)) & 0x030c30c3u;
-    v = (v | (v << 2)) & 0x09249249u;
-    return v;
-}
-
-/* 10 bits of v spread to every second bit (v < 1024). */
-static uint32_t spread2(uint32_t v)
-{
-    v &= 0x3ffu;
-    v = (v | (v << 8)) & 0x00ff00ffu;
-    v = (v | (v << 4)) & 0x0f0f0f0fu;
-    v = (v | (v << 2)) & 0x33333333u;
-    v = (v | (v << 1)) & 0x55555555u;
-    return v;
+    uint32_t out = 0;
+    for (int b = 0; b < 10; ++b)
+        out |= ((v >> b) & 1u) << (b * every);
+    return out;
 }
 
 /* With threads, the axis along which the store is cut into the threads'
@@ -75,10 +64,10 @@ static uint32_t spread2(uint32_t v)
  * chunk). The grains near a cut are read by one core and written by the
  * other at every step; between the two cores of the test machine a cache
  * line takes ~240 ns (gf-core-latency, docs/notes/benchmarks.md). */
-static int cut_axis(const gf_sim *s, size_t n)
+static int cut_axis(const gf_nb_grains *g, size_t n)
 {
     double lo[3] = {DBL_MAX, DBL_MAX, DBL_MAX}, hi[3] = {-DBL_MAX, -DBL_MAX, -DBL_MAX};
-    const double *c[3] = {s->p->x_m, s->p->y_m, s->p->z_m};
+    const double *c[3] = {g->p->x_m, g->p->y_m, g->p->z_m};
     for (int a = 0; a < 3; ++a)
         for (size_t i = 0; i < n; ++i) {
             lo[a] = c[a][i] < lo[a] ? c[a][i] : lo[a];
@@ -88,7 +77,7 @@ static int cut_axis(const gf_sim *s, size_t n)
     double best_area = DBL_MAX;
     for (int a = 0; a < 3; ++a) {
         int b = (a + 1) % 3, d = (a + 2) % 3;
-        double area = (hi[b] - lo[b]) * (hi[d] - lo[d]) * (s->periodic[a] ? 2.0 : 1.0);
+        double area = (hi[b] - lo[b]) * (hi[d] - lo[d]) * (g->periodic[a] ? 2.0 : 1.0);
         if (area < best_area)
             best = a, best_area = area;
     }
@@ -105,57 +94,65 @@ static uint32_t cell_of(double v, double lo, double L, int nc)
     return (uint32_t)c;
 }
 
-gf_status gf_sim_sort_grains(gf_sim *s)
-{
-    gf_particles *p = s->p;
-    const size_t n = p->n_local;
-    gf_sim_near_flush(s); /* its pairs name grains by index: the list's own history, keyed by ids, follows them */
-    if (n < 2)
-        return GF_OK;
-    double r_max = 0.0;
-    for (size_t i = 0; i < n; ++i)
-        r_max = p->radius_m[i] > r_max ? p->radius_m[i] : r_max;
-    const double cell_min = 2.0 * r_max + s->extra_m + s->skin_m;
+/* The cell grid of the sort: the list's cells (edge 2 R_max + extra +
+ * skin), at most 1024 along an axis (10 bits of a key). */
+typedef struct sort_cells {
     int nc[3];
-    double L[3];
+    double lo[3], L[3];
+} sort_cells;
+
+static sort_cells sort_grid(const gf_neighbours *nb, const gf_nb_grains *g)
+{
+    const gf_particles *p = g->p;
+    double r_max = 0.0;
+    for (size_t i = 0; i < p->n_local; ++i)
+        r_max = p->radius_m[i] > r_max ? p->radius_m[i] : r_max;
+    const double cell_min = 2.0 * r_max + nb->extra_m + nb->skin_m;
+    sort_cells sc;
     for (int a = 0; a < 3; ++a) {
-        L[a] = s->hi_m[a] - s->lo_m[a];
-        double m = floor(L[a] / cell_min);
-        nc[a] = m < 1.0 ? 1 : (m > 1024.0 ? 1024 : (int)m);
+        sc.lo[a] = g->lo_m[a];
+        sc.L[a] = g->hi_m[a] - g->lo_m[a];
+        double m = floor(sc.L[a] / cell_min);
+        sc.nc[a] = m < 1.0 ? 1 : (m > 1024.0 ? 1024 : (int)m);
     }
-    const size_t stride = 3 * ((size_t)s->n_walls + 1);
-    uint32_t *key = malloc(2 * n * sizeof *key);
-    size_t *perm = malloc(2 * n * sizeof *perm);
-    size_t *count = malloc(((size_t)1 << 15) * sizeof *count);
-    double *tmp = malloc(n * stride * sizeof *tmp); /* >= n doubles: the wall history is the widest */
-    if (!key || !perm || !count || !tmp) {
-        free(key), free(perm), free(count), free(tmp);
-        return GF_FAIL(s->ctx, GF_ERR_NOMEM, "sim: cannot allocate the grain sort (%zu grains)", n);
+    return sc;
+}
+
+static uint32_t cell_on(const sort_cells *sc, const double *const c[3], int a, size_t i)
+{
+    return cell_of(c[a][i], sc->lo[a], sc->L[a], sc->nc[a]);
+}
+
+/* Each grain's key: layout 1, layers of cells across the cut axis and Morton
+ * order within a layer (any split of the store into chunks is then a plane,
+ * and the grains next to it lie together in memory: few cache lines to
+ * exchange); layout 0, the Morton index of its cell. */
+static void sort_keys(const gf_neighbours *nb, const gf_nb_grains *g, int layout, uint32_t *key)
+{
+    const size_t n = g->p->n_local;
+    const sort_cells sc = sort_grid(nb, g);
+    const double *const c[3] = {g->p->x_m, g->p->y_m, g->p->z_m};
+    if (layout == 1) {
+        const int a = cut_axis(g, n), b = (a + 1) % 3, d = (a + 2) % 3;
+        for (size_t i = 0; i < n; ++i)
+            key[i] = cell_on(&sc, c, a, i) << 20 | spread_bits(cell_on(&sc, c, b, i), 2) |
+                     spread_bits(cell_on(&sc, c, d, i), 2) << 1;
+        return;
     }
-    const double *c[3] = {p->x_m, p->y_m, p->z_m};
-    s->store_layout = gf_sim_sort_layout(s);
-    if (s->store_layout == 1) {
-        /* layers of cells across the cut axis, Morton order within a layer:
-         * any split of the store into chunks is then a plane, and the grains
-         * next to it lie together in memory (few cache lines to exchange) */
-        const int a = cut_axis(s, n), b = (a + 1) % 3, d = (a + 2) % 3;
-        for (size_t i = 0; i < n; ++i) {
-            key[i] = cell_of(c[a][i], s->lo_m[a], L[a], nc[a]) << 20 |
-                     spread2(cell_of(c[b][i], s->lo_m[b], L[b], nc[b])) |
-                     spread2(cell_of(c[d][i], s->lo_m[d], L[d], nc[d])) << 1;
-            perm[i] = i;
-        }
-    } else {
-        for (size_t i = 0; i < n; ++i) {
-            key[i] = spread3(cell_of(c[0][i], s->lo_m[0], L[0], nc[0])) |
-                     spread3(cell_of(c[1][i], s->lo_m[1], L[1], nc[1])) << 1 |
-                     spread3(cell_of(c[2][i], s->lo_m[2], L[2], nc[2])) << 2;
-            perm[i] = i;
-        }
-    }
-    /* stable LSD radix sort of the 30-bit keys, two digits of 15 bits */
+    for (size_t i = 0; i < n; ++i)
+        key[i] = spread_bits(cell_on(&sc, c, 0, i), 3) | spread_bits(cell_on(&sc, c, 1, i), 3) << 1 |
+                 spread_bits(cell_on(&sc, c, 2, i), 3) << 2;
+}
+
+/* Stable LSD radix sort of the n 30-bit keys key[0..n), two digits of 15
+ * bits; key and perm hold 2n entries (the second half scratch). Returns the
+ * order: new index q holds old grain order[q]. */
+static const size_t *radix_order(uint32_t *key, size_t *perm, size_t *count, size_t n)
+{
     uint32_t *k_in = key, *k_out = key + n;
     size_t *p_in = perm, *p_out = perm + n;
+    for (size_t i = 0; i < n; ++i)
+        perm[i] = i;
     for (int shift = 0; shift < 30; shift += 15) {
         memset(count, 0, ((size_t)1 << 15) * sizeof *count);
         for (size_t i = 0; i < n; ++i)
@@ -176,39 +173,69 @@ gf_status gf_sim_sort_grains(gf_sim *s)
         size_t *tp = p_in;
         p_in = p_out, p_out = tp;
     }
-    const size_t *order = p_in; /* new index q holds old grain order[q] */
+    return p_in;
+}
+
+/* The store and every per-grain array that belongs to the grains into the
+ * order: the predicted velocities (the rebuild runs between the drift that
+ * wrote them and the force pass that reads them), the wall history, the
+ * sleep counters. tmp: n (n_walls + 1) 3 doubles. */
+static void move_grains(gf_neighbours *nb, const gf_nb_grains *g, const size_t *order, double *tmp)
+{
+    const size_t n = g->p->n_local, stride = 3 * ((size_t)g->n_walls + 1);
+    gf_particles_permute(g->p, order, tmp);
+    double *per_grain[3] = {nb->vx_pred, nb->vy_pred, nb->vz_pred};
+    for (int a = 0; a < 3; ++a) {
+        for (size_t q = 0; q < n; ++q)
+            tmp[q] = per_grain[a][order[q]];
+        memcpy(per_grain[a], tmp, n * sizeof *tmp);
+    }
+    for (size_t q = 0; q < n; ++q)
+        memcpy(&tmp[q * stride], &g->wall_hist[order[q] * stride], stride * sizeof *tmp);
+    memcpy(g->wall_hist, tmp, n * stride * sizeof *tmp);
+    if (g->sleep_quiet_steps) {
+        long *tq = (long *)tmp;
+        for (size_t q = 0; q < n; ++q)
+            tq[q] = g->sleep_quiet_steps[order[q]];
+        memcpy(g->sleep_quiet_steps, tq, n * sizeof *tq);
+    }
+}
+
+gf_status gf_sort_grains(gf_ctx *ctx, gf_neighbours *nb, const gf_nb_grains *g, const gf_nb_tuning *t)
+{
+    const size_t n = g->p->n_local;
+    gf_near_list_flush(nb); /* its pairs name grains by index: the list's own history, keyed by ids, follows them */
+    if (n < 2)
+        return GF_OK;
+    const size_t stride = 3 * ((size_t)g->n_walls + 1);
+    uint32_t *key = malloc(2 * n * sizeof *key);
+    size_t *perm = malloc(2 * n * sizeof *perm);
+    size_t *count = malloc(((size_t)1 << 15) * sizeof *count);
+    double *tmp = malloc(n * stride * sizeof *tmp); /* >= n doubles: the wall history is the widest */
+    if (!key || !perm || !count || !tmp) {
+        free(key), free(perm), free(count), free(tmp);
+        return GF_FAIL(ctx, GF_ERR_NOMEM, "sim: cannot allocate the grain sort (%zu grains)", n);
+    }
+    nb->store_layout = gf_sort_layout(t->n_chunks, n);
+    sort_keys(nb, g, nb->store_layout, key);
+    const size_t *order = radix_order(key, perm, count, n);
     int moved = 0;
     for (size_t q = 0; q < n && !moved; ++q)
         moved = order[q] != q;
     if (moved) {
-        gf_particles_permute(p, order, tmp);
-        double *per_grain[3] = {s->vx_pred, s->vy_pred, s->vz_pred};
-        for (int a = 0; a < 3; ++a) {
-            for (size_t q = 0; q < n; ++q)
-                tmp[q] = per_grain[a][order[q]];
-            memcpy(per_grain[a], tmp, n * sizeof *tmp);
-        }
-        for (size_t q = 0; q < n; ++q)
-            memcpy(&tmp[q * stride], &s->wall_hist[order[q] * stride], stride * sizeof *tmp);
-        memcpy(s->wall_hist, tmp, n * stride * sizeof *tmp);
-        if (s->sleep_quiet_steps && s->sleep_cap == n) {
-            long *tq = (long *)tmp;
-            for (size_t q = 0; q < n; ++q)
-                tq[q] = s->sleep_quiet_steps[order[q]];
-            memcpy(s->sleep_quiet_steps, tq, n * sizeof *tq);
-        }
-        s->n_sorts++;
+        move_grains(nb, g, order, tmp);
+        nb->n_sorts++;
     }
     free(key), free(perm), free(count), free(tmp);
     return GF_OK;
 }
 
-int gf_sim_sort_layout(const gf_sim *s)
+int gf_sort_layout(int n_chunks, size_t n)
 {
-    return s->n_threads > 1 && s->p->n_local >= GF_SIM_PARALLEL_MIN_GRAINS;
+    return n_chunks > 1 && n >= GF_SIM_PARALLEL_MIN_GRAINS;
 }
 
-int gf_sim_sorts(const gf_sim *s)
+int gf_sort_enabled(const gf_neighbours *nb, const gf_nb_tuning *t, size_t n)
 {
-    return s->sort_every > 0 && (s->p->n_local >= GF_SIM_SORT_MIN_GRAINS || s->opt.tuning.sort_every > 0);
+    return nb->sort_every > 0 && (n >= GF_SIM_SORT_MIN_GRAINS || t->sort_forced);
 }

@@ -106,11 +106,11 @@ static gf_drift_d2 kick_drift(gf_sim *s)
 static gf_status check_run_limits(gf_sim *s, double d2_since_build)
 {
     const double D = s->spec.grains.diameter_m, t_c = gf_run_spec_t_contact_s(&s->spec);
-    if (d2_since_build > s->skin_m * s->skin_m)
+    if (d2_since_build > s->nb.skin_m * s->nb.skin_m)
         return GF_FAIL(s->ctx, GF_ERR_NUMERIC,
                        "a grain moved %.3g D since the last neighbour-list build at t = %g s (limit: the skin, "
                        "%.3g D): speed x dt too large for contact detection (lower contact.dt_over_tc)",
-                       sqrt(d2_since_build) / D, s->t_s, s->skin_m / D);
+                       sqrt(d2_since_build) / D, s->t_s, s->nb.skin_m / D);
     if (s->max_overlap_m > GF_MAX_OVERLAP_OVER_D * D)
         return GF_FAIL(s->ctx, GF_ERR_NUMERIC,
                        "overlap %.3g D at t = %g s exceeds the soft-sphere limit %.2g D: contacts too soft for the "
@@ -153,8 +153,8 @@ static gf_status add_fluid_forces(gf_sim *s)
  * build. The forces stay F(t) until the force pass clears them all. */
 static gf_drift_d2 drift_range(gf_sim *s, size_t i0, size_t i1, void *unused)
 {
-    const double *const ref[3] = {s->x_ref, s->y_ref, s->z_ref};
-    double *const vp[3] = {s->vx_pred, s->vy_pred, s->vz_pred};
+    const double *const ref[3] = {s->nb.x_ref, s->nb.y_ref, s->nb.z_ref};
+    double *const vp[3] = {s->nb.vx_pred, s->nb.vy_pred, s->nb.vz_pred};
     gf_integrate_factors k = gf_sim_integrate_factors(s);
     return (gf_drift_d2){gf_integrate_drift(s->p, i0, i1, s->dt_s, s->gravity_m_s2, ref, vp, &k), 0.0};
 }
@@ -176,7 +176,7 @@ static gf_status reference_step(gf_sim *s)
     kick(s, h);
     const double moved = drift(s);
     gf_timer_stop(&s->timers, GF_T_INTEGRATE);
-    if (moved > 0.25 * s->skin_m * s->skin_m || s->need_build) { /* a grain moved more than skin/2 */
+    if (moved > 0.25 * s->nb.skin_m * s->nb.skin_m || s->nb.need_build) { /* a grain moved more than skin/2 */
         gf_timer_start(&s->timers, GF_T_NEIGHBOUR);
         gf_status st = gf_sim_rebuild(s);
         gf_timer_stop(&s->timers, GF_T_NEIGHBOUR);
@@ -221,13 +221,13 @@ static gf_status fused_step(gf_sim *s, int next_follows)
         gf_timer_stop(&s->timers, GF_T_INTEGRATE);
     }
     const double d2 = moved.build;
-    if (d2 > 0.25 * s->skin_m * s->skin_m || s->need_build) { /* a grain moved more than skin/2 */
+    if (d2 > 0.25 * s->nb.skin_m * s->nb.skin_m || s->nb.need_build) { /* a grain moved more than skin/2 */
         gf_timer_start(&s->timers, GF_T_NEIGHBOUR);
         gf_status st = gf_sim_rebuild(s);
         gf_timer_stop(&s->timers, GF_T_NEIGHBOUR);
         GF_TRY(st);
     }
-    gf_sim_near_check(s, moved.near);
+    gf_near_list_check(&s->nb.near, moved.near, (s->skips & GF_SKIP_TANGENTIAL) != 0);
     const int sleep_after = s->spec.contact.sleep_speed_nd > 0.0 && (s->step + 1) % GF_SLEEP_EVERY == 0;
     const int fluid_after = s->coupling && (s->step + 1 >= s->next_fluid_step ||
                                             !gf_coupling_forces_in_order(s->coupling, s->p));
@@ -236,7 +236,7 @@ static gf_status fused_step(gf_sim *s, int next_follows)
     gf_status st = gf_sim_compute_forces(s);
     gf_timer_stop(&s->timers, GF_T_FORCE);
     st_->fuse = 0;
-    s->near.use = 0;
+    s->nb.near.use = 0;
     if (st_->fused) { /* the timers keep the drift apart (as the first thread saw it) */
         s->timers.elapsed_s[GF_T_FORCE] -= st_->fused_s;
         s->timers.elapsed_s[GF_T_INTEGRATE] += st_->fused_s;
@@ -269,7 +269,7 @@ static gf_status fluid_step(gf_sim *s)
 gf_status gf_sim_advance(gf_sim *s, long n_steps)
 {
     gf_particles *p = s->p;
-    if (s->in_build || s->stepper.phase != GF_STEP_AT_T || s->nl->n != p->n_local) {
+    if (s->in_build || s->stepper.phase != GF_STEP_AT_T || s->nb.nl->n != p->n_local) {
         /* grains were added or moved by a builder: fresh list and F(t) */
         GF_TRY(gf_sim_rebuild(s));
         GF_TRY(gf_sim_compute_forces(s));

@@ -4,9 +4,13 @@
  * contact law's kernel with the wall's friction, and Brenner lubrication
  * with R_eff^2 -> R_i^2 (Izard 2014 (2.36)). A wall with a hole touches the
  * grains over it at its rim (gf_wall_distance). The loads on each wall are
- * summed per chunk (gf_sim_accum.wall_force_N).
+ * summed per chunk (gf_sim_accum.wall_force_N). The wall history (3 doubles
+ * per grain and wall) is kept here too: its size and its layout when a wall
+ * is added.
  */
 #include <math.h>
+#include <stdlib.h>
+#include <string.h>
 
 #include "contact/gf_lubrication.h"
 #include "gf_sim_internal.h"
@@ -32,14 +36,14 @@ void gf_sim_wall_rows(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_si
     const gf_particles *p = s->p;
     const double lub_cut = s->lubrication ? s->lub_cutoff_m : 0.0;
     const size_t stride = (size_t)s->n_walls + 1;
-    const int listed = s->wall_cand_walls == s->n_walls && s->wall_cand_grains == p->n_local;
+    const int listed = s->nb.wall_cand_walls == s->n_walls && s->nb.wall_cand_grains == p->n_local;
     for (int w = 0; w < s->n_walls; ++w) {
         const gf_wall *wl = &s->walls[w];
         const double *nw_plane = wl->normal, *pw = wl->point_m;
-        size_t k = listed ? first_candidate(s->wall_cand, s->wall_cand_start[w], s->wall_cand_start[w + 1], i0) : i0;
-        const size_t k_end = listed ? s->wall_cand_start[w + 1] : i1;
+        size_t k = listed ? first_candidate(s->nb.wall_cand, s->nb.wall_cand_start[w], s->nb.wall_cand_start[w + 1], i0) : i0;
+        const size_t k_end = listed ? s->nb.wall_cand_start[w + 1] : i1;
         for (; k < k_end; ++k) {
-            const size_t i = listed ? (size_t)s->wall_cand[k] : k;
+            const size_t i = listed ? (size_t)s->nb.wall_cand[k] : k;
             if (i >= i1)
                 break;
             double *h = &s->wall_hist[3 * (i * stride + (size_t)w)];
@@ -56,7 +60,7 @@ void gf_sim_wall_rows(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_si
             }
             double v[3] = {p->vx_m_s[i], p->vy_m_s[i], p->vz_m_s[i]};
             double F[3] = {0.0, 0.0, 0.0};
-            double vn = s->vx_pred[i] * nw[0] + s->vy_pred[i] * nw[1] + s->vz_pred[i] * nw[2];
+            double vn = s->nb.vx_pred[i] * nw[0] + s->nb.vy_pred[i] * nw[1] + s->nb.vz_pred[i] * nw[2];
             if (overlap > 0.0) {
                 gf_contact_geom g;
                 g.v_n_m_s = vn;
@@ -89,4 +93,34 @@ void gf_sim_wall_rows(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_si
             acc->wall_force_N[w][0] -= F[0], acc->wall_force_N[w][1] -= F[1], acc->wall_force_N[w][2] -= F[2];
         }
     }
+}
+
+gf_status gf_sim_reserve_wall_history(gf_sim *s, size_t n)
+{
+    if (n <= s->wall_hist_cap)
+        return GF_OK;
+    size_t cap = n + n / 4 + 16, stride = (size_t)s->n_walls + 1;
+    double *h = realloc(s->wall_hist, cap * stride * 3 * sizeof(double));
+    if (!h)
+        return GF_FAIL(s->ctx, GF_ERR_NOMEM, "sim: cannot allocate wall history for %zu grains", n);
+    /* new grains start without wall history */
+    memset(h + s->wall_hist_cap * stride * 3, 0, (cap - s->wall_hist_cap) * stride * 3 * sizeof(double));
+    s->wall_hist = h;
+    s->wall_hist_cap = cap;
+    return GF_OK;
+}
+
+gf_status gf_sim_relayout_walls(gf_sim *s, int n_walls_old)
+{
+    size_t cap = s->wall_hist_cap, so = (size_t)n_walls_old + 1, sn = (size_t)s->n_walls + 1;
+    if (cap == 0)
+        return GF_OK;
+    double *h = calloc(cap * sn * 3, sizeof(double));
+    if (!h)
+        return GF_FAIL(s->ctx, GF_ERR_NOMEM, "sim: cannot allocate wall history");
+    for (size_t i = 0; i < cap; ++i)
+        memcpy(&h[3 * i * sn], &s->wall_hist[3 * i * so], 3 * (size_t)n_walls_old * sizeof(double));
+    free(s->wall_hist);
+    s->wall_hist = h;
+    return GF_OK;
 }
