@@ -1,9 +1,10 @@
 /*
  * The gf_sim object, shared by the files of the sim module only
  * engine/sim/ (gf_sim.c: creation, accessors, builders; gf_step.c: the step
- * loop; gf_neighbours.c: neighbour upkeep; gf_forces.c and gf_pairs_blocked.c:
- * the pair and wall loops; gf_run.c: outputs; ...). Not a public header:
- * drivers, scenes, tests and benchmarks use gf_sim.h.
+ * loop; gf_sim_neighbours.c: the pieces it hands the neighbour upkeep,
+ * gf_neighbours.h; gf_forces.c and gf_pairs_blocked.c: the pair and wall
+ * loops; gf_run.c: outputs; ...). Not a public header: drivers, scenes,
+ * tests and benchmarks use gf_sim.h.
  */
 #ifndef GF_SIM_INTERNAL_H
 #define GF_SIM_INTERNAL_H
