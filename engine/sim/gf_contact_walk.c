@@ -12,11 +12,12 @@ static int visit_pairs(const gf_sim *s, gf_sim_contact_fn fn, void *user)
 {
     const gf_particles *p = s->p;
     const gf_nlist *nl = s->nb.nl;
+    const double *pair_meff = s->nb.pair_meff;
     for (size_t i = 0; i < nl->n; ++i)
         for (size_t k = nl->row_start[i]; k < nl->row_start[i + 1]; ++k) {
             const size_t j = (size_t)nl->j[k];
             const double *sh = nl->shift_m[nl->image[k]];
-            gf_sim_contact c = {.i = i, .j = j, .wall = -1, .history = &nl->hist[3 * k], .m_eff_kg = s->nb.pair_meff[k]};
+            gf_sim_contact c = {.i = i, .j = j, .wall = -1, .history = &nl->hist[3 * k], .m_eff_kg = pair_meff[k]};
             c.branch_m[0] = p->x_m[i] - p->x_m[j] + sh[0];
             c.branch_m[1] = p->y_m[i] - p->y_m[j] + sh[1];
             c.branch_m[2] = p->z_m[i] - p->z_m[j] + sh[2];

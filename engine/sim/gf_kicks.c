@@ -32,7 +32,8 @@ void gf_sim_thread_grains(const gf_sim *s, size_t n, int t, int m, size_t *i0, s
  * (no torque ever, GF_SKIP_TANGENTIAL). */
 gf_integrate_factors gf_sim_integrate_factors(const gf_sim *s)
 {
-    return (gf_integrate_factors){s->nb.inv_mass, (s->skips & GF_SKIP_TANGENTIAL) ? NULL : s->nb.inv_inertia, s->nb.mobile};
+    const gf_neighbours *nb = &s->nb;
+    return (gf_integrate_factors){nb->inv_mass, (s->skips & GF_SKIP_TANGENTIAL) ? NULL : nb->inv_inertia, nb->mobile};
 }
 
 /* The arrays the kicks and drift read besides the store: the displacement
@@ -40,9 +41,11 @@ gf_integrate_factors gf_sim_integrate_factors(const gf_sim *s)
  * displacement is the build's: the same arrays, no second stream. */
 static void drift_inputs(const gf_sim *s, gf_drift_refs *ref, gf_integrate_factors *k)
 {
-    const int near = s->nb.near.skin_m > 0.0;
-    *ref = (gf_drift_refs){{s->nb.x_ref, s->nb.y_ref, s->nb.z_ref},
-                           {near ? s->nb.x_near : s->nb.x_ref, near ? s->nb.y_near : s->nb.y_ref, near ? s->nb.z_near : s->nb.z_ref}};
+    const gf_neighbours *nb = &s->nb;
+    const int near = nb->near.skin_m > 0.0;
+    *ref = (gf_drift_refs){{nb->x_ref, nb->y_ref, nb->z_ref},
+                           {near ? nb->x_near : nb->x_ref, near ? nb->y_near : nb->y_ref,
+                            near ? nb->z_near : nb->z_ref}};
     *k = gf_sim_integrate_factors(s);
 }
 

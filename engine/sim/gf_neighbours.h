@@ -81,7 +81,7 @@ typedef struct gf_nb_grains {
     const int *periodic;        /* 3 */
     const gf_wall *walls;
     int n_walls;
-    double *wall_hist;          /* 3 (n_walls + 1) doubles per grain: cleared out of a wall's reach, moved by the sort */
+    double *wall_hist;          /* 3 (n_walls + 1) doubles per grain: cleared beyond a wall's reach, sorted */
     long *sleep_quiet_steps;    /* the sleep counters, moved by the sort; NULL unless sized for the store */
 } gf_nb_grains;
 

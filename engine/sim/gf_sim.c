@@ -333,6 +333,23 @@ static int pick_threads(const gf_sim_options *opt)
     return n > GF_SIM_MAX_THREADS ? GF_SIM_MAX_THREADS : n;
 }
 
+/* The neighbour upkeep's settings: the Verlet skin, the near list's (only
+ * the blocked linear loop scans one, gf_near_list.c), the sort period. */
+static gf_status setup_neighbours(gf_sim *s)
+{
+    const gf_sim_tuning *tu = &s->opt.tuning;
+    gf_neighbours *nb = &s->nb;
+    if (!(s->spec.contact.skin_over_D > 0.0))
+        return GF_FAIL(s->ctx, GF_ERR_CONFIG, "contact.skin_over_D: must be > 0 (got %g)", s->spec.contact.skin_over_D);
+    nb->skin_m = s->spec.contact.skin_over_D * s->spec.grains.diameter_m;
+    const int blocked = s->law->kernel == gf_contact_linear && !tu->generic_pair_loop;
+    const double near_skin = tu->near_skin == 0.0 ? GF_SIM_NEAR_SKIN_DEFAULT : fmin(tu->near_skin, 1.0);
+    nb->near.skin_m = (tu->near_skin < 0.0 || !blocked) ? 0.0 : near_skin * nb->skin_m;
+    nb->sort_every = tu->sort_every == 0 ? GF_SIM_SORT_EVERY_DEFAULT : (tu->sort_every < 0 ? 0 : tu->sort_every);
+    nb->store_layout = -1;
+    return GF_OK;
+}
+
 static gf_status create_inner(gf_sim *s, const gf_run_spec *spec, const gf_sim_options *opt)
 {
     s->spec = *spec;
@@ -350,20 +367,12 @@ static gf_status create_inner(gf_sim *s, const gf_run_spec *spec, const gf_sim_o
     GF_TRY(gf_sim_decide_skips(s));
     GF_TRY(check_time_step(s));
     GF_TRY(compute_scales(s));
-    if (!(s->spec.contact.skin_over_D > 0.0))
-        return GF_FAIL(s->ctx, GF_ERR_CONFIG, "contact.skin_over_D: must be > 0 (got %g)", s->spec.contact.skin_over_D);
-    s->nb.skin_m = s->spec.contact.skin_over_D * s->spec.grains.diameter_m;
-    /* only the blocked linear loop scans a near list (gf_near_list.c) */
-    const int blocked = s->law->kernel == gf_contact_linear && !s->opt.tuning.generic_pair_loop;
-    s->nb.near.skin_m = (s->opt.tuning.near_skin < 0.0 || !blocked) ? 0.0
-                     : (s->opt.tuning.near_skin == 0.0 ? GF_SIM_NEAR_SKIN_DEFAULT : fmin(s->opt.tuning.near_skin, 1.0)) * s->nb.skin_m;
+    GF_TRY(setup_neighbours(s));
     if (!(s->spec.contact.sleep_speed_nd >= 0.0 && s->spec.contact.sleep_speed_nd <= 0.05))
         return GF_FAIL(s->ctx, GF_ERR_CONFIG,
                        "contact.sleep_speed_nd: must be in [0, 0.05] (got %g; above 0.05 a grain at the top of a "
                        "hop could be taken for one at rest)", s->spec.contact.sleep_speed_nd);
     s->n_threads = pick_threads(opt);
-    s->nb.sort_every = s->opt.tuning.sort_every == 0 ? GF_SIM_SORT_EVERY_DEFAULT : (s->opt.tuning.sort_every < 0 ? 0 : s->opt.tuning.sort_every);
-    s->nb.store_layout = -1;
     s->gravity_m_s2[1] = -s->spec.gravity_m_s2; /* y is vertical (docs/output.md) unless the scene says */
     gf_rng_seed(&s->rng, s->spec.seed);
     GF_TRY(gf_particles_create(s->ctx, 1024, &s->p));

@@ -116,7 +116,7 @@ struct gf_sim {
         double lub_eta_Pa_s, lub_roughness_m, lub_cutoff_m;
         int lub_in_overlap;         /* 1: gap clamped at 0 in overlap (default); 0: off while overlapping */
     };
-    gf_neighbours nb;               /* neighbour upkeep (gf_neighbours.h; the sim hands it the pieces: gf_sim_neighbours.c) */
+    gf_neighbours nb;               /* neighbour upkeep (gf_neighbours.h; its pieces: gf_sim_neighbours.c) */
     gf_step_state stepper;          /* where the step loop stands (gf_step.c) */
     struct { /* the force pass (gf_forces.c) */
         unsigned long force_count;  /* force evaluations so far (gf_sim_accum.pairs_done) */

@@ -36,14 +36,15 @@ void gf_sim_wall_rows(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_si
     const gf_particles *p = s->p;
     const double lub_cut = s->lubrication ? s->lub_cutoff_m : 0.0;
     const size_t stride = (size_t)s->n_walls + 1;
-    const int listed = s->nb.wall_cand_walls == s->n_walls && s->nb.wall_cand_grains == p->n_local;
+    const gf_neighbours *nb = &s->nb;
+    const int listed = nb->wall_cand_walls == s->n_walls && nb->wall_cand_grains == p->n_local;
     for (int w = 0; w < s->n_walls; ++w) {
         const gf_wall *wl = &s->walls[w];
         const double *nw_plane = wl->normal, *pw = wl->point_m;
-        size_t k = listed ? first_candidate(s->nb.wall_cand, s->nb.wall_cand_start[w], s->nb.wall_cand_start[w + 1], i0) : i0;
-        const size_t k_end = listed ? s->nb.wall_cand_start[w + 1] : i1;
+        size_t k = listed ? first_candidate(nb->wall_cand, nb->wall_cand_start[w], nb->wall_cand_start[w + 1], i0) : i0;
+        const size_t k_end = listed ? nb->wall_cand_start[w + 1] : i1;
         for (; k < k_end; ++k) {
-            const size_t i = listed ? (size_t)s->nb.wall_cand[k] : k;
+            const size_t i = listed ? (size_t)nb->wall_cand[k] : k;
             if (i >= i1)
                 break;
             double *h = &s->wall_hist[3 * (i * stride + (size_t)w)];
@@ -60,7 +61,7 @@ void gf_sim_wall_rows(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_si
             }
             double v[3] = {p->vx_m_s[i], p->vy_m_s[i], p->vz_m_s[i]};
             double F[3] = {0.0, 0.0, 0.0};
-            double vn = s->nb.vx_pred[i] * nw[0] + s->nb.vy_pred[i] * nw[1] + s->nb.vz_pred[i] * nw[2];
+            double vn = nb->vx_pred[i] * nw[0] + nb->vy_pred[i] * nw[1] + nb->vz_pred[i] * nw[2];
             if (overlap > 0.0) {
                 gf_contact_geom g;
                 g.v_n_m_s = vn;
