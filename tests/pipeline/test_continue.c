@@ -159,9 +159,7 @@ static void interrupt_at(gf_ctx *ctx, const gf_run_spec *spec, const gf_run_exec
         /* each attempt in a clean directory: a run that finished first
          * leaves its diagnostics.nc, which an interrupted fresh run keeps
          * (its own files stay .partial) */
-        char cmd[4300];
-        snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
-        GF_CHECK(system(cmd) == 0);
+        GF_CHECK(gf_test_remove_tree(dir));
         long usec = (long)(delay_s * 1e6) + 1;
         struct itimerval it = {{0, 0}, {usec / 1000000, usec % 1000000}};
         interrupt_flag = 0;
@@ -259,9 +257,7 @@ int main(void)
     static const char *const imm_files[] = {"diagnostics.nc", "probes.nc", "fields.nc", "particles.nc"};
     interrupt_and_resume(&ctx, &imm, out, imm_files, 4, 0.75);
 
-    char cmd[4300];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s'", out);
-    if (system(cmd) != 0)
+    if (!gf_test_remove_tree(out))
         fprintf(stderr, "could not remove %s\n", out);
     return gf_test_finish();
 }
