@@ -152,12 +152,9 @@ int synth_particles(const char *dir, const synth_meta *m, size_t n, size_t nt, c
     CK(nc_put_var_longlong(ncid, vid, id));
     CK(nc_put_var_double(ncid, vr, radius));
     CK(nc_put_var_schar(ncid, vg, gl));
-    CK(nc_put_var_double(ncid, vx, x));
-    CK(nc_put_var_double(ncid, vy, y));
-    CK(nc_put_var_double(ncid, vz, z ? z : zero));
-    CK(nc_put_var_double(ncid, vu, u ? u : zero));
-    CK(nc_put_var_double(ncid, vv, zero));
-    CK(nc_put_var_double(ncid, vw, zero));
+    const double *values[6] = {x, y, z ? z : zero, u ? u : zero, zero, zero}; /* nm's order */
+    for (int k = 0; k < 6; ++k)
+        CK(nc_put_var_double(ncid, *ids[k], values[k]));
     free(id), free(gl), free(zero);
     return finish(&f);
 }
