@@ -17,27 +17,9 @@
 #include "gf_sim.h"
 #include "gf_test.h"
 #include "gf_test_restart.h"
+#include "gf_test_sim.h"
 
-#define D 7.6e-3
-#define RHO_P 2500.0
-#define RHO_F 1000.0
-#define ETA 0.1 /* Pa s: St ~ 0.3, the viscous regime of the thesis' chapter 5 */
-
-static gf_run_spec collapse_spec(gf_ctx *ctx, const char *model)
-{
-    gf_run_spec spec;
-    gf_run_spec_defaults(&spec);
-    snprintf(spec.scene, sizeof spec.scene, "column_collapse");
-    spec.grains.density_kg_m3 = RHO_P;
-    spec.grains.diameter_m = D;
-    snprintf(spec.fluid.model, sizeof spec.fluid.model, "%s", model);
-    spec.fluid.density_kg_m3 = RHO_F;
-    spec.fluid.viscosity_Pa_s = ETA;
-    spec.phi_initial = 0.6;
-    spec.aspect_ratio_a = 0.5;
-    gf_run_spec_set_param(ctx, &spec, "column_length_over_D", 12.0);
-    return spec;
-}
+#define D 7.6e-3 /* the grains of gf_test_viscous_collapse_spec */
 
 /* Bitwise the same grains and basal pore pressure; the collapse moves and a pore pressure developed. */
 static void compare(gf_ctx *ctx, const gf_run_spec *spec, long N, gf_sim *ref, gf_sim *b)
@@ -65,9 +47,10 @@ static void compare(gf_ctx *ctx, const gf_run_spec *spec, long N, gf_sim *ref, g
 int main(void)
 {
     gf_ctx ctx = {0};
-    gf_run_spec spec = collapse_spec(&ctx, "unresolved");
+    gf_run_spec spec, dry;
+    gf_test_viscous_collapse_spec(&ctx, "unresolved", &spec);
     /* a dry run's checkpoint holds no fluid: an immersed restart from it is refused, naming why */
-    gf_run_spec dry = collapse_spec(&ctx, "none");
+    gf_test_viscous_collapse_spec(&ctx, "none", &dry);
     const gf_test_restart_case c = {.stem = "coupling_restart", .N = 4001, .compare = compare, .other = &dry,
                                     .why = "no fluid state", .what = "immersed restart from a dry checkpoint"};
     return gf_test_restart(&ctx, &spec, &c);

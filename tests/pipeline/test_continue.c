@@ -33,6 +33,7 @@
 
 #include "core/gf_timer.h"
 #include "gf_test.h"
+#include "gf_test_sim.h"
 #include "schedule/gf_ledger.h"
 #include "schedule/gf_run_exec.h"
 
@@ -62,20 +63,11 @@ static void gas_spec(gf_ctx *ctx, gf_run_spec *s)
 /* A dense column (a = 0.5, R0 = 12 D) collapsing in a viscous fluid, every output file. */
 static void immersed_spec(gf_ctx *ctx, gf_run_spec *s)
 {
-    gf_run_spec_defaults(s);
-    snprintf(s->scene, sizeof s->scene, "column_collapse");
+    GF_CHECK_OK(gf_test_viscous_collapse_spec(ctx, "unresolved", s), ctx);
     snprintf(s->run_id, sizeof s->run_id, "immersed");
-    s->grains.diameter_m = 7.6e-3;
-    s->grains.density_kg_m3 = 2500.0;
-    snprintf(s->fluid.model, sizeof s->fluid.model, "unresolved");
-    s->fluid.density_kg_m3 = 1000.0;
-    s->fluid.viscosity_Pa_s = 0.1;
-    s->phi_initial = 0.6;
-    s->aspect_ratio_a = 0.5;
     s->end_time_nd = 3.0;
     s->output.interval_nd = 0.1;
     s->output.particles = s->output.fields = s->output.probes = s->output.diagnostics = 1;
-    GF_CHECK_OK(gf_run_spec_set_param(ctx, s, "column_length_over_D", 12.0), ctx);
 }
 
 static int exists(const char *dir, const char *name)

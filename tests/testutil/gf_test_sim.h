@@ -65,6 +65,25 @@ static inline gf_run_spec gf_test_elastic_gas_spec(gf_ctx *ctx, int n, double bo
     return gas;
 }
 
+/* The viscous collapse of the immersed restart and continuation tests into
+ * *s: a dense column (phi 0.6, a = 0.5, R0 = 12 D) of D = 7.6 mm,
+ * 2500 kg m-3 grains in a fluid of 1000 kg m-3 and 0.1 Pa s (St ~ 0.3, the
+ * viscous regime of Izard 2014 ch. 5), on the fluid tier `model` ("none":
+ * dry). The status of setting R0. */
+static inline gf_status gf_test_viscous_collapse_spec(gf_ctx *ctx, const char *model, gf_run_spec *s)
+{
+    gf_run_spec_defaults(s);
+    snprintf(s->scene, sizeof s->scene, "column_collapse");
+    s->grains.density_kg_m3 = 2500.0;
+    s->grains.diameter_m = 7.6e-3;
+    snprintf(s->fluid.model, sizeof s->fluid.model, "%s", model);
+    s->fluid.density_kg_m3 = 1000.0;
+    s->fluid.viscosity_Pa_s = 0.1;
+    s->phi_initial = 0.6;
+    s->aspect_ratio_a = 0.5;
+    return gf_run_spec_set_param(ctx, s, "column_length_over_D", 12.0);
+}
+
 /* The small frictional column collapse of the pair-loop tests: a = 1,
  * R0 = 8 D, mu_c 0.5, on the scene's rough base of glued grains. */
 static inline gf_run_spec gf_test_small_collapse_spec(gf_ctx *ctx)
