@@ -30,6 +30,7 @@
 #include "gf_ncread.h"
 #include "gf_post.h"
 #include "gf_test.h"
+#include "gf_test_campaign.h"
 #include "schedule/gf_run_exec.h"
 
 static const char *campaign_text =
@@ -88,9 +89,7 @@ static double dem_extent(gf_ctx *ctx, const char *run_dir, double depth)
 int main(void)
 {
     gf_ctx ctx = {0};
-    gf_campaign *c = NULL;
-    GF_CHECK_OK(gf_campaign_load_string(&ctx, "collapse_both.yaml", campaign_text, strlen(campaign_text), NULL, 0, &c),
-                &ctx);
+    gf_campaign *c = gf_test_campaign(&ctx, "collapse_both.yaml", campaign_text);
     if (!c)
         return gf_test_finish();
     char dir[] = "/tmp/gf_collapse_dem_XXXXXX";
@@ -130,9 +129,7 @@ int main(void)
         GF_CHECK_REL(body[ia][1], body[ia][0], 0.05);
         GF_CHECK_REL(runout[ia][1], runout[ia][0], 0.05);
     }
-    char cmd[400];
-    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
-    GF_CHECK(system(cmd) == 0);
+    GF_CHECK(gf_test_remove_tree(dir));
     gf_campaign_destroy(&c);
     return gf_test_finish();
 }

@@ -24,6 +24,7 @@
 #include "continuum/gf_mui_oracles.h"
 #include "gf_ncread.h"
 #include "gf_test.h"
+#include "gf_test_campaign.h"
 #include "schedule/gf_run_exec.h"
 
 static void refused(const char *text, const char *want)
@@ -52,10 +53,8 @@ static void run_id_unchanged(void)
     const char *a = "scene: {name: column_collapse}\n", *b = "method: dem\nscene: {name: column_collapse}\n",
                *c = "method: continuum\nscene: {name: column_collapse}\n";
     gf_ctx ctx = {0};
-    gf_campaign *ca = NULL, *cb = NULL, *cc = NULL;
-    GF_CHECK_OK(gf_campaign_load_string(&ctx, "a.yaml", a, strlen(a), NULL, 0, &ca), &ctx);
-    GF_CHECK_OK(gf_campaign_load_string(&ctx, "b.yaml", b, strlen(b), NULL, 0, &cb), &ctx);
-    GF_CHECK_OK(gf_campaign_load_string(&ctx, "c.yaml", c, strlen(c), NULL, 0, &cc), &ctx);
+    gf_campaign *ca = gf_test_campaign(&ctx, "a.yaml", a), *cb = gf_test_campaign(&ctx, "b.yaml", b),
+                *cc = gf_test_campaign(&ctx, "c.yaml", c);
     if (ca && cb && cc) {
         GF_CHECK(strcmp(ca->runs[0].spec.run_id, cb->runs[0].spec.run_id) == 0);
         GF_CHECK(strcmp(ca->runs[0].spec.run_id, cc->runs[0].spec.run_id) != 0);
@@ -73,8 +72,7 @@ typedef struct method_run {
 
 static int run_text(gf_ctx *ctx, const char *name, const char *text, method_run *m)
 {
-    m->campaign = NULL;
-    GF_CHECK_OK(gf_campaign_load_string(ctx, name, text, strlen(text), NULL, 0, &m->campaign), ctx);
+    m->campaign = gf_test_campaign(ctx, name, text);
     if (!m->campaign)
         return 0;
     snprintf(m->dir, sizeof m->dir, "/tmp/gf_continuum_method_XXXXXX");
@@ -88,28 +86,23 @@ static int run_text(gf_ctx *ctx, const char *name, const char *text, method_run 
 
 static void run_done(method_run *m)
 {
-    char cmd[400];
-    snprintf(cmd, sizeof cmd, "rm -rf %s", m->dir);
-    GF_CHECK(system(cmd) == 0);
+    GF_CHECK(gf_test_remove_tree(m->dir));
     gf_campaign_destroy(&m->campaign);
 }
 
-static void small_collapse(void)
+/* R0 = 16 D, a = 0.5, cell D, 25 sqrt(D/g): the volume kept, the front past R0, the back wall's height H0. */
+static const char *const small_collapse_text =
+    "method: continuum\nend_time: 25\n"
+    "scene: {name: column_collapse, column_length_over_D: 16, aspect_ratio: 0.5}\n"
+    "grains: {diameter_m: 0.01, density_kg_m3: 2500}\ncontinuum: {cell_over_D: 1.0}\n";
+
+static void small_collapse(gf_ctx *ctx, const method_run *m)
 {
-    const char *text = "method: continuum\nend_time: 25\n"
-                       "scene: {name: column_collapse, column_length_over_D: 16, aspect_ratio: 0.5}\n"
-                       "grains: {diameter_m: 0.01, density_kg_m3: 2500}\ncontinuum: {cell_over_D: 1.0}\n";
-    gf_ctx ctx = {0};
-    method_run m;
-    if (!run_text(&ctx, "s", text, &m))
-        return;
-    const gf_campaign *c = m.campaign;
-    const char *run_dir = m.run_dir;
     char path[300];
-    snprintf(path, sizeof path, "%s/diagnostics.nc", run_dir);
+    snprintf(path, sizeof path, "%s/diagnostics.nc", m->run_dir);
     GF_CHECK(access(path, R_OK) == 0);
     gf_continuum_collapse_result r;
-    GF_CHECK_OK(gf_continuum_collapse_run(&ctx, &c->runs[0].spec, NULL, NULL, NULL, &r), &ctx);
+    GF_CHECK_OK(gf_continuum_collapse_run(ctx, &m->campaign->runs[0].spec, NULL, NULL, NULL, &r), ctx);
     double D = 0.01, R0 = r.column_length_m, H0 = r.column_height_m;
     printf("continuum collapse R0 = 16 D, a = 0.5, cell D: (R - R0)/R0 = %.3f, H(back wall)/H0 = %.3f, volume drift "
            "%.2e, %ld steps to t = %.2f s\n",
@@ -117,7 +110,6 @@ static void small_collapse(void)
     GF_CHECK(fabs(r.mass_drift) < 1e-3);
     GF_CHECK(r.front_m > R0 + D);
     GF_CHECK_ABS(r.height_m, H0, D);
-    run_done(&m);
 }
 
 static double last_flow_rate(gf_ctx *ctx, const char *run_dir)
@@ -136,25 +128,33 @@ static double last_flow_rate(gf_ctx *ctx, const char *run_dir)
     return last;
 }
 
-static void small_avalanche(void)
+/* Bed 12 D at 25 deg, cell D/2, 300 sqrt(D/g): the last flow rate is W phi times the Bagnold flux. */
+static const char *const small_avalanche_text =
+    "method: continuum\nend_time: 300\n"
+    "scene: {name: avalanche, incline_deg: 25, bed_height_over_D: 12, width_over_D: 6}\n"
+    "grains: {diameter_m: 0.005, density_kg_m3: 2500}\n"
+    "continuum: {mu_s: 0.280, mu_2: 0.703, I0: 0.3, phi: 0.6, cell_over_D: 0.5}\n";
+
+static void small_avalanche(gf_ctx *ctx, const method_run *m)
 {
-    const char *text = "method: continuum\nend_time: 300\n"
-                       "scene: {name: avalanche, incline_deg: 25, bed_height_over_D: 12, width_over_D: 6}\n"
-                       "grains: {diameter_m: 0.005, density_kg_m3: 2500}\n"
-                       "continuum: {mu_s: 0.280, mu_2: 0.703, I0: 0.3, phi: 0.6, cell_over_D: 0.5}\n";
-    gf_ctx ctx = {0};
-    method_run m;
-    if (!run_text(&ctx, "v", text, &m))
-        return;
-    const gf_campaign *c = m.campaign;
-    double D = 0.005, g = c->runs[0].spec.gravity_m_s2, W = 6.0 * D, phi = 0.6;
+    double D = 0.005, g = m->campaign->runs[0].spec.gravity_m_s2, W = 6.0 * D, phi = 0.6;
     gf_bagnold b = {.law = {.mu_s = 0.280, .mu_2 = 0.703, .I0 = 0.3}, .theta_rad = 25.0 * M_PI / 180.0, .phi = phi,
                     .g_m_s2 = g, .d_m = D, .h_m = 12.0 * D};
-    double q = last_flow_rate(&ctx, m.run_dir), q_exact = W * phi * gf_bagnold_flux(&b);
+    double q = last_flow_rate(ctx, m->run_dir), q_exact = W * phi * gf_bagnold_flux(&b);
     printf("continuum avalanche 25 deg, h = 12 D, cell D/2: Q_g = %.5e m3/s at t = 300 sqrt(D/g), Bagnold %.5e "
            "(%+.2f %%), %ld steps\n",
-           q, q_exact, 100.0 * (q / q_exact - 1.0), m.res.steps);
+           q, q_exact, 100.0 * (q / q_exact - 1.0), m->res.steps);
     GF_CHECK_REL(q, q_exact, 1e-2);
+}
+
+/* The campaign text run through the campaign path (run_text), checked by check, its folder removed. */
+static void run_and_check(const char *name, const char *text, void (*check)(gf_ctx *ctx, const method_run *m))
+{
+    gf_ctx ctx = {0};
+    method_run m;
+    if (!run_text(&ctx, name, text, &m))
+        return;
+    check(&ctx, &m);
     run_done(&m);
 }
 
@@ -162,7 +162,7 @@ int main(void)
 {
     refusals();
     run_id_unchanged();
-    small_collapse();
-    small_avalanche();
+    run_and_check("s", small_collapse_text, small_collapse);
+    run_and_check("v", small_avalanche_text, small_avalanche);
     return gf_test_finish();
 }

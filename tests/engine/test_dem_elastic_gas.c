@@ -26,35 +26,11 @@
 #include <stdio.h>
 
 #include "dem_testutil.h"
+#include "gf_test_energy.h"
 
 #ifndef DT_OVER_TC
 #define DT_OVER_TC 0.01
 #endif
-
-static double elastic_energy(gf_sim *sim)
-{
-    gf_particles *p = gf_sim_particles(sim);
-    double lo[3], hi[3], e = 0.0;
-    int per[3];
-    gf_sim_box(sim, lo, hi, per);
-    /* k_n of the mean pair, (3.17) with gamma_n = 0 */
-    const gf_run_spec *s = gf_sim_spec(sim);
-    double D = s->grains.diameter_m, m = s->grains.density_kg_m3 * M_PI * D * D * D / 6.0;
-    double tc = gf_run_spec_t_contact_s(s), k = 0.5 * m * M_PI * M_PI / (tc * tc);
-    for (size_t i = 0; i < p->n_local; ++i)
-        for (size_t j = i + 1; j < p->n_local; ++j) {
-            double d[3] = {p->x_m[i] - p->x_m[j], p->y_m[i] - p->y_m[j], p->z_m[i] - p->z_m[j]}, r2 = 0.0;
-            for (int a = 0; a < 3; ++a) {
-                double L = hi[a] - lo[a];
-                d[a] -= L * round(d[a] / L);
-                r2 += d[a] * d[a];
-            }
-            double ov = p->radius_m[i] + p->radius_m[j] - sqrt(r2);
-            if (ov > 0.0)
-                e += 0.5 * k * ov * ov;
-        }
-    return e;
-}
 
 /* The Hertz gas: the audit's total, with the law's own potential. */
 static void hertz_gas(gf_ctx *ctx, const gf_run_spec *linear_spec)
@@ -85,20 +61,14 @@ static void hertz_gas(gf_ctx *ctx, const gf_run_spec *linear_spec)
 int main(void)
 {
     gf_ctx ctx = {0};
-    gf_run_spec spec = gf_test_spec("elastic_gas");
-    spec.contact.restitution = 1.0;
-    spec.contact.friction = 0.0;
-    spec.contact.dt_over_tc = DT_OVER_TC;
-    spec.grains.polydispersity = 0.0; /* one k_n, one m*: E is exactly the sum above */
-    gf_run_spec_set_param(&ctx, &spec, "n_grains", 27);
-    gf_run_spec_set_param(&ctx, &spec, "box_over_D", 5.0);
-    gf_run_spec_set_param(&ctx, &spec, "speed_nd", 2.0);
+    gf_run_spec spec = gf_test_elastic_gas_spec(&ctx, 27, 5.0, DT_OVER_TC);
+    spec.grains.polydispersity = 0.0; /* one k_n, one m*: E is exactly the sum of gf_test_spring_energy */
     gf_sim *sim = NULL;
     GF_CHECK_OK(gf_test_sim(&ctx, &spec, 1, &sim), &ctx);
     if (!sim)
         return gf_test_finish();
     gf_particles *p = gf_sim_particles(sim);
-    double e0 = gf_particles_kinetic_energy(p) + elastic_energy(sim), P0[3], scale = 0.0;
+    double e0 = gf_particles_kinetic_energy(p) + gf_test_spring_energy(sim), P0[3], scale = 0.0;
     gf_particles_momentum(p, P0);
     for (size_t i = 0; i < p->n_local; ++i)
         scale += p->mass_kg[i] * sqrt(p->vx_m_s[i] * p->vx_m_s[i] + p->vy_m_s[i] * p->vy_m_s[i] + p->vz_m_s[i] * p->vz_m_s[i]);
@@ -106,7 +76,7 @@ int main(void)
     long contacts_seen = 0;
     for (int k = 0; k < 100; ++k) {
         GF_CHECK_OK(gf_sim_advance(sim, 1000), &ctx);
-        double e = gf_particles_kinetic_energy(p) + elastic_energy(sim), P[3];
+        double e = gf_particles_kinetic_energy(p) + gf_test_spring_energy(sim), P[3];
         gf_particles_momentum(p, P);
         size_t nc;
         gf_sim_contact_stats(sim, &nc, NULL);

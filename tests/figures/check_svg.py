@@ -33,6 +33,13 @@ import sys
 import xml.etree.ElementTree as ET
 
 NS = "{http://www.w3.org/2000/svg}"
+# checks that count the elements of a class: key -> (class, tag, what the message calls them)
+COUNTED = {
+    "reflines": ("refline", "polyline", "reflines"),
+    "regions": ("region", "polygon", "regions"),
+    "curves": ("curve", "polyline", "curves"),
+    "legend": ("legend-label", "text", "legend rows"),
+}
 failures = []
 
 
@@ -109,18 +116,10 @@ def main():
                 tag = list(mk)[-1].tag.replace(NS, "")
                 got[tag] = got.get(tag, 0) + 1
             check(got == want, f"shapes: {got} != {want}")
-        elif key == "reflines":
-            n = len(by_class(root, "refline", "polyline"))
-            check(n == int(val), f"reflines: {n} != {val}")
-        elif key == "regions":
-            n = len(by_class(root, "region", "polygon"))
-            check(n == int(val), f"regions: {n} != {val}")
-        elif key == "curves":
-            n = len(by_class(root, "curve", "polyline"))
-            check(n == int(val), f"curves: {n} != {val}")
-        elif key == "legend":
-            n = len(by_class(root, "legend-label", "text"))
-            check(n == int(val), f"legend rows: {n} != {val}")
+        elif key in COUNTED:
+            cls, tag, what = COUNTED[key]
+            n = len(by_class(root, cls, tag))
+            check(n == int(val), f"{what}: {n} != {val}")
         elif key in ("xticks", "yticks"):
             vals, pos, _ = axis_ticks(root, key[0])
             want = [float(s) for s in val.split(",")]

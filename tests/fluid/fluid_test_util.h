@@ -11,11 +11,13 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "core/gf_rng.h"
 #include "coupling/gf_coupling.h"
 #include "coupling/gf_coupling_diag.h"
 #include "gf_run_spec.h"
 #include "particles/gf_particles.h"
 #include "gf_test.h"
+#include "gf_test_drag.h"
 
 typedef struct coupled_loop {
     gf_coupling *c;
@@ -112,20 +114,29 @@ static inline void grain_mean_velocity(const gf_particles *p, double v[3])
             v[d] /= (double)n;
 }
 
-/* Schiller–Naumann terminal velocity: solve C_D Re^2 = (4/3) Ar by bisection on Re. */
+/* n^3 grains of diameter D and density rho_p (flags: GF_P_GLUED or 0) at the
+ * nodes (i + 1/2) a of a simple cubic lattice of spacing a > D, each moved by
+ * up to 0.45 (a - D) along each axis (uniform, from seed): the lattice's
+ * solid fraction without its order, and no two grains touching. */
+static inline void jittered_lattice(gf_ctx *ctx, gf_particles *p, int n, double a, double D, double rho_p,
+                                    uint8_t flags, uint64_t seed)
+{
+    gf_rng rng;
+    gf_rng_seed(&rng, seed);
+    double jit = 0.45 * (a - D);
+    for (int k = 0; k < n; ++k)
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i)
+                gf_particles_add(ctx, p, (i + 0.5) * a + gf_rng_range(&rng, -jit, jit),
+                                 (j + 0.5) * a + gf_rng_range(&rng, -jit, jit),
+                                 (k + 0.5) * a + gf_rng_range(&rng, -jit, jit), D / 2, rho_p, flags, NULL);
+}
+
+/* Schiller–Naumann terminal velocity (m/s) of a sphere of diameter D. */
 static inline double schiller_naumann_terminal(double D, double rho_p, double rho_f, double mu, double g)
 {
     double ar = rho_f * (rho_p - rho_f) * g * D * D * D / (mu * mu);
-    double lo = 1e-8, hi = 1e5;
-    for (int it = 0; it < 200; ++it) {
-        double re = sqrt(lo * hi);
-        double f = 24.0 * re * (1.0 + 0.15 * pow(re, 0.687)) - 4.0 / 3.0 * ar;
-        if (f > 0)
-            hi = re;
-        else
-            lo = re;
-    }
-    return sqrt(lo * hi) * mu / (rho_f * D);
+    return gf_test_schiller_naumann_Re(ar) * mu / (rho_f * D);
 }
 
 #endif

@@ -17,64 +17,41 @@
 #include "gf_sim.h"
 #include "gf_test.h"
 #include "gf_test_restart.h"
+#include "gf_test_sim.h"
 
-#define D 7.6e-3
-#define RHO_P 2500.0
-#define RHO_F 1000.0
-#define ETA 0.1 /* Pa s: St ~ 0.3, the viscous regime of the thesis' chapter 5 */
+#define D 7.6e-3 /* the grains of gf_test_viscous_collapse_spec */
 
-static gf_run_spec collapse_spec(gf_ctx *ctx, const char *model)
+/* Bitwise the same grains and basal pore pressure; the collapse moves and a pore pressure developed. */
+static void compare(gf_ctx *ctx, const gf_run_spec *spec, long N, gf_sim *ref, gf_sim *b)
 {
-    gf_run_spec spec;
-    gf_run_spec_defaults(&spec);
-    snprintf(spec.scene, sizeof spec.scene, "column_collapse");
-    spec.grains.density_kg_m3 = RHO_P;
-    spec.grains.diameter_m = D;
-    snprintf(spec.fluid.model, sizeof spec.fluid.model, "%s", model);
-    spec.fluid.density_kg_m3 = RHO_F;
-    spec.fluid.viscosity_Pa_s = ETA;
-    spec.phi_initial = 0.6;
-    spec.aspect_ratio_a = 0.5;
-    gf_run_spec_set_param(ctx, &spec, "column_length_over_D", 12.0);
-    return spec;
+    (void)ctx, (void)spec;
+    gf_particles *p = gf_sim_particles(ref), *q = gf_sim_particles(b);
+    size_t n = p->n_local;
+    double lo[3], hi[3], x[3][3], pr[3], pb[3], vmax = 0.0;
+    gf_sim_box(ref, lo, hi, NULL);
+    for (int k = 0; k < 3; ++k) { /* basal gauges at 4/16, 8/16 and 13/16 of R0 = 12 D */
+        x[k][0] = (4.0 + 4.5 * k) / 16.0 * 12.0 * D, x[k][1] = 0.5 * D, x[k][2] = 0.5 * (lo[2] + hi[2]);
+    }
+    int ok = gf_test_same_motion(p, q);
+    ok = gf_test_same_pressure(ref, b, 3, x, pr, pb) && ok;
+    for (size_t i = 0; i < n; ++i)
+        vmax = fmax(vmax, fabs(p->vx_m_s[i]));
+    printf("immersed collapse: %zu grains, %ld + %ld steps (t = %.4g s), max |u_x| = %.3g sqrt(gD), basal excess "
+           "pressure %.4g, %.4g, %.4g Pa (restarted %.4g, %.4g, %.4g): bitwise identical = %d\n",
+           n, N, N, gf_sim_time_s(ref), vmax / sqrt(9.81 * D), pr[0], pr[1], pr[2], pb[0], pb[1], pb[2], ok);
+    GF_CHECK(ok);
+    GF_CHECK(vmax > 1e-3 * sqrt(9.81 * D)); /* it moves: the fluid state matters */
+    GF_CHECK(fabs(pr[0]) > 0.0);           /* a pore pressure developed */
 }
 
 int main(void)
 {
     gf_ctx ctx = {0};
-    char path[512];
-    gf_test_checkpoint_path(path, sizeof path, "coupling_restart");
-    gf_run_spec spec = collapse_spec(&ctx, "unresolved");
-    gf_sim *ref = NULL, *b = NULL;
-    const long N = 4001;
-    if (!gf_test_split_run(&ctx, &spec, N, path, &ref, &b))
-        return gf_test_finish();
-    if (b) {
-        gf_particles *p = gf_sim_particles(ref), *q = gf_sim_particles(b);
-        size_t n = p->n_local;
-        int ok = gf_test_same_motion(p, q);
-        double lo[3], hi[3], pr[3], pb[3], vmax = 0.0;
-        gf_sim_box(ref, lo, hi, NULL);
-        for (int k = 0; k < 3; ++k) { /* basal gauges at 4/16, 8/16 and 13/16 of R0 = 12 D */
-            double x[3] = {(4.0 + 4.5 * k) / 16.0 * 12.0 * D, 0.5 * D, 0.5 * (lo[2] + hi[2])};
-            pr[k] = gf_sim_excess_pressure_Pa(ref, x);
-            pb[k] = gf_sim_excess_pressure_Pa(b, x);
-            ok = ok && memcmp(&pr[k], &pb[k], sizeof(double)) == 0;
-        }
-        for (size_t i = 0; i < n; ++i)
-            vmax = fmax(vmax, fabs(p->vx_m_s[i]));
-        printf("immersed collapse: %zu grains, %ld + %ld steps (t = %.4g s), max |u_x| = %.3g sqrt(gD), basal excess "
-               "pressure %.4g, %.4g, %.4g Pa (restarted %.4g, %.4g, %.4g): bitwise identical = %d\n",
-               n, N, N, gf_sim_time_s(ref), vmax / sqrt(9.81 * D), pr[0], pr[1], pr[2], pb[0], pb[1], pb[2], ok);
-        GF_CHECK(ok);
-        GF_CHECK(vmax > 1e-3 * sqrt(9.81 * D)); /* it moves: the fluid state matters */
-        GF_CHECK(fabs(pr[0]) > 0.0);           /* a pore pressure developed */
-        gf_sim_destroy(&b);
-    }
-    gf_sim_destroy(&ref);
+    gf_run_spec spec, dry;
+    gf_test_viscous_collapse_spec(&ctx, "unresolved", &spec);
     /* a dry run's checkpoint holds no fluid: an immersed restart from it is refused, naming why */
-    gf_run_spec dry = collapse_spec(&ctx, "none");
-    gf_test_restart_refused(&ctx, &spec, &dry, 0, path, "no fluid state", "immersed restart from a dry checkpoint");
-    remove(path);
-    return gf_test_finish();
+    gf_test_viscous_collapse_spec(&ctx, "none", &dry);
+    const gf_test_restart_case c = {.stem = "coupling_restart", .N = 4001, .compare = compare, .other = &dry,
+                                    .why = "no fluid state", .what = "immersed restart from a dry checkpoint"};
+    return gf_test_restart(&ctx, &spec, &c);
 }

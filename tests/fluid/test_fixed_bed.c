@@ -14,7 +14,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/gf_rng.h"
 #include "fluid_test_util.h"
 #include "gf_test.h"
 
@@ -29,15 +28,7 @@ static double bed_flow(const char *drag, double phi, double G, double D, double 
     double Lb = n * a;
     coupled_loop L = {.g = {0, 0, -9.81}, .substeps = 1, .dt_f_max = 1.0};
     periodic_cube(&ctx, &spec, Lb, &L);
-    gf_rng rng;
-    gf_rng_seed(&rng, 5);
-    double jit = 0.45 * (a - D);
-    for (int k = 0; k < n; ++k)
-        for (int j = 0; j < n; ++j)
-            for (int i = 0; i < n; ++i)
-                gf_particles_add(&ctx, L.p, (i + 0.5) * a + gf_rng_range(&rng, -jit, jit),
-                                 (j + 0.5) * a + gf_rng_range(&rng, -jit, jit),
-                                 (k + 0.5) * a + gf_rng_range(&rng, -jit, jit), D / 2, 2500, GF_P_GLUED, NULL);
+    jittered_lattice(&ctx, L.p, n, a, D, 2500, GF_P_GLUED, 5);
     double Gv[3] = {G, 0, 0};
     gf_coupling_set_mean_pressure_gradient(L.c, Gv);
     double u[3] = {0, 0, 0}, u_prev = 0;

@@ -21,7 +21,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/gf_rng.h"
 #include "fluid_test_util.h"
 #include "gf_test.h"
 
@@ -35,15 +34,7 @@ static double settle(const char *drag, double phi, double D, double rp, double r
     double Lb = n * a;  /* a box of whole lattice cells, about 16 D: phi exact */
     coupled_loop L = {.g = {0, 0, -9.81}, .substeps = 10, .dt_f_max = 1.0};
     periodic_cube(&ctx, &spec, Lb, &L);
-    gf_rng rng;
-    gf_rng_seed(&rng, 11);
-    double jit = 0.45 * (a - D);
-    for (int k = 0; k < n; ++k)
-        for (int j = 0; j < n; ++j)
-            for (int i = 0; i < n; ++i)
-                gf_particles_add(&ctx, L.p, (i + 0.5) * a + gf_rng_range(&rng, -jit, jit),
-                                 (j + 0.5) * a + gf_rng_range(&rng, -jit, jit),
-                                 (k + 0.5) * a + gf_rng_range(&rng, -jit, jit), D / 2, rp, 0, NULL);
+    jittered_lattice(&ctx, L.p, n, a, D, rp, 0, 11);
     double phi_box = L.p->n_local * M_PI * D * D * D / 6 / (Lb * Lb * Lb);
     double U = 0.0;
     for (int s = 0; s < 60; ++s) {

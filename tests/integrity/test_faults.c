@@ -305,19 +305,7 @@ static int wait_writing(double timeout_s)
     return 0;
 }
 
-static int file_contains(const char *path, const char *text)
-{
-    FILE *f = fopen(path, "r");
-    if (!f)
-        return 0;
-    char line[2048];
-    int found = 0;
-    while (!found && fgets(line, sizeof line, f))
-        found = strstr(line, text) != NULL;
-    fclose(f);
-    return found;
-}
-
+/* Lines of the file at path holding text (0 when it cannot be read). */
 static int count_lines_with(const char *path, const char *text)
 {
     FILE *f = fopen(path, "r");
@@ -330,6 +318,8 @@ static int count_lines_with(const char *path, const char *text)
     fclose(f);
     return n;
 }
+
+static int file_contains(const char *path, const char *text) { return count_lines_with(path, text) > 0; }
 
 static void log_path(const char *name, char *buf, size_t n)
 {
@@ -432,6 +422,10 @@ static void signal_campaign(int sig, int whole_group)
     GF_CHECK(n_cut >= 1);
     resume_to_completion(&s, NULL, name);
 }
+
+/* Ctrl-C at the terminal (SIGINT to the whole process group); SIGTERM to the parent alone. */
+static void interrupt_group(void) { signal_campaign(SIGINT, 1); }
+static void terminate_parent(void) { signal_campaign(SIGTERM, 0); }
 
 static void concurrent(void)
 {
@@ -615,36 +609,13 @@ int main(int argc, char **argv)
         fprintf(f, campaign_text, strcmp(scenario, "no_particles") == 0 ? ", particles: false" : "");
         fclose(f);
     }
+    static const gf_test_mode scenarios[] = {
+        {"kill9_parent", kill_parent}, {"kill9_worker", kill_worker}, {"sigint", interrupt_group},
+        {"sigterm", terminate_parent}, {"concurrent", concurrent}, {"resume_orphans", resume_orphans},
+        {"truncated", truncated}, {"full_disk", full_disk}, {"no_particles", no_particles}, {"post_exit", post_exit}};
     const double t0 = gf_wtime();
-    if (!strcmp(scenario, "kill9_parent"))
-        kill_parent();
-    else if (!strcmp(scenario, "kill9_worker"))
-        kill_worker();
-    else if (!strcmp(scenario, "sigint"))
-        signal_campaign(SIGINT, 1);
-    else if (!strcmp(scenario, "sigterm"))
-        signal_campaign(SIGTERM, 0);
-    else if (!strcmp(scenario, "concurrent"))
-        concurrent();
-    else if (!strcmp(scenario, "resume_orphans"))
-        resume_orphans();
-    else if (!strcmp(scenario, "truncated"))
-        truncated();
-    else if (!strcmp(scenario, "full_disk"))
-        full_disk();
-    else if (!strcmp(scenario, "no_particles"))
-        no_particles();
-    else if (!strcmp(scenario, "post_exit"))
-        post_exit();
-    else
+    if (!gf_test_run_mode(scenarios, (int)(sizeof scenarios / sizeof scenarios[0]), scenario))
         gf_test_check(0, __FILE__, __LINE__, "unknown scenario %s", scenario);
     printf("%s: %.1f s wall (logs in %s)\n", scenario, gf_wtime() - t0, work);
-    int rc = gf_test_finish();
-    if (rc == 0) {
-        char cmd[800];
-        snprintf(cmd, sizeof cmd, "rm -rf '%s'", work);
-        if (system(cmd) != 0)
-            printf("could not remove %s\n", work);
-    }
-    return rc;
+    return gf_test_finish_removing(work);
 }

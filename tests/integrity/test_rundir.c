@@ -205,12 +205,5 @@ int main(void)
     GF_CHECK(mkdtemp(dir) != NULL);
     test_lock();
     test_manifest();
-    int rc = gf_test_finish();
-    if (rc == 0) {
-        char cmd[300];
-        snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
-        if (system(cmd) != 0)
-            printf("could not remove %s\n", dir);
-    }
-    return rc;
+    return gf_test_finish_removing(dir);
 }

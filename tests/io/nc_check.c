@@ -49,6 +49,29 @@ void nc_test_write_fluid_fields(const char *path, const gf_nc_meta *meta, const 
     free(f);
 }
 
+double nc_test_radius(int k) { return 1e-3 * (1 + 0.01 * k); }
+
+gf_particles *nc_test_particles(gf_ctx *ctx, int n, nc_test_place_fn place)
+{
+    gf_particles *p = NULL;
+    GF_CHECK_OK(gf_particles_create(ctx, (size_t)n, &p), ctx);
+    for (int k = 0; p && k < n; ++k) {
+        double x[3];
+        place(k, x);
+        GF_CHECK_OK(gf_particles_add(ctx, p, x[0], x[1], x[2], nc_test_radius(k), 2500.0, k == 0 ? GF_P_GLUED : 0,
+                                     NULL),
+                    ctx);
+    }
+    return p;
+}
+
+int nc_test_main(int argc, char **argv, void (*round_trip)(const char *python), void (*errors)(void))
+{
+    round_trip(argc > 1 ? argv[1] : "python3");
+    errors();
+    return gf_test_finish();
+}
+
 void nc_test_run_init(nc_test_run *run)
 {
     memset(run, 0, sizeof *run);

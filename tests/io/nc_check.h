@@ -10,6 +10,7 @@
 #include "core/gf_groups.h"
 #include "gf_run_spec.h"
 #include "io/gf_nc.h"
+#include "particles/gf_particles.h"
 
 typedef struct nc_test_run {
     gf_run_spec spec;
@@ -29,6 +30,18 @@ extern const gf_var_info nc_test_fluid_fields[NC_TEST_N_FLUID_FIELDS];
 typedef double (*nc_test_field_fn)(int iv, int i, int j, int k, int it);
 void nc_test_write_fluid_fields(const char *path, const gf_nc_meta *meta, const int n_cells[3], const double lo[3],
                                 const double h[3], int nt, const double *times, nc_test_field_fn value);
+
+/* The grains of the particles writer tests: radius of grain k (m), and a
+ * store of n grains, grain k at place(k) (m, t = 0) with that radius and
+ * 2500 kg m-3, grain 0 glued, ids 0..n-1 in order (each call checked).
+ * Owner: the caller (gf_particles_destroy); NULL when it could not be made. */
+typedef void (*nc_test_place_fn)(int k, double x[3]);
+double nc_test_radius(int k);
+gf_particles *nc_test_particles(gf_ctx *ctx, int n, nc_test_place_fn place);
+
+/* The main of a writer test: the round trip, checked with the python of
+ * argv[1] (default python3), then the refused inputs; the exit code. */
+int nc_test_main(int argc, char **argv, void (*round_trip)(const char *python), void (*errors)(void));
 
 /* Immersed column collapse, St = 0.5, r = 2: a run as the pipeline would pass it. */
 void nc_test_run_init(nc_test_run *run);

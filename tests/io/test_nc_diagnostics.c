@@ -135,8 +135,5 @@ static void test_diagnostics_errors(void)
 
 int main(int argc, char **argv)
 {
-    const char *python = argc > 1 ? argv[1] : "python3";
-    test_diagnostics_round_trip(python);
-    test_diagnostics_errors();
-    return gf_test_finish();
+    return nc_test_main(argc, argv, test_diagnostics_round_trip, test_diagnostics_errors);
 }

@@ -105,8 +105,5 @@ static void test_fields_errors(void)
 
 int main(int argc, char **argv)
 {
-    const char *python = argc > 1 ? argv[1] : "python3";
-    test_fields_round_trip(python);
-    test_fields_errors();
-    return gf_test_finish();
+    return nc_test_main(argc, argv, test_fields_round_trip, test_fields_errors);
 }

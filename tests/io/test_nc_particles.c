@@ -23,6 +23,8 @@ static double y_at(int k, double t) { return 0.02 + 0.003 * k + 0.5 * t - 0.5 * 
 static double z_at(int k, double t) { (void)t; return -0.001 * k; }
 static double v_at(int k, double t) { (void)k; return 0.5 - g * t; }
 
+static void start(int k, double x[3]) { x[0] = x_at(k, 0), x[1] = y_at(k, 0), x[2] = z_at(k, 0); }
+
 /* set every grain's state from its id (= k, its trajectory at open) */
 static void set_state(gf_particles *p, double t)
 {
@@ -44,12 +46,7 @@ static void test_particles_round_trip(const char *python)
     nc_test_run run;
     nc_test_run_init(&run);
     gf_ctx ctx = {0};
-    gf_particles *p = NULL;
-    GF_CHECK_OK(gf_particles_create(&ctx, N, &p), &ctx);
-    for (int k = 0; k < N; ++k)
-        GF_CHECK_OK(gf_particles_add(&ctx, p, x_at(k, 0), y_at(k, 0), z_at(k, 0), 1e-3 * (1 + 0.01 * k), 2500.0,
-                                     k == 0 ? GF_P_GLUED : 0, NULL),
-                    &ctx);
+    gf_particles *p = nc_test_particles(&ctx, N, start);
     GF_CHECK(p->id[3] == 3);   /* ids are assigned in insertion order: trajectory k has id k */
     char path[1100];
     snprintf(path, sizeof path, "%s/particles.nc", nc_test_dir("particles"));
@@ -84,7 +81,7 @@ static void test_particles_round_trip(const char *python)
     GF_CHECK(n_exact == N * NT - 2);
     GF_CHECK(n_nan_ok == 2);
     for (int k = 0; r && k < N; ++k)
-        GF_CHECK(r[k] == 1e-3 * (1 + 0.01 * k));
+        GF_CHECK(r[k] == nc_test_radius(k));
     free(x);
     free(y);
     free(v);
@@ -157,8 +154,5 @@ static void test_particles_new_grain_is_refused(void)
 
 int main(int argc, char **argv)
 {
-    const char *python = argc > 1 ? argv[1] : "python3";
-    test_particles_round_trip(python);
-    test_particles_new_grain_is_refused();
-    return gf_test_finish();
+    return nc_test_main(argc, argv, test_particles_round_trip, test_particles_new_grain_is_refused);
 }

@@ -101,8 +101,5 @@ static void test_probes_errors(void)
 
 int main(int argc, char **argv)
 {
-    const char *python = argc > 1 ? argv[1] : "python3";
-    test_probes_round_trip(python);
-    test_probes_errors();
-    return gf_test_finish();
+    return nc_test_main(argc, argv, test_probes_round_trip, test_probes_errors);
 }

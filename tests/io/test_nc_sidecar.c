@@ -42,7 +42,11 @@ static double grain(int comp, int k, double t)
     default: return 0.002 * k * t;
     }
 }
-static double radius(int k) { return 1e-3 * (1 + 0.01 * k); }
+static void start(int k, double x[3])
+{
+    for (int c = 0; c < 3; ++c)
+        x[c] = grain(c, k, 0);
+}
 
 static double centre(int axis, int i) { return lo[axis] + (i + 0.5) * h[axis]; }
 static double field(int iv, int i, int j, int k, double t)
@@ -62,12 +66,7 @@ static void write_particles(const char *path, int n_records)
     nc_test_run run;
     nc_test_run_init(&run);
     gf_ctx ctx = {0};
-    gf_particles *p = NULL;
-    GF_CHECK_OK(gf_particles_create(&ctx, N, &p), &ctx);
-    for (int k = 0; k < N; ++k)
-        GF_CHECK_OK(gf_particles_add(&ctx, p, grain(0, k, 0), grain(1, k, 0), grain(2, k, 0), radius(k), 2500.0,
-                                     k == 0 ? GF_P_GLUED : 0, NULL),
-                    &ctx);
+    gf_particles *p = nc_test_particles(&ctx, N, start);
     gf_nc_writer *w = NULL;
     GF_CHECK_OK(gf_nc_particles_open(&ctx, path, &run.meta, p, &w), &ctx);
     for (int it = 0; it < n_records; ++it) {
@@ -304,91 +303,92 @@ static xmlDoc *read_sidecar(const char *dir, const char *name)
     return doc;
 }
 
-static void check_particles_sidecar(const char *dir, int n_records)
+/* The values read through one step of a sidecar (grid, record time t) that
+ * are the record's: *n_exact of *n_values (both incremented). */
+typedef void (*step_check_fn)(xmlNode *grid, const char *dir, double t, int *n_exact, int *n_values);
+
+/* Every step of dir/name (n_records of them, checked), each holding
+ * values_per_step values (what: their kind in the printed line). */
+static void check_sidecar(const char *dir, const char *name, int n_records, step_check_fn check_step,
+                          int values_per_step, const char *what)
 {
-    xmlDoc *doc = read_sidecar(dir, "particles.xmf");
+    xmlDoc *doc = read_sidecar(dir, name);
     if (!doc)
         return;
     xmlNode *grids[NT];
     int n = steps(doc, grids, NT, n_records);
     int n_exact = 0, n_values = 0;
-    for (int it = 0; it < n; ++it) {
-        xmlNode *topo = child(grids[it], "Topology", 0), *geom = child(grids[it], "Geometry", 0);
-        char *ne = attr(topo, "NumberOfElements"), *tt = attr(topo, "TopologyType");
-        GF_CHECK(ne && atoi(ne) == N && tt && !strcmp(tt, "Polyvertex"));
-        xmlFree(ne), xmlFree(tt);
-        for (int c = 0; c < 3; ++c) {
-            size_t m;
-            double *v = read_item(child(geom, "DataItem", c), dir, &m);
-            GF_CHECK(v && m == N);
-            for (int k = 0; v && m == N && k < N; ++k, ++n_values)
-                n_exact += v[k] == grain(c, k, times[it]);
-            free(v);
-        }
-        size_t m;
-        double *vel = read_attribute(grids[it], "velocity", dir, &m);
-        GF_CHECK(vel && m == 3 * N);
-        for (int k = 0; vel && m == 3 * N && k < N; ++k)
-            for (int c = 0; c < 3; ++c, ++n_values)
-                n_exact += vel[3 * k + c] == grain(3 + c, k, times[it]);
-        free(vel);
-        double *r = read_attribute(grids[it], "radius", dir, &m);
-        GF_CHECK(r && m == N);
-        for (int k = 0; r && m == N && k < N; ++k, ++n_values)
-            n_exact += r[k] == radius(k);
-        free(r);
-        double *glued = read_attribute(grids[it], "glued", dir, &m);
-        GF_CHECK(glued && m == N && glued[0] == 1.0 && glued[1] == 0.0);
-        free(glued);
-    }
-    gf_test_check(n_exact == n_values && n_values == n * N * 7, __FILE__, __LINE__,
-                  "particles.xmf: %d of %d grain values read through the sidecar are the record's", n_exact,
-                  n_values);
+    for (int it = 0; it < n; ++it)
+        check_step(grids[it], dir, times[it], &n_exact, &n_values);
+    gf_test_check(n_exact == n_values && n_values == n * values_per_step, __FILE__, __LINE__,
+                  "%s: %d of %d %s values read through the sidecar are the record's", name, n_exact, n_values, what);
     xmlFreeDoc(doc);
 }
 
-static void check_fields_sidecar(const char *dir)
+/* A particles step: N grains, positions, velocities, radii, the glued flag. */
+static void check_grain_step(xmlNode *grid, const char *dir, double t, int *n_exact, int *n_values)
 {
-    xmlDoc *doc = read_sidecar(dir, "fields.xmf");
-    if (!doc)
-        return;
-    xmlNode *grids[NT];
-    int n = steps(doc, grids, NT, NT);
-    int n_exact = 0, n_values = 0;
-    for (int it = 0; it < n; ++it) {
-        xmlNode *topo = child(grids[it], "Topology", 0), *geom = child(grids[it], "Geometry", 0);
-        char *dims = attr(topo, "Dimensions");
-        size_t nodes[3];
-        GF_CHECK(dims && parse_sizes(dims, nodes, 3) == 3 && nodes[0] == NZ + 1 && nodes[1] == NY + 1 &&
-                 nodes[2] == NX + 1);
-        xmlFree(dims);
-        size_t m0, m1;
-        double *origin = read_item(child(geom, "DataItem", 0), dir, &m0);
-        double *spacing = read_item(child(geom, "DataItem", 1), dir, &m1);
-        GF_CHECK(m0 == 3 && m1 == 3);
-        for (int a = 0; m0 == 3 && m1 == 3 && a < 3; ++a)   /* listed z, y, x */
-            GF_CHECK(origin[2 - a] == lo[a] && spacing[2 - a] == h[a]);
-        free(origin), free(spacing);
-        for (int iv = 0; iv < NV; ++iv) {
-            size_t m;
-            double *v = read_attribute(grids[it], nc_test_fluid_fields[iv].name, dir, &m);
-            GF_CHECK(v && m == NX * NY * NZ);
-            for (int k = 0; v && m == NX * NY * NZ && k < NZ; ++k)
-                for (int j = 0; j < NY; ++j)
-                    for (int i = 0; i < NX; ++i, ++n_values)
-                        n_exact += v[(k * NY + j) * NX + i] == field(iv, i, j, k, times[it]);
-            free(v);
-        }
+    xmlNode *topo = child(grid, "Topology", 0), *geom = child(grid, "Geometry", 0);
+    char *ne = attr(topo, "NumberOfElements"), *tt = attr(topo, "TopologyType");
+    GF_CHECK(ne && atoi(ne) == N && tt && !strcmp(tt, "Polyvertex"));
+    xmlFree(ne), xmlFree(tt);
+    for (int c = 0; c < 3; ++c) {
         size_t m;
-        double *vel = read_attribute(grids[it], "fluid_velocity", dir, &m);
-        GF_CHECK(vel && m == 3 * NX * NY * NZ);
-        for (int c = 0; vel && m == 3 * NX * NY * NZ && c < 3; ++c, ++n_values)
-            n_exact += vel[3 * (NX * NY * NZ - 1) + c] == field(1 + c, NX - 1, NY - 1, NZ - 1, times[it]);
-        free(vel);
+        double *v = read_item(child(geom, "DataItem", c), dir, &m);
+        GF_CHECK(v && m == N);
+        for (int k = 0; v && m == N && k < N; ++k, ++*n_values)
+            *n_exact += v[k] == grain(c, k, t);
+        free(v);
     }
-    gf_test_check(n_exact == n_values && n_values == n * (NV * NX * NY * NZ + 3), __FILE__, __LINE__,
-                  "fields.xmf: %d of %d field values read through the sidecar are the record's", n_exact, n_values);
-    xmlFreeDoc(doc);
+    size_t m;
+    double *vel = read_attribute(grid, "velocity", dir, &m);
+    GF_CHECK(vel && m == 3 * N);
+    for (int k = 0; vel && m == 3 * N && k < N; ++k)
+        for (int c = 0; c < 3; ++c, ++*n_values)
+            *n_exact += vel[3 * k + c] == grain(3 + c, k, t);
+    free(vel);
+    double *r = read_attribute(grid, "radius", dir, &m);
+    GF_CHECK(r && m == N);
+    for (int k = 0; r && m == N && k < N; ++k, ++*n_values)
+        *n_exact += r[k] == nc_test_radius(k);
+    free(r);
+    double *glued = read_attribute(grid, "glued", dir, &m);
+    GF_CHECK(glued && m == N && glued[0] == 1.0 && glued[1] == 0.0);
+    free(glued);
+}
+
+/* A fields step: the grid's nodes, origin and spacing, every field, the last cell's velocity. */
+static void check_field_step(xmlNode *grid, const char *dir, double t, int *n_exact, int *n_values)
+{
+    xmlNode *topo = child(grid, "Topology", 0), *geom = child(grid, "Geometry", 0);
+    char *dims = attr(topo, "Dimensions");
+    size_t nodes[3];
+    GF_CHECK(dims && parse_sizes(dims, nodes, 3) == 3 && nodes[0] == NZ + 1 && nodes[1] == NY + 1 &&
+             nodes[2] == NX + 1);
+    xmlFree(dims);
+    size_t m0, m1;
+    double *origin = read_item(child(geom, "DataItem", 0), dir, &m0);
+    double *spacing = read_item(child(geom, "DataItem", 1), dir, &m1);
+    GF_CHECK(m0 == 3 && m1 == 3);
+    for (int a = 0; m0 == 3 && m1 == 3 && a < 3; ++a)   /* listed z, y, x */
+        GF_CHECK(origin[2 - a] == lo[a] && spacing[2 - a] == h[a]);
+    free(origin), free(spacing);
+    for (int iv = 0; iv < NV; ++iv) {
+        size_t m;
+        double *v = read_attribute(grid, nc_test_fluid_fields[iv].name, dir, &m);
+        GF_CHECK(v && m == NX * NY * NZ);
+        for (int k = 0; v && m == NX * NY * NZ && k < NZ; ++k)
+            for (int j = 0; j < NY; ++j)
+                for (int i = 0; i < NX; ++i, ++*n_values)
+                    *n_exact += v[(k * NY + j) * NX + i] == field(iv, i, j, k, t);
+        free(v);
+    }
+    size_t m;
+    double *vel = read_attribute(grid, "fluid_velocity", dir, &m);
+    GF_CHECK(vel && m == 3 * NX * NY * NZ);
+    for (int c = 0; vel && m == 3 * NX * NY * NZ && c < 3; ++c, ++*n_values)
+        *n_exact += vel[3 * (NX * NY * NZ - 1) + c] == field(1 + c, NX - 1, NY - 1, NZ - 1, t);
+    free(vel);
 }
 
 static int run_paraview(const char *pvpython, const char *dir)
@@ -418,12 +418,12 @@ int main(int argc, char **argv)
     if (pvpython)
         return run_paraview(pvpython, dir);
     H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
-    check_particles_sidecar(dir, NT);
-    check_fields_sidecar(dir);
+    check_sidecar(dir, "particles.xmf", NT, check_grain_step, N * 7, "grain");
+    check_sidecar(dir, "fields.xmf", NT, check_field_step, NV * NX * NY * NZ + 3, "field");
     /* the file rewritten with fewer records: the sidecar follows it */
     snprintf(path, sizeof path, "%s/particles.nc", dir);
     write_particles(path, 2);
-    check_particles_sidecar(dir, 2);
+    check_sidecar(dir, "particles.xmf", 2, check_grain_step, N * 7, "grain");
     snprintf(path, sizeof path, "%s/particles.xmf.tmp", dir);
     GF_CHECK(access(path, F_OK) != 0);
     return gf_test_finish();

@@ -33,6 +33,7 @@
 
 #include "core/gf_timer.h"
 #include "gf_test.h"
+#include "gf_test_sim.h"
 #include "schedule/gf_ledger.h"
 #include "schedule/gf_run_exec.h"
 
@@ -62,20 +63,11 @@ static void gas_spec(gf_ctx *ctx, gf_run_spec *s)
 /* A dense column (a = 0.5, R0 = 12 D) collapsing in a viscous fluid, every output file. */
 static void immersed_spec(gf_ctx *ctx, gf_run_spec *s)
 {
-    gf_run_spec_defaults(s);
-    snprintf(s->scene, sizeof s->scene, "column_collapse");
+    GF_CHECK_OK(gf_test_viscous_collapse_spec(ctx, "unresolved", s), ctx);
     snprintf(s->run_id, sizeof s->run_id, "immersed");
-    s->grains.diameter_m = 7.6e-3;
-    s->grains.density_kg_m3 = 2500.0;
-    snprintf(s->fluid.model, sizeof s->fluid.model, "unresolved");
-    s->fluid.density_kg_m3 = 1000.0;
-    s->fluid.viscosity_Pa_s = 0.1;
-    s->phi_initial = 0.6;
-    s->aspect_ratio_a = 0.5;
     s->end_time_nd = 3.0;
     s->output.interval_nd = 0.1;
     s->output.particles = s->output.fields = s->output.probes = s->output.diagnostics = 1;
-    GF_CHECK_OK(gf_run_spec_set_param(ctx, s, "column_length_over_D", 12.0), ctx);
 }
 
 static int exists(const char *dir, const char *name)
@@ -159,9 +151,7 @@ static void interrupt_at(gf_ctx *ctx, const gf_run_spec *spec, const gf_run_exec
         /* each attempt in a clean directory: a run that finished first
          * leaves its diagnostics.nc, which an interrupted fresh run keeps
          * (its own files stay .partial) */
-        char cmd[4300];
-        snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
-        GF_CHECK(system(cmd) == 0);
+        GF_CHECK(gf_test_remove_tree(dir));
         long usec = (long)(delay_s * 1e6) + 1;
         struct itimerval it = {{0, 0}, {usec / 1000000, usec % 1000000}};
         interrupt_flag = 0;
@@ -259,9 +249,7 @@ int main(void)
     static const char *const imm_files[] = {"diagnostics.nc", "probes.nc", "fields.nc", "particles.nc"};
     interrupt_and_resume(&ctx, &imm, out, imm_files, 4, 0.75);
 
-    char cmd[4300];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s'", out);
-    if (system(cmd) != 0)
+    if (!gf_test_remove_tree(out))
         fprintf(stderr, "could not remove %s\n", out);
     return gf_test_finish();
 }

@@ -11,6 +11,7 @@
 #include "campaign/gf_campaign.h"
 #include "core/gf_timer.h"
 #include "gf_test.h"
+#include "gf_test_campaign.h"
 #include "schedule/gf_eta.h"
 #include "schedule/gf_sched.h"
 
@@ -42,8 +43,7 @@ static void run_eta_after_one_report(void)
 static void campaign_eta_constant_pace(void)
 {
     gf_ctx ctx = {0};
-    gf_campaign *c = NULL;
-    GF_CHECK_OK(gf_campaign_load_string(&ctx, "eta.yaml", yaml, strlen(yaml), NULL, 0, &c), &ctx);
+    gf_campaign *c = gf_test_campaign(&ctx, "eta.yaml", yaml);
     if (!c)
         return;
     const int todo[3] = {0, 1, 2};

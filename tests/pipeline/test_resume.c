@@ -18,6 +18,7 @@
 
 #include "campaign/gf_campaign.h"
 #include "gf_test.h"
+#include "gf_test_campaign.h"
 #include "schedule/gf_ledger.h"
 #include "schedule/gf_sched.h"
 
@@ -45,8 +46,7 @@ int main(void)
     char out[] = "/tmp/gf_resume_XXXXXX";
     GF_CHECK(mkdtemp(out) != NULL);
     gf_ctx ctx = {0};
-    gf_campaign *c = NULL;
-    GF_CHECK_OK(gf_campaign_load_string(&ctx, "resume.yaml", campaign_text, strlen(campaign_text), NULL, 0, &c), &ctx);
+    gf_campaign *c = gf_test_campaign(&ctx, "resume.yaml", campaign_text);
     if (!c)
         return gf_test_finish();
     gf_sched_opts opt = {.out_dir = out, .n_jobs = 2, .quiet = 1};
@@ -98,9 +98,7 @@ int main(void)
     GF_CHECK(gf_ledger_state(dir, NULL, 0) == GF_RUN_DONE);
 
     gf_campaign_destroy(&c);
-    char cmd[4300];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s'", out);
-    if (system(cmd) != 0)
+    if (!gf_test_remove_tree(out))
         fprintf(stderr, "could not remove %s\n", out);
     return gf_test_finish();
 }

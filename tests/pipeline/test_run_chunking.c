@@ -96,8 +96,6 @@ int main(void)
         same_file(ref, dir, "diagnostics.nc", diag_vars, 5, chunks[c]);
         same_file(ref, dir, "particles.nc", part_vars, 7, chunks[c]);
     }
-    char cmd[700];
-    snprintf(cmd, sizeof cmd, "rm -rf %s", root);
-    GF_CHECK(system(cmd) == 0);
+    GF_CHECK(gf_test_remove_tree(root));
     return gf_test_finish();
 }

@@ -18,6 +18,7 @@
 
 #include "campaign/gf_campaign.h"
 #include "gf_test.h"
+#include "gf_test_campaign.h"
 #include "gf_test_files.h"
 #include "schedule/gf_ledger.h"
 #include "schedule/gf_sched.h"
@@ -42,19 +43,24 @@ static double *read_var(const char *dir, const char *name, size_t *n)
     return gf_test_nc_read(path, name, n);
 }
 
+/* The campaign's runs (the n_selected of selected; NULL: all) scheduled into out, one worker (checked). */
+static gf_sched_counts run_into(gf_ctx *ctx, const gf_campaign *c, const char *out, const int *selected, int n_selected)
+{
+    gf_sched_opts opt = {.out_dir = out, .n_jobs = 1, .quiet = 1, .selected = selected, .n_selected = n_selected};
+    gf_sched_counts n = {0};
+    GF_CHECK_OK(gf_sched_run(ctx, c, &opt, &n), ctx);
+    return n;
+}
+
 int main(void)
 {
     char shared[] = "/tmp/gf_shared_prep_XXXXXX", alone[] = "/tmp/gf_alone_prep_XXXXXX";
     GF_CHECK(mkdtemp(shared) != NULL && mkdtemp(alone) != NULL);
     gf_ctx ctx = {0};
-    gf_campaign *c = NULL;
-    GF_CHECK_OK(gf_campaign_load_string(&ctx, "shared.yaml", campaign_text, strlen(campaign_text), NULL, 0, &c),
-                &ctx);
+    gf_campaign *c = gf_test_campaign(&ctx, "shared.yaml", campaign_text);
     if (!c)
         return gf_test_finish();
-    gf_sched_opts opt = {.out_dir = shared, .n_jobs = 1, .quiet = 1};
-    gf_sched_counts n;
-    GF_CHECK_OK(gf_sched_run(&ctx, c, &opt, &n), &ctx);
+    gf_sched_counts n = run_into(&ctx, c, shared, NULL, 0);
     GF_CHECK(n.n_total == 3 && n.n_done == 3);
     char prep[4300];
     snprintf(prep, sizeof prep, "%s/%s/preparations", shared, c->name);
@@ -64,8 +70,7 @@ int main(void)
     gf_test_check(n_files == 2, __FILE__, __LINE__, "%zu deposits kept for 3 runs over 2 columns", n_files);
 
     const int only_dull[] = {1};
-    gf_sched_opts alone_opt = {.out_dir = alone, .n_jobs = 1, .quiet = 1, .selected = only_dull, .n_selected = 1};
-    GF_CHECK_OK(gf_sched_run(&ctx, c, &alone_opt, &n), &ctx);
+    n = run_into(&ctx, c, alone, only_dull, 1);
     GF_CHECK(n.n_done == 1);
 
     char dir_shared[4200], dir_alone[4200];
@@ -81,8 +86,6 @@ int main(void)
         free(a), free(b);
     }
     gf_campaign_destroy(&c);
-    char cmd[200];
-    snprintf(cmd, sizeof cmd, "rm -rf %s %s", shared, alone);
-    GF_CHECK(system(cmd) == 0);
+    GF_CHECK(gf_test_remove_tree(shared) && gf_test_remove_tree(alone));
     return gf_test_finish();
 }

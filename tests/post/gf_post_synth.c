@@ -48,18 +48,15 @@ static int globals(int ncid, const synth_meta *m)
     CK(txt(ncid, NC_GLOBAL, "run_id", m->run_id));
     CK(txt(ncid, NC_GLOBAL, "scene", m->scene));
     CK(txt(ncid, NC_GLOBAL, "fluid_model", m->fluid_model));
-    CK(dbl(ncid, "stokes_St", m->St));
-    CK(dbl(ncid, "density_ratio_r", m->r));
-    CK(dbl(ncid, "aspect_ratio_a", m->a));
-    CK(dbl(ncid, "phi_initial", m->phi));
-    CK(dbl(ncid, "grain_diameter_m", m->D));
-    CK(dbl(ncid, "grain_density_kg_m3", m->rho_p));
-    CK(dbl(ncid, "fluid_density_kg_m3", m->rho_f));
-    CK(dbl(ncid, "fluid_viscosity_Pa_s", m->eta));
-    CK(dbl(ncid, "gravity_m_s2", m->g));
-    CK(dbl(ncid, "incline_deg", m->incline_deg));
-    CK(dbl(ncid, "column_length_m", m->R0));
-    CK(dbl(ncid, "column_height_m", m->H0));
+    const struct {
+        const char *name;
+        double value;
+    } numbers[] = {{"stokes_St", m->St}, {"density_ratio_r", m->r}, {"aspect_ratio_a", m->a},
+                   {"phi_initial", m->phi}, {"grain_diameter_m", m->D}, {"grain_density_kg_m3", m->rho_p},
+                   {"fluid_density_kg_m3", m->rho_f}, {"fluid_viscosity_Pa_s", m->eta}, {"gravity_m_s2", m->g},
+                   {"incline_deg", m->incline_deg}, {"column_length_m", m->R0}, {"column_height_m", m->H0}};
+    for (size_t k = 0; k < sizeof numbers / sizeof numbers[0]; ++k)
+        CK(dbl(ncid, numbers[k].name, numbers[k].value));
     return 0;
 }
 
@@ -73,22 +70,38 @@ static int time_var(int ncid, int dim, int *var)
     return 0;
 }
 
-static int finish(int ncid, const char *tmp, const char *path)
+/* An output file being written: dir/name, written as dir/name.tmp until finish renames it. */
+typedef struct synth_file {
+    char path[1024], tmp[1100];
+    int ncid;
+} synth_file;
+
+/* Creates f for dir/name with the run's global attributes and, unless NULL, its CF featureType. */
+static int create(synth_file *f, const char *dir, const char *name, const synth_meta *m, const char *feature_type)
 {
-    CK(nc_close(ncid));
-    return rename(tmp, path);
+    snprintf(f->path, sizeof f->path, "%s/%s", dir, name);
+    snprintf(f->tmp, sizeof f->tmp, "%s.tmp", f->path);
+    CK(nc_create(f->tmp, NC_CLOBBER | NC_NETCDF4, &f->ncid));
+    if (globals(f->ncid, m))
+        return -1;
+    if (feature_type)
+        CK(txt(f->ncid, NC_GLOBAL, "featureType", feature_type));
+    return 0;
+}
+
+static int finish(const synth_file *f)
+{
+    CK(nc_close(f->ncid));
+    return rename(f->tmp, f->path);
 }
 
 int synth_diagnostics(const char *dir, const synth_meta *m, size_t nt, const double *t, int n_vars,
                       const char *const *names, const char *const *units, const double *const *values)
 {
-    char path[1024], tmp[1100];
-    snprintf(path, sizeof path, "%s/diagnostics.nc", dir);
-    snprintf(tmp, sizeof tmp, "%s.tmp", path);
-    int ncid, dt, vt, v[32];
-    CK(nc_create(tmp, NC_CLOBBER | NC_NETCDF4, &ncid));
-    if (globals(ncid, m))
+    synth_file f;
+    if (create(&f, dir, "diagnostics.nc", m, NULL))
         return -1;
+    int ncid = f.ncid, dt, vt, v[32];
     CK(nc_def_dim(ncid, "time", NC_UNLIMITED, &dt));
     if (time_var(ncid, dt, &vt))
         return -1;
@@ -101,20 +114,16 @@ int synth_diagnostics(const char *dir, const synth_meta *m, size_t nt, const dou
     CK(nc_put_vara_double(ncid, vt, &start, &count, t));
     for (int k = 0; k < n_vars; ++k)
         CK(nc_put_vara_double(ncid, v[k], &start, &count, values[k]));
-    return finish(ncid, tmp, path);
+    return finish(&f);
 }
 
 int synth_particles(const char *dir, const synth_meta *m, size_t n, size_t nt, const double *t, const double *radius,
                     const unsigned char *glued, const double *x, const double *y, const double *z, const double *u)
 {
-    char path[1024], tmp[1100];
-    snprintf(path, sizeof path, "%s/particles.nc", dir);
-    snprintf(tmp, sizeof tmp, "%s.tmp", path);
-    int ncid, dtr, dt, vt, vid, vr, vg, vx, vy, vz, vu, vv, vw;
-    CK(nc_create(tmp, NC_CLOBBER | NC_NETCDF4, &ncid));
-    if (globals(ncid, m))
+    synth_file f;
+    if (create(&f, dir, "particles.nc", m, "trajectory"))
         return -1;
-    CK(txt(ncid, NC_GLOBAL, "featureType", "trajectory"));
+    int ncid = f.ncid, dtr, dt, vt, vid, vr, vg, vx, vy, vz, vu, vv, vw;
     CK(nc_def_dim(ncid, "trajectory", n, &dtr));
     CK(nc_def_dim(ncid, "time", nt, &dt));
     if (time_var(ncid, dt, &vt))
@@ -143,27 +152,20 @@ int synth_particles(const char *dir, const synth_meta *m, size_t n, size_t nt, c
     CK(nc_put_var_longlong(ncid, vid, id));
     CK(nc_put_var_double(ncid, vr, radius));
     CK(nc_put_var_schar(ncid, vg, gl));
-    CK(nc_put_var_double(ncid, vx, x));
-    CK(nc_put_var_double(ncid, vy, y));
-    CK(nc_put_var_double(ncid, vz, z ? z : zero));
-    CK(nc_put_var_double(ncid, vu, u ? u : zero));
-    CK(nc_put_var_double(ncid, vv, zero));
-    CK(nc_put_var_double(ncid, vw, zero));
+    const double *values[6] = {x, y, z ? z : zero, u ? u : zero, zero, zero}; /* nm's order */
+    for (int k = 0; k < 6; ++k)
+        CK(nc_put_var_double(ncid, *ids[k], values[k]));
     free(id), free(gl), free(zero);
-    return finish(ncid, tmp, path);
+    return finish(&f);
 }
 
 int synth_probes(const char *dir, const synth_meta *m, size_t ns, const char *const *names, const double *xs,
                  size_t nt, const double *t, const double *P)
 {
-    char path[1024], tmp[1100];
-    snprintf(path, sizeof path, "%s/probes.nc", dir);
-    snprintf(tmp, sizeof tmp, "%s.tmp", path);
-    int ncid, dst, dt, dl, vt, vn, vx, vy, vz, vp;
-    CK(nc_create(tmp, NC_CLOBBER | NC_NETCDF4, &ncid));
-    if (globals(ncid, m))
+    synth_file f;
+    if (create(&f, dir, "probes.nc", m, "timeSeries"))
         return -1;
-    CK(txt(ncid, NC_GLOBAL, "featureType", "timeSeries"));
+    int ncid = f.ncid, dst, dt, dl, vt, vn, vx, vy, vz, vp;
     CK(nc_def_dim(ncid, "station", ns, &dst));
     CK(nc_def_dim(ncid, "time", nt, &dt));
     CK(nc_def_dim(ncid, "name_strlen", 16, &dl));
@@ -190,19 +192,16 @@ int synth_probes(const char *dir, const synth_meta *m, size_t ns, const char *co
     CK(nc_put_var_double(ncid, vz, zero));
     CK(nc_put_var_double(ncid, vp, P));
     free(nb), free(zero);
-    return finish(ncid, tmp, path);
+    return finish(&f);
 }
 
 int synth_fields(const char *dir, const synth_meta *m, size_t nx, size_t ny, size_t nz, double dx, size_t nt,
                  const double *t, const double *eps, const double *u)
 {
-    char path[1024], tmp[1100];
-    snprintf(path, sizeof path, "%s/fields.nc", dir);
-    snprintf(tmp, sizeof tmp, "%s.tmp", path);
-    int ncid, d[4], vt, vc[3], ve, vu;
-    CK(nc_create(tmp, NC_CLOBBER | NC_NETCDF4, &ncid));
-    if (globals(ncid, m))
+    synth_file f;
+    if (create(&f, dir, "fields.nc", m, NULL))
         return -1;
+    int ncid = f.ncid, d[4], vt, vc[3], ve, vu;
     CK(nc_def_dim(ncid, "time", nt, &d[0]));
     CK(nc_def_dim(ncid, "z", nz, &d[1]));
     CK(nc_def_dim(ncid, "y", ny, &d[2]));
@@ -230,7 +229,7 @@ int synth_fields(const char *dir, const synth_meta *m, size_t nx, size_t ny, siz
     CK(nc_put_var_double(ncid, vt, t));
     CK(nc_put_var_double(ncid, ve, eps));
     CK(nc_put_var_double(ncid, vu, u));
-    return finish(ncid, tmp, path);
+    return finish(&f);
 }
 
 int synth_status(const char *dir, const char *line)

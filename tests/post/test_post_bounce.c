@@ -40,6 +40,7 @@
 #include "gf_post_synth.h"
 #include "gf_test.h"
 #include "stages/gf_stage.h"
+#include "synth_stage.h"
 
 #define NMAX 50000
 
@@ -133,11 +134,8 @@ static gf_status run_stage(const char *name, const trace *tr, int with_gap, gf_p
     synth_scratch(dir, sizeof dir, name);
     write_run(dir, tr, with_gap);
     gf_post_row_init(row, dir);
-    gf_stage_in in = {dir, "bounce"};
-    gf_stage_opts opts = {0};
-    gf_stage_out out = {row};
     *ctx = (gf_ctx){0};
-    return gf_stage_bounce(ctx, &in, &opts, &out);
+    return synth_stage(ctx, gf_stage_bounce, dir, "bounce", 0, row);
 }
 
 static void check_rebound(void)

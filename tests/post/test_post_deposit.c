@@ -44,6 +44,7 @@
 #include "gf_post_synth.h"
 #include "gf_test.h"
 #include "stages/gf_stage.h"
+#include "synth_stage.h"
 
 #define NMAX 4000
 
@@ -130,10 +131,7 @@ static void run_heap(const char *name, double H, double plateau, double R, const
     gf_ctx ctx = {0};
     gf_post_row row;
     gf_post_row_init(&row, dir);
-    gf_stage_in in = {dir, "column_collapse"};
-    gf_stage_opts opts = {1};
-    gf_stage_out out = {&row};
-    GF_CHECK_OK(gf_stage_deposit(&ctx, &in, &opts, &out), &ctx);
+    GF_CHECK_OK(synth_stage(&ctx, gf_stage_deposit, dir, "column_collapse", 1, &row), &ctx);
     const double Rinf = gf_post_row_get(&row, "R_inf_m"), Hinf = gf_post_row_get(&row, "H_inf_m");
     const double ang = gf_post_row_get(&row, "flank_angle_deg");
     const char *sh = gf_post_row_get_text(&row, "deposit_shape");
@@ -189,8 +187,6 @@ int main(void)
     gf_ctx ctx = {0};
     gf_post_row row;
     gf_post_row_init(&row, "/nonexistent");
-    gf_stage_in in = {"/nonexistent", "avalanche"};
-    gf_stage_out out = {&row};
-    GF_CHECK(gf_stage_deposit(&ctx, &in, NULL, &out) == GF_ERR_UNSUPPORTED);
+    GF_CHECK(synth_stage(&ctx, gf_stage_deposit, "/nonexistent", "avalanche", 0, &row) == GF_ERR_UNSUPPORTED);
     return gf_test_finish();
 }

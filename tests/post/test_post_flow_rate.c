@@ -25,6 +25,7 @@
 #include "gf_test.h"
 #include "stages/gf_post_stats.h"
 #include "stages/gf_stage.h"
+#include "synth_stage.h"
 
 #define NT 4000
 
@@ -87,9 +88,7 @@ int main(void)
     gf_ctx ctx = {0};
     gf_post_row row;
     gf_post_row_init(&row, dir);
-    gf_stage_in in = {dir, "avalanche"};
-    gf_stage_out out = {&row};
-    GF_CHECK_OK(gf_stage_flow_rate(&ctx, &in, NULL, &out), &ctx);
+    GF_CHECK_OK(synth_stage(&ctx, gf_stage_flow_rate, dir, "avalanche", 0, &row), &ctx);
     GF_CHECK_REL(gf_post_row_get(&row, "Qg_mean"), s.mean, 1e-12);
     GF_CHECK_REL(gf_post_row_get(&row, "Qg_sem"), s.sem, 1e-12);
     GF_CHECK_ABS(gf_post_row_get(&row, "t_steady_s"), s.t_start_s, 1e-12);
@@ -104,8 +103,7 @@ int main(void)
     gf_ctx c2 = {0};
     gf_post_row row2;
     gf_post_row_init(&row2, dir);
-    gf_stage_out out2 = {&row2};
-    gf_status st = gf_stage_flow_rate(&c2, &in, NULL, &out2);
+    gf_status st = synth_stage(&c2, gf_stage_flow_rate, dir, "avalanche", 0, &row2);
     printf("no grain_flow_rate -> %s\n", gf_status_str(st));
     GF_CHECK(st == GF_ERR_UNSUPPORTED);
     GF_CHECK(!isfinite(gf_post_row_get(&row2, "Qg_mean")));

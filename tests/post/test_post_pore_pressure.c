@@ -28,6 +28,7 @@
 #include "gf_post_synth.h"
 #include "gf_test.h"
 #include "stages/gf_stage.h"
+#include "synth_stage.h"
 
 static const double A = 120.0, t1 = 0.8, B = 60.0, t2 = 3.0, w = 0.2;
 
@@ -71,10 +72,7 @@ int main(void)
     gf_ctx ctx = {0};
     gf_post_row row;
     gf_post_row_init(&row, dir);
-    gf_stage_in in = {dir, "column_collapse"};
-    gf_stage_opts opts = {1};
-    gf_stage_out out = {&row};
-    GF_CHECK_OK(gf_stage_pore_pressure(&ctx, &in, &opts, &out), &ctx);
+    GF_CHECK_OK(synth_stage(&ctx, gf_stage_pore_pressure, dir, "column_collapse", 1, &row), &ctx);
     const double scale = 7000.0 * 9.81 * 8 * 7.6e-3;
     printf("station %s: min %.4f Pa at %.4f s (true %.4f at %.4f); max %.4f Pa at %.4f s (true %.4f at %.4f); "
            "relaxed at %.4f s (true %.4f); P_ext/(drho g H0) = %.6f (true %.6f)\n",
@@ -93,8 +91,7 @@ int main(void)
     /* no probes.nc: not applicable (dry run), no error */
     char dry[1024];
     synth_scratch(dry, sizeof dry, "pore_pressure_dry");
-    gf_stage_in in2 = {dry, "column_collapse"};
-    GF_CHECK(gf_stage_pore_pressure(&ctx, &in2, &opts, &out) == GF_ERR_UNSUPPORTED);
+    GF_CHECK(synth_stage(&ctx, gf_stage_pore_pressure, dry, "column_collapse", 1, &row) == GF_ERR_UNSUPPORTED);
     free(t), free(P);
     return gf_test_finish();
 }

@@ -37,6 +37,7 @@
 #include "gf_post_synth.h"
 #include "gf_test.h"
 #include "stages/gf_stage.h"
+#include "synth_stage.h"
 
 int main(void)
 {
@@ -93,11 +94,8 @@ int main(void)
     gf_ctx ctx = {0};
     gf_post_row row;
     gf_post_row_init(&row, dir);
-    gf_stage_in in = {dir, "avalanche"};
-    gf_stage_opts opts = {1};
-    gf_stage_out out = {&row};
-    GF_CHECK_OK(gf_stage_profiles(&ctx, &in, &opts, &out), &ctx);
-    GF_CHECK_OK(gf_stage_energy(&ctx, &in, &opts, &out), &ctx);
+    GF_CHECK_OK(synth_stage(&ctx, gf_stage_profiles, dir, "avalanche", 1, &row), &ctx);
+    GF_CHECK_OK(synth_stage(&ctx, gf_stage_energy, dir, "avalanche", 1, &row), &ctx);
     const double nf = gf_post_row_get(&row, "n_profile_frames");
     printf("profiles: %g frames, Ug_max = %.6f m/s (true %.6f), phi_max = %.6f (true %.6f), h_g = %.4f m (true %.4f)\n",
            nf, gf_post_row_get(&row, "Ug_max_m_s"), U0 * 0.95, gf_post_row_get(&row, "phi_g_max"), M_PI / 6,

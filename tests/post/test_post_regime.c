@@ -55,6 +55,7 @@
 #include "gf_test.h"
 #include "stages/gf_regime.h"
 #include "stages/gf_stage.h"
+#include "synth_stage.h"
 
 typedef struct table_pt {
     double ratio, St, T_ms;
@@ -157,9 +158,7 @@ static void hand_scales_and_avalanche(void)
     gf_ctx ctx = {0};
     gf_post_row row;
     gf_post_row_init(&row, dir);
-    gf_stage_in in = {dir, "avalanche"};
-    gf_stage_out out = {&row};
-    GF_CHECK_OK(gf_stage_regime(&ctx, &in, NULL, &out), &ctx);
+    GF_CHECK_OK(synth_stage(&ctx, gf_stage_regime, dir, "avalanche", 0, &row), &ctx);
     GF_CHECK_REL(gf_post_row_get(&row, "Tv_s"), 5.78887e-3, 1e-5);
     GF_CHECK_REL(gf_post_row_get(&row, "Ti_s"), 2.00501e-2, 1e-5);
     GF_CHECK_REL(gf_post_row_get(&row, "Tff_s"), 6.34039e-2, 1e-5);
@@ -195,8 +194,7 @@ static void hand_scales_and_avalanche(void)
     nc_put_att_double(ncid, NC_GLOBAL, "scene_param_width_over_D", NC_DOUBLE, 1, &five);
     GF_CHECK(nc_close(ncid) == NC_NOERR);
     gf_post_row_init(&row, dir);
-    gf_stage_in in2 = {dir, "avalanche"};
-    GF_CHECK_OK(gf_stage_regime(&ctx, &in2, NULL, &out), &ctx);
+    GF_CHECK_OK(synth_stage(&ctx, gf_stage_regime, dir, "avalanche", 0, &row), &ctx);
     printf("avalanche without particles.nc: V_g = %.4g m3 (true %.4g), T/Ti = %.5f, regime %s\n",
            gf_post_row_get(&row, "Vg_m3"), Vb, gf_post_row_get(&row, "T_over_Ti"),
            gf_post_row_get_text(&row, "regime"));
@@ -234,9 +232,7 @@ static void collapse(void)
     GF_CHECK(synth_diagnostics(dir, &m, NT, t, 2, names, units, vals) == 0);
     gf_post_row row;
     gf_post_row_init(&row, dir);
-    gf_stage_in in = {dir, "column_collapse"};
-    gf_stage_out out = {&row};
-    GF_CHECK_OK(gf_stage_regime(&ctx, &in, NULL, &out), &ctx);
+    GF_CHECK_OK(synth_stage(&ctx, gf_stage_regime, dir, "column_collapse", 0, &row), &ctx);
     const double umax = dR / (2.0 * tau);
     printf("collapse: t_rest = %.5f s (set %.5f), T/Tv,H0 = %.4f, T/Ti,H0 = %.3g, T/Tff,H0 = %.3g, regime %s; "
            "Umax = %.5f m/s (true %.5f), Umax T_visq/R0 = %.3g\n",

@@ -30,6 +30,7 @@
 #include "core/gf_timer.h"
 #include "gf_sim.h"
 #include "gf_test.h"
+#include "gf_test_args.h"
 #include "stages/gf_bounce_measure.h"
 
 /* the sampled trace: time, vertical velocity, gap to the wall */
@@ -66,38 +67,13 @@ static void parse(int argc, char **argv, args *a)
     *a = (args){.dx = 8, .box = 6, .height = 24, .depth = 4, .end = 24, .ratio = 8, .Ar = 3700, .eta_e = 4e-4,
                 .lub = 1};
     snprintf(a->check, sizeof a->check, "none");
-    for (int i = 1; i < argc; ++i) {
-        char *eq = strchr(argv[i], '=');
-        if (!eq)
-            continue;
-        *eq = '\0';
-        const char *k = argv[i], *v = eq + 1;
-        double x = atof(v);
-        if (!strcmp(k, "dx"))
-            a->dx = x;
-        else if (!strcmp(k, "box"))
-            a->box = x;
-        else if (!strcmp(k, "height"))
-            a->height = x;
-        else if (!strcmp(k, "depth"))
-            a->depth = x;
-        else if (!strcmp(k, "end"))
-            a->end = x;
-        else if (!strcmp(k, "ratio"))
-            a->ratio = x;
-        else if (!strcmp(k, "Ar"))
-            a->Ar = x;
-        else if (!strcmp(k, "eta_e"))
-            a->eta_e = x;
-        else if (!strcmp(k, "lub"))
-            a->lub = (int)x;
-        else if (!strcmp(k, "overlap_off"))
-            a->overlap_off = (int)x;
-        else if (!strcmp(k, "threads"))
-            a->threads = (int)x;
-        else if (!strcmp(k, "check"))
-            snprintf(a->check, sizeof a->check, "%s", v);
-    }
+    const gf_test_arg keys[] = {
+        {.key = "dx", .number = &a->dx}, {.key = "box", .number = &a->box}, {.key = "height", .number = &a->height},
+        {.key = "depth", .number = &a->depth}, {.key = "end", .number = &a->end}, {.key = "ratio", .number = &a->ratio},
+        {.key = "Ar", .number = &a->Ar}, {.key = "eta_e", .number = &a->eta_e}, {.key = "lub", .integer = &a->lub},
+        {.key = "overlap_off", .integer = &a->overlap_off}, {.key = "threads", .integer = &a->threads},
+        {.key = "check", .text = a->check, .text_size = sizeof a->check}};
+    gf_test_parse_args(argc, argv, keys, sizeof keys / sizeof keys[0]);
 }
 
 int main(int argc, char **argv)

@@ -38,6 +38,8 @@
 #include "core/gf_timer.h"
 #include "gf_sim.h"
 #include "gf_test.h"
+#include "gf_test_args.h"
+#include "gf_test_drag.h"
 #include "stages/gf_early_force.h"
 
 typedef struct args {
@@ -52,50 +54,13 @@ static void parse(int argc, char **argv, args *a)
 {
     *a = (args){.dx = 8, .box = 5, .height = 10, .end = 6, .cfl = 0.3};
     snprintf(a->check, sizeof a->check, "none");
-    for (int i = 1; i < argc; ++i) {
-        char *eq = strchr(argv[i], '=');
-        if (!eq)
-            continue;
-        *eq = '\0';
-        const char *k = argv[i], *v = eq + 1;
-        if (!strcmp(k, "dx"))
-            a->dx = atof(v);
-        else if (!strcmp(k, "box"))
-            a->box = atof(v);
-        else if (!strcmp(k, "height"))
-            a->height = atof(v);
-        else if (!strcmp(k, "end"))
-            a->end = atof(v);
-        else if (!strcmp(k, "cfl"))
-            a->cfl = atof(v);
-        else if (!strcmp(k, "early_dx"))
-            a->early_dx = atof(v);
-        else if (!strcmp(k, "early_box"))
-            a->early_box = atof(v);
-        else if (!strcmp(k, "early_height"))
-            a->early_height = atof(v);
-        else if (!strcmp(k, "retract"))
-            a->retract = atof(v);
-        else if (!strcmp(k, "threads"))
-            a->threads = atoi(v);
-        else if (!strcmp(k, "check"))
-            snprintf(a->check, sizeof a->check, "%s", v);
-    }
-}
-
-/* Schiller-Naumann terminal Reynolds number for Archimedes number Ar: C_D Re^2 = 4/3 Ar, by bisection. */
-static double schiller_naumann_Re(double Ar)
-{
-    double lo = 1e-6, hi = 1e6;
-    for (int it = 0; it < 200; ++it) {
-        double Re = sqrt(lo * hi);
-        double f = 24.0 * Re * (1.0 + 0.15 * pow(Re, 0.687)) - 4.0 / 3.0 * Ar;
-        if (f > 0)
-            hi = Re;
-        else
-            lo = Re;
-    }
-    return sqrt(lo * hi);
+    const gf_test_arg keys[] = {
+        {.key = "dx", .number = &a->dx}, {.key = "box", .number = &a->box}, {.key = "height", .number = &a->height},
+        {.key = "end", .number = &a->end}, {.key = "cfl", .number = &a->cfl}, {.key = "retract", .number = &a->retract},
+        {.key = "early_dx", .number = &a->early_dx}, {.key = "early_box", .number = &a->early_box},
+        {.key = "early_height", .number = &a->early_height}, {.key = "threads", .integer = &a->threads},
+        {.key = "check", .text = a->check, .text_size = sizeof a->check}};
+    gf_test_parse_args(argc, argv, keys, sizeof keys / sizeof keys[0]);
 }
 
 static double cpu_s(void) { return (double)clock() / CLOCKS_PER_SEC; }
@@ -184,7 +149,7 @@ int main(int argc, char **argv)
     for (int i = 0; i < late.n; ++i)
         if (late.u[i] > umax)
             umax = late.u[i], t_umax = late.t[i];
-    double Re_ref = schiller_naumann_Re(AR), uT_ref = Re_ref * eta / (RHO * D) / sqrt(G * D);
+    double Re_ref = gf_test_schiller_naumann_Re(AR), uT_ref = Re_ref * eta / (RHO * D) / sqrt(G * D);
     double Re = RHO * umax * sqrt(G * D) * D / eta;
     double F_end = late.n ? late.F[late.n - 1] : NAN; /* -> 1 at terminal velocity: F_h = -m g (Izard 2014 §2.2.2) */
     printf("resolved settling: D/dx %g, box %g x %g D, cfl %g, retraction %g dx: "

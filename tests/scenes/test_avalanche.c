@@ -316,12 +316,8 @@ static void test_flow_rate_independent_of_length(void)
 
 int main(int argc, char **argv)
 {
-    const char *mode = argc > 1 ? argv[1] : "unsteady";
-    if (strcmp(mode, "unsteady") == 0)
-        test_unsteady_40deg();
-    else if (strcmp(mode, "steady") == 0)
-        test_steady_mu_of_I();
-    else if (strcmp(mode, "length") == 0)
-        test_flow_rate_independent_of_length();
+    static const gf_test_mode studies[] = {{"unsteady", test_unsteady_40deg}, {"steady", test_steady_mu_of_I},
+                                           {"length", test_flow_rate_independent_of_length}};
+    gf_test_run_mode(studies, 3, argc > 1 ? argv[1] : "unsteady"); /* an unknown name runs nothing */
     return gf_test_finish();
 }

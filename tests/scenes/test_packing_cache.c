@@ -112,7 +112,6 @@ int main(void)
     gf_particles *all[] = {plain, first, again, p_other, p_moved, p_cut, p_after, base};
     for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k)
         gf_particles_destroy(&all[k]);
-    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
-    GF_CHECK(system(cmd) == 0);
+    GF_CHECK(gf_test_remove_tree(dir));
     return gf_test_finish();
 }

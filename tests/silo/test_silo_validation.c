@@ -244,20 +244,15 @@ static void study_profiles(void)
     free(r);
 }
 
+static void study_friction(void) { study_trend("mu", (const double[]){0.0, 0.25, 0.5, 0.75, 1.0}, 5, 0); }
+static void study_restitution(void) { study_trend("e_n", (const double[]){0.1, 0.3, 0.5, 0.7, 0.885, 0.95}, 6, 1); }
+
 int main(int argc, char **argv)
 {
-    const char *mode = argc > 1 ? argv[1] : "beverloo";
-    if (strcmp(mode, "beverloo") == 0)
-        study_beverloo();
-    else if (strcmp(mode, "height") == 0)
-        study_height();
-    else if (strcmp(mode, "friction") == 0)
-        study_trend("mu", (const double[]){0.0, 0.25, 0.5, 0.75, 1.0}, 5, 0);
-    else if (strcmp(mode, "restitution") == 0)
-        study_trend("e_n", (const double[]){0.1, 0.3, 0.5, 0.7, 0.885, 0.95}, 6, 1);
-    else if (strcmp(mode, "profiles") == 0)
-        study_profiles();
-    else {
+    static const gf_test_mode studies[] = {{"beverloo", study_beverloo}, {"height", study_height},
+                                           {"friction", study_friction}, {"restitution", study_restitution},
+                                           {"profiles", study_profiles}};
+    if (!gf_test_run_mode(studies, 5, argc > 1 ? argv[1] : "beverloo")) {
         fprintf(stderr, "usage: %s beverloo|height|friction|restitution|profiles\n", argv[0]);
         return 2;
     }

@@ -123,9 +123,7 @@ static void frequent_output(gf_ctx *ctx)
         GF_CHECK(gf_sim_time_s(sim) >= gf_sim_end_time_s(sim) - gf_sim_dt_s(sim));
     }
     gf_sim_destroy(&sim);
-    char cmd[128];
-    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
-    GF_CHECK(system(cmd) == 0);
+    GF_CHECK(gf_test_remove_tree(dir));
 }
 
 int main(void)

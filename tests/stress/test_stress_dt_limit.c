@@ -50,6 +50,29 @@ static void check_refused(const char *what, double dt_over_tc, gf_status st, con
     GF_CHECK(strstr(ctx->last_msg, "t_c/5") != NULL);
 }
 
+/* The sim of spec s (dt = dt_over_tc t_c); NULL when refused (the refusal
+ * checked where dt passes the limit, what: the printed line's label) or when
+ * it could not be made (checked). Owner: the caller (gf_sim_destroy). */
+static gf_sim *accepted_sim(gf_ctx *ctx, const gf_run_spec *s, const char *what, double dt_over_tc)
+{
+    gf_sim *sim = NULL;
+    gf_status st = gf_test_sim(ctx, s, 1, &sim);
+    if (dt_over_tc > DT_LIMIT) {
+        check_refused(what, dt_over_tc, st, sim, ctx);
+        gf_sim_destroy(&sim);
+        return NULL;
+    }
+    GF_CHECK_OK(st, ctx);
+    return sim;
+}
+
+/* A run that stopped with status st: a message says why. */
+static void check_stopped(const char *what, double dt_over_tc, gf_status st, const gf_ctx *ctx)
+{
+    printf("  %-16s dt = %-6g t_c: stopped (%s): %s\n", what, dt_over_tc, gf_status_str(st), ctx->last_msg);
+    GF_CHECK(strlen(ctx->last_msg) > 0);
+}
+
 /* Head-on collision; returns the restitution, NAN when the run stopped (message checked). */
 static double collision(const char *law, double eps, double dt_over_tc, double speed_nd)
 {
@@ -61,16 +84,10 @@ static double collision(const char *law, double eps, double dt_over_tc, double s
     s.contact.dt_over_tc = dt_over_tc;
     gf_run_spec_set_param(&ctx, &s, "impact_speed_nd", speed_nd);
     gf_run_spec_set_param(&ctx, &s, "gap_over_D", 0.001);
-    gf_sim *sim = NULL;
-    gf_status st = gf_test_sim(&ctx, &s, 1, &sim);
-    if (dt_over_tc > DT_LIMIT) {
-        check_refused(law, dt_over_tc, st, sim, &ctx);
-        gf_sim_destroy(&sim);
-        return NAN;
-    }
-    GF_CHECK_OK(st, &ctx);
+    gf_sim *sim = accepted_sim(&ctx, &s, law, dt_over_tc);
     if (!sim)
         return NAN;
+    gf_status st = GF_OK;
     double V = speed_nd * sqrt(s.gravity_m_s2 * s.grains.diameter_m), ov_max = 0.0;
     long n = (long)ceil(gf_sim_end_time_s(sim) / gf_sim_dt_s(sim));
     for (long k = 0; k < n && st == GF_OK; ++k) {
@@ -101,34 +118,21 @@ static double collision(const char *law, double eps, double dt_over_tc, double s
 static void elastic_gas(double dt_over_tc)
 {
     gf_ctx ctx = {0};
-    gf_run_spec s = gf_test_spec("elastic_gas");
-    s.contact.restitution = 1.0;
-    s.contact.friction = 0.0;
-    s.contact.dt_over_tc = dt_over_tc;
-    gf_run_spec_set_param(&ctx, &s, "n_grains", 125);
-    gf_run_spec_set_param(&ctx, &s, "box_over_D", 5.5);
-    gf_run_spec_set_param(&ctx, &s, "speed_nd", 2.0);
-    gf_sim *sim = NULL;
-    gf_status st = gf_test_sim(&ctx, &s, 1, &sim);
-    if (dt_over_tc > DT_LIMIT) {
-        check_refused("elastic_gas", dt_over_tc, st, sim, &ctx);
-        gf_sim_destroy(&sim);
-        return;
-    }
-    GF_CHECK_OK(st, &ctx);
+    gf_run_spec s = gf_test_elastic_gas_spec(&ctx, 125, 5.5, dt_over_tc);
+    gf_sim *sim = accepted_sim(&ctx, &s, "elastic_gas", dt_over_tc);
     if (!sim)
         return;
+    gf_status st = GF_OK;
     gf_particles *p = gf_sim_particles(sim);
-    double e0 = gf_particles_kinetic_energy(p) + stress_spring_energy(sim), worst = 0.0;
+    double e0 = gf_particles_kinetic_energy(p) + gf_test_spring_energy(sim), worst = 0.0;
     long n = (long)ceil(200.0 / dt_over_tc);
     for (int k = 0; k < 20 && st == GF_OK; ++k) {
         st = gf_sim_advance(sim, n / 20);
         if (st == GF_OK)
-            worst = fmax(worst, fabs((gf_particles_kinetic_energy(p) + stress_spring_energy(sim)) / e0 - 1.0));
+            worst = fmax(worst, fabs((gf_particles_kinetic_energy(p) + gf_test_spring_energy(sim)) / e0 - 1.0));
     }
     if (st != GF_OK) {
-        printf("  %-16s dt = %-6g t_c: stopped (%s): %s\n", "elastic_gas", dt_over_tc, gf_status_str(st), ctx.last_msg);
-        GF_CHECK(strlen(ctx.last_msg) > 0);
+        check_stopped("elastic_gas", dt_over_tc, st, &ctx);
     } else {
         printf("  %-16s dt = %-6g t_c: ok, max |dE/E| over 200 t_c = %.3g\n", "elastic_gas", dt_over_tc, worst);
         GF_CHECK(worst < 0.05);
@@ -140,24 +144,14 @@ static void elastic_gas(double dt_over_tc)
 static void settled_bed(double dt_over_tc)
 {
     gf_ctx ctx = {0};
-    gf_run_spec s = gf_test_spec("settled_bed");
-    s.grains.polydispersity = 0.1;
+    gf_run_spec s = gf_test_bed_spec(&ctx, 500, 4.0);
     s.contact.restitution = 0.5;
-    s.contact.friction = 0.5;
     s.contact.wall_friction = 0.5;
     s.contact.dt_over_tc = dt_over_tc;
-    gf_run_spec_set_param(&ctx, &s, "n_grains", 500);
-    gf_run_spec_set_param(&ctx, &s, "settle_time_nd", 4.0);
-    gf_sim *sim = NULL;
-    gf_status st = gf_test_sim(&ctx, &s, 1, &sim);
-    if (dt_over_tc > DT_LIMIT) {
-        check_refused("settled_bed", dt_over_tc, st, sim, &ctx);
-        gf_sim_destroy(&sim);
-        return;
-    }
-    GF_CHECK_OK(st, &ctx);
+    gf_sim *sim = accepted_sim(&ctx, &s, "settled_bed", dt_over_tc);
     if (!sim)
         return;
+    gf_status st = GF_OK;
     gf_particles *p = gf_sim_particles(sim);
     double vref = sqrt(s.gravity_m_s2 * s.grains.diameter_m);
     double m = s.grains.density_kg_m3 * M_PI * pow(s.grains.diameter_m, 3) / 6.0;
@@ -173,8 +167,7 @@ static void settled_bed(double dt_over_tc)
         ov = fmax(ov, o);
     }
     if (st != GF_OK) {
-        printf("  %-16s dt = %-6g t_c: stopped (%s): %s\n", "settled_bed", dt_over_tc, gf_status_str(st), ctx.last_msg);
-        GF_CHECK(strlen(ctx.last_msg) > 0);
+        check_stopped("settled_bed", dt_over_tc, st, &ctx);
     } else {
         double mgd = p->n_local * m * s.gravity_m_s2 * s.grains.diameter_m;
         printf("  %-16s dt = %-6g t_c: ok, max speed %.3g sqrt(gD), E_k max %.3g -> end %.3g m g D per grain, max "

@@ -78,10 +78,10 @@ int main(void)
     GF_CHECK_OK(gf_test_sim(&ctx, &s, 1, &sim), &ctx);
     if (sim) {
         gf_particles *p = gf_sim_particles(sim);
-        double e0 = gf_particles_kinetic_energy(p) + stress_spring_energy(sim), worst = 0.0;
+        double e0 = gf_particles_kinetic_energy(p) + gf_test_spring_energy(sim), worst = 0.0;
         for (int k = 0; k < 40; ++k) {
             GF_CHECK_OK(gf_sim_advance(sim, 500), &ctx);
-            worst = fmax(worst, fabs((gf_particles_kinetic_energy(p) + stress_spring_energy(sim)) / e0 - 1.0));
+            worst = fmax(worst, fabs((gf_particles_kinetic_energy(p) + gf_test_spring_energy(sim)) / e0 - 1.0));
         }
         printf("elastic gas, phi 0.38, dt = t_c/50, 2e4 steps: max |E/E0 - 1| = %.3g\n", worst);
         GF_CHECK(worst <= 2e-3);

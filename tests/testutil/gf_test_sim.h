@@ -23,6 +23,21 @@ static inline gf_run_spec gf_test_spec(const char *scene)
     return s;
 }
 
+/* A scene parameter and its value (gf_run_spec_set_param). */
+typedef struct gf_test_param {
+    const char *key;
+    double value;
+} gf_test_param;
+
+/* Sets the n scene parameters on s in order, stopping at the first refused
+ * (its status, the message in ctx); GF_OK when all were accepted. */
+static inline gf_status gf_test_set_params(gf_ctx *ctx, gf_run_spec *s, const gf_test_param *params, size_t n)
+{
+    for (size_t k = 0; k < n; ++k)
+        GF_TRY(gf_run_spec_set_param(ctx, s, params[k].key, params[k].value));
+    return GF_OK;
+}
+
 /* A frictional (mu_c 0.5), 10 % polydisperse settled_bed of n grains with
  * settle_time_nd = settle_nd: the restart and pair-loop tests' bed. */
 static inline gf_run_spec gf_test_bed_spec(gf_ctx *ctx, int n, double settle_nd)
@@ -33,6 +48,40 @@ static inline gf_run_spec gf_test_bed_spec(gf_ctx *ctx, int n, double settle_nd)
     gf_run_spec_set_param(ctx, &bed, "n_grains", n);
     gf_run_spec_set_param(ctx, &bed, "settle_time_nd", settle_nd);
     return bed;
+}
+
+/* An elastic (eps = 1), frictionless gas of n grains at 2 sqrt(gD) in a
+ * periodic cube of side box_over_D D, dt = dt_over_tc t_c: the
+ * energy-conservation tests' gas. */
+static inline gf_run_spec gf_test_elastic_gas_spec(gf_ctx *ctx, int n, double box_over_D, double dt_over_tc)
+{
+    gf_run_spec gas = gf_test_spec("elastic_gas");
+    gas.contact.restitution = 1.0;
+    gas.contact.friction = 0.0;
+    gas.contact.dt_over_tc = dt_over_tc;
+    gf_run_spec_set_param(ctx, &gas, "n_grains", n);
+    gf_run_spec_set_param(ctx, &gas, "box_over_D", box_over_D);
+    gf_run_spec_set_param(ctx, &gas, "speed_nd", 2.0);
+    return gas;
+}
+
+/* The viscous collapse of the immersed restart and continuation tests into
+ * *s: a dense column (phi 0.6, a = 0.5, R0 = 12 D) of D = 7.6 mm,
+ * 2500 kg m-3 grains in a fluid of 1000 kg m-3 and 0.1 Pa s (St ~ 0.3, the
+ * viscous regime of Izard 2014 ch. 5), on the fluid tier `model` ("none":
+ * dry). The status of setting R0. */
+static inline gf_status gf_test_viscous_collapse_spec(gf_ctx *ctx, const char *model, gf_run_spec *s)
+{
+    gf_run_spec_defaults(s);
+    snprintf(s->scene, sizeof s->scene, "column_collapse");
+    s->grains.density_kg_m3 = 2500.0;
+    s->grains.diameter_m = 7.6e-3;
+    snprintf(s->fluid.model, sizeof s->fluid.model, "%s", model);
+    s->fluid.density_kg_m3 = 1000.0;
+    s->fluid.viscosity_Pa_s = 0.1;
+    s->phi_initial = 0.6;
+    s->aspect_ratio_a = 0.5;
+    return gf_run_spec_set_param(ctx, s, "column_length_over_D", 12.0);
 }
 
 /* The small frictional column collapse of the pair-loop tests: a = 1,
