@@ -35,6 +35,7 @@
 #include "particles/gf_packing.h"
 #include "scenes/gf_measure.h"
 #include "scenes/gf_scene.h"
+#include "scenes/gf_scene_box.h"
 
 static const gf_param_info avalanche_params[] = {
     {"length_over_D", "1", 5.0, 2.0, 1000.0, "periodic length L / D"},
@@ -70,13 +71,11 @@ static gf_status avalanche_build(gf_sim *sim, const gf_run_spec *spec)
     double phi = isnan(spec->phi_initial) ? gf_run_spec_param(spec, "phi_target", 0.6) : spec->phi_initial;
     if (h_bed + 2.0 * D > H)
         return GF_FAIL(ctx, GF_ERR_CONFIG, "avalanche: bed_height_over_D + 2 must not exceed height_over_D");
-    double lo[3] = {0, 0, 0}, hi[3] = {L, H, W}, grav[3] = {0, -spec->gravity_m_s2, 0};
-    int periodic[3] = {1, 0, 1};
-    GF_TRY(gf_sim_set_box(sim, lo, hi, periodic));
-    GF_TRY(gf_sim_set_gravity(sim, grav));
-    double floor_pt[3] = {0, 0, 0}, up[3] = {0, 1, 0}, lid_pt[3] = {0, H, 0}, down[3] = {0, -1, 0};
-    GF_TRY(gf_sim_add_wall(sim, floor_pt, up, spec->contact.wall_friction, NULL));
-    GF_TRY(gf_sim_add_wall(sim, lid_pt, down, spec->contact.wall_friction, NULL));
+    const double lo[3] = {0, 0, 0}, hi[3] = {L, H, W};
+    GF_TRY(gf_scene_box_under_gravity(sim, lo, hi, (const int[3]){1, 0, 1}, spec->gravity_m_s2));
+    const double mu = spec->contact.wall_friction;
+    const gf_scene_plane floor_and_lid[] = {{{0, 0, 0}, {0, 1, 0}, mu}, {{0, H, 0}, {0, -1, 0}, mu}};
+    GF_TRY(gf_scene_add_planes(sim, 2, floor_and_lid));
     gf_psd psd = {0.5 * D, spec->grains.polydispersity};
     gf_particles *base = NULL;
     GF_TRY(gf_particles_create(ctx, 256, &base));

@@ -66,8 +66,9 @@
 #include "particles/gf_packing.h"
 #include "scenes/gf_measure.h"
 #include "scenes/gf_scene.h"
+#include "scenes/gf_scene_box.h"
 
-/* Walls are added in this order, so their ids are these (checked in build). */
+/* Walls are added in this order, so their ids are these (gf_scene_add_planes checks). */
 enum { WALL_FLOOR = 0, WALL_BACK, WALL_GATE, WALL_END, WALL_TOP };
 
 static const gf_param_info column_params[] = {
@@ -129,18 +130,15 @@ static gf_status column_build(gf_sim *sim, const gf_run_spec *spec)
     column_geom_of(spec, &g);
     if (g.R0 >= g.L)
         return GF_FAIL(ctx, GF_ERR_CONFIG, "column_collapse: domain_length_over_R0 must exceed 1");
-    double lo[3] = {0, 0, 0}, hi[3] = {g.L, g.top, g.W}, grav[3] = {0, -spec->gravity_m_s2, 0};
-    int periodic[3] = {0, 0, 1};
-    GF_TRY(gf_sim_set_box(sim, lo, hi, periodic));
-    GF_TRY(gf_sim_set_gravity(sim, grav));
-    const double walls[5][6] = {{0, 0, 0, 0, 1, 0},    {0, 0, 0, 1, 0, 0},        {g.R0, 0, 0, -1, 0, 0},
-                                {g.L, 0, 0, -1, 0, 0}, {0, g.top, 0, 0, -1, 0}};
-    for (int w = 0; w < 5; ++w) {
-        int id = -1;
-        GF_TRY(gf_sim_add_wall(sim, walls[w], walls[w] + 3, spec->contact.wall_friction, &id));
-        if (id != w)
-            return GF_FAIL(ctx, GF_ERR_ARG, "column_collapse: wall %d got id %d (walls must be added first)", w, id);
-    }
+    const double lo[3] = {0, 0, 0}, hi[3] = {g.L, g.top, g.W};
+    GF_TRY(gf_scene_box_under_gravity(sim, lo, hi, (const int[3]){0, 0, 1}, spec->gravity_m_s2));
+    const double mu = spec->contact.wall_friction;
+    const gf_scene_plane walls[] = {
+        [WALL_FLOOR] = {{0, 0, 0}, {0, 1, 0}, mu},     [WALL_BACK] = {{0, 0, 0}, {1, 0, 0}, mu},
+        [WALL_GATE] = {{g.R0, 0, 0}, {-1, 0, 0}, mu},  [WALL_END] = {{g.L, 0, 0}, {-1, 0, 0}, mu},
+        [WALL_TOP] = {{0, g.top, 0}, {0, -1, 0}, mu},
+    };
+    GF_TRY(gf_scene_add_planes(sim, 5, walls));
     gf_psd psd = {0.5 * g.D, spec->grains.polydispersity};
     gf_particles *base = NULL;
     GF_TRY(gf_particles_create(ctx, 256, &base));

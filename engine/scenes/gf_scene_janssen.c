@@ -55,6 +55,7 @@
 #include "particles/gf_packing.h"
 #include "scenes/gf_measure.h"
 #include "scenes/gf_scene.h"
+#include "scenes/gf_scene_box.h"
 
 static const gf_param_info janssen_params[] = {
     {"side_over_D", "1", 10.0, 3.0, 1000.0, "box side S / D (seed: 0.1 m / 1 cm = 10)"},
@@ -168,14 +169,16 @@ static gf_status janssen_build(gf_sim *sim, const gf_run_spec *spec)
     double top = h + 6.0 * D;
     int random_walls = gf_run_spec_param(spec, "random_walls", 1.0) > 0.5;
     double sb = wall_setback(spec, random_walls), margin = fmax(2.0 * D, sb + D);
-    double lo[3] = {-margin, -D, -margin}, hi[3] = {S + margin, top, S + margin}, grav[3] = {0, -g, 0};
-    int periodic[3] = {0, 0, 0};
-    GF_TRY(gf_sim_set_box(sim, lo, hi, periodic));
-    GF_TRY(gf_sim_set_gravity(sim, grav));
-    const double planes[6][6] = {{0, 0, 0, 0, 1, 0},       {0, top, 0, 0, -1, 0},  {-sb, 0, 0, 1, 0, 0},
-                                 {S + sb, 0, 0, -1, 0, 0}, {0, 0, -sb, 0, 0, 1},   {0, 0, S + sb, 0, 0, -1}};
-    for (int w = 0; w < 6; ++w)
-        GF_TRY(gf_sim_add_wall(sim, planes[w], planes[w] + 3, w < 2 ? spec->contact.wall_friction : 0.0, NULL));
+    const double lo[3] = {-margin, -D, -margin}, hi[3] = {S + margin, top, S + margin};
+    GF_TRY(gf_scene_box_under_gravity(sim, lo, hi, (const int[3]){0, 0, 0}, g));
+    /* floor and lid frictional; the side planes frictionless, the glued grains are the walls */
+    const double mu = spec->contact.wall_friction;
+    const gf_scene_plane planes[] = {
+        {{0, 0, 0}, {0, 1, 0}, mu},       {{0, top, 0}, {0, -1, 0}, mu},
+        {{-sb, 0, 0}, {1, 0, 0}, 0.0},    {{S + sb, 0, 0}, {-1, 0, 0}, 0.0},
+        {{0, 0, -sb}, {0, 0, 1}, 0.0},    {{0, 0, S + sb}, {0, 0, -1}, 0.0},
+    };
+    GF_TRY(gf_scene_add_planes(sim, 6, planes));
     /* glued walls first (kept apart as the preparation's obstacles), then the deposit between them */
     gf_rng *rng = gf_sim_rng(sim);
     gf_particles *walls = NULL;

@@ -48,6 +48,7 @@
 #include "particles/gf_packing.h"
 #include "scenes/gf_measure.h"
 #include "scenes/gf_scene.h"
+#include "scenes/gf_scene_box.h"
 
 static const gf_param_info silo_params[] = {
     {"width_x_over_d", "1", 25.0, 4.0, 400.0, "box width Lx / d along x (thesis: 25)"},
@@ -131,13 +132,15 @@ static gf_status silo_build(gf_sim *sim, const gf_run_spec *spec)
         return GF_FAIL(ctx, GF_ERR_CONFIG, "scene silo: %s", why);
     const silo_geom g = geometry(spec);
     const double d = g.d, gr = spec->gravity_m_s2;
-    double lo[3] = {0.0, -BOX_BELOW_OVER_D * d, 0.0}, hi[3] = {g.Lx, g.Lz_box, g.Ly}, grav[3] = {0, -gr, 0};
-    GF_TRY(gf_sim_set_box(sim, lo, hi, (const int[3]){0, 0, 0}));
-    GF_TRY(gf_sim_set_gravity(sim, grav));
-    const double planes[6][6] = {{0, 0, 0, 0, 1, 0},    {0, g.Lz_box, 0, 0, -1, 0}, {0, 0, 0, 1, 0, 0},
-                                 {g.Lx, 0, 0, -1, 0, 0}, {0, 0, 0, 0, 0, 1},        {0, 0, g.Ly, 0, 0, -1}};
-    for (int w = 0; w < 6; ++w) /* the floor is wall 0 (FLOOR_WALL) */
-        GF_TRY(gf_sim_add_wall(sim, planes[w], planes[w] + 3, spec->contact.wall_friction, NULL));
+    const double lo[3] = {0.0, -BOX_BELOW_OVER_D * d, 0.0}, hi[3] = {g.Lx, g.Lz_box, g.Ly};
+    GF_TRY(gf_scene_box_under_gravity(sim, lo, hi, (const int[3]){0, 0, 0}, gr));
+    const double mu = spec->contact.wall_friction;
+    const gf_scene_plane walls[] = {
+        [FLOOR_WALL] = {{0, 0, 0}, {0, 1, 0}, mu}, {{0, g.Lz_box, 0}, {0, -1, 0}, mu},
+        {{0, 0, 0}, {1, 0, 0}, mu},                {{g.Lx, 0, 0}, {-1, 0, 0}, mu},
+        {{0, 0, 0}, {0, 0, 1}, mu},                {{0, 0, g.Ly}, {0, 0, -1}, mu},
+    };
+    GF_TRY(gf_scene_add_planes(sim, 6, walls));
     gf_packing_spec ps = {.lo_m = {0, 0, 0}, .hi_m = {g.Lx, g.H, g.Ly}, .periodic = {0, 0, 0}, .walls_x = 1,
                           .walls_z = 1, .phi_target = NAN, .free_pour = 1, .mu_natural = spec->contact.friction,
                           .psd = {0.5 * d, spec->grains.polydispersity}, .density_kg_m3 = spec->grains.density_kg_m3,
