@@ -36,6 +36,7 @@
 #include "scenes/gf_measure.h"
 #include "scenes/gf_scene.h"
 #include "scenes/gf_scene_box.h"
+#include "scenes/gf_scene_settle.h"
 
 static const gf_param_info avalanche_params[] = {
     {"length_over_D", "1", 5.0, 2.0, 1000.0, "periodic length L / D"},
@@ -94,10 +95,7 @@ static gf_status avalanche_build(gf_sim *sim, const gf_run_spec *spec)
     gf_log(ctx, GF_LOG_INFO, "avalanche: bed of %zu grains at Phi %.4f (preparation), %d deposits, %.1f s%s",
            pr.n_grains, pr.phi_local, pr.iterations, pr.cpu_s,
            pr.reused ? " (read back from the preparations)" : "");
-    double t_settle = gf_run_spec_param(spec, "settle_time_nd", 5.0) * sqrt(D / spec->gravity_m_s2);
-    long steps = (long)ceil(t_settle / gf_run_spec_dt_s(spec));
-    if (steps > 0)
-        GF_TRY(gf_sim_advance(sim, steps));
+    GF_TRY(gf_scene_settle(sim, spec, gf_run_spec_param(spec, "settle_time_nd", 5.0)));
     gf_sim_reset_clock(sim);
     /* fluid: free-slip lid, no-slip floor (default), periodic x and z (Izard §4.1.2.2) */
     return gf_sim_set_fluid_bc(sim, 1, 1, GF_BC_FREE_SLIP);

@@ -67,6 +67,7 @@
 #include "scenes/gf_measure.h"
 #include "scenes/gf_scene.h"
 #include "scenes/gf_scene_box.h"
+#include "scenes/gf_scene_settle.h"
 
 /* Walls are added in this order, so their ids are these (gf_scene_add_planes checks). */
 enum { WALL_FLOOR = 0, WALL_BACK, WALL_GATE, WALL_END, WALL_TOP };
@@ -179,13 +180,10 @@ static gf_status column_build(gf_sim *sim, const gf_run_spec *spec)
            pr.n_grains, pr.phi_local, pr.phi_global, pr.iterations, pr.cpu_s,
            pr.reused ? " (read back from the preparations)" : "");
     /* re-equilibrate with the run's contacts behind the closed gate */
-    double t_settle = gf_run_spec_param(spec, "settle_time_nd", 5.0) * sqrt(g.D / spec->gravity_m_s2);
-    long steps = (long)ceil(t_settle / gf_run_spec_dt_s(spec));
     int locked = gf_run_spec_param(spec, "settle_rotation_locked", 0.0) > 0.5;
     if (locked)
         GF_TRY(gf_sim_set_rotation_locked(sim, 1));
-    if (steps > 0)
-        GF_TRY(gf_sim_advance(sim, steps));
+    GF_TRY(gf_scene_settle(sim, spec, gf_run_spec_param(spec, "settle_time_nd", 5.0)));
     if (locked)
         GF_TRY(gf_sim_set_rotation_locked(sim, 0)); /* free from t = 0 on (and on a restart) */
     gf_sim_reset_clock(sim);
@@ -250,16 +248,7 @@ static int column_done(gf_sim *sim)
     double T0 = sqrt(2.0 * g.H0 / s->gravity_m_s2);
     if (gf_sim_time_s(sim) < 2.0 * T0)
         return 0;
-    const gf_particles *p = gf_sim_particles(sim);
-    size_t n = 0;
-    double m = 0.0;
-    for (size_t i = 0; i < p->n_local; ++i)
-        if (!(p->flags[i] & GF_P_GLUED))
-            ++n, m += p->mass_kg[i];
-    if (n == 0)
-        return 1;
-    double ke = gf_particles_kinetic_energy(p) / (double)n, m_mean = m / (double)n;
-    return ke < gf_run_spec_param(s, "rest_energy", 1e-4) * m_mean * s->gravity_m_s2 * g.D;
+    return gf_scene_at_rest(sim, gf_run_spec_param(s, "rest_energy", 1e-4));
 }
 
 static gf_status column_initial_packing(gf_sim *sim, double *phi_measured, double *phi_local)

@@ -49,6 +49,7 @@
 #include "scenes/gf_measure.h"
 #include "scenes/gf_scene.h"
 #include "scenes/gf_scene_box.h"
+#include "scenes/gf_scene_settle.h"
 
 static const gf_param_info silo_params[] = {
     {"width_x_over_d", "1", 25.0, 4.0, 400.0, "box width Lx / d along x (thesis: 25)"},
@@ -149,9 +150,7 @@ static gf_status silo_build(gf_sim *sim, const gf_run_spec *spec)
     GF_TRY(gf_packing_build_cached(ctx, &ps, gf_sim_preparation_dir(sim), p, &pr));
     gf_log(ctx, GF_LOG_INFO, "silo: %zu grains poured to H = %.1f d (Phi %.3f), %.1f s%s", pr.n_grains, g.H / d,
            pr.phi_local, pr.cpu_s, pr.reused ? " (read back from the preparations)" : "");
-    long steps = (long)ceil(gf_run_spec_param(spec, "settle_time_nd", 20.0) * sqrt(d / gr) / gf_run_spec_dt_s(spec));
-    if (steps > 0)
-        GF_TRY(gf_sim_advance(sim, steps));
+    GF_TRY(gf_scene_settle(sim, spec, gf_run_spec_param(spec, "settle_time_nd", 20.0)));
     gf_sim_reset_clock(sim);
     /* t = 0: the orifice opens (here rather than in start(), which a restart
      * skips: a restarted run rebuilds the scene and must find the hole open) */
