@@ -31,11 +31,11 @@
 #include <string.h>
 
 #include "coupling/gf_coupling.h"
-#include "io/gf_packing_cache.h"
 #include "particles/gf_packing.h"
 #include "scenes/gf_measure.h"
 #include "scenes/gf_scene.h"
 #include "scenes/gf_scene_box.h"
+#include "scenes/gf_scene_deposit.h"
 #include "scenes/gf_scene_settle.h"
 
 static const gf_param_info avalanche_params[] = {
@@ -89,12 +89,9 @@ static gf_status avalanche_build(gf_sim *sim, const gf_run_spec *spec)
                           .seed = spec->seed, .tolerance = gf_run_spec_param(spec, "phi_tolerance", 0.005)};
     gf_packing_result pr;
     if (st == GF_OK)
-        st = gf_packing_build_cached(ctx, &ps, gf_sim_preparation_dir(sim), p, &pr);
+        st = gf_scene_deposit(sim, &ps, &pr);
     gf_particles_destroy(&base);
     GF_TRY(st);
-    gf_log(ctx, GF_LOG_INFO, "avalanche: bed of %zu grains at Phi %.4f (preparation), %d deposits, %.1f s%s",
-           pr.n_grains, pr.phi_local, pr.iterations, pr.cpu_s,
-           pr.reused ? " (read back from the preparations)" : "");
     GF_TRY(gf_scene_settle(sim, spec, gf_run_spec_param(spec, "settle_time_nd", 5.0)));
     gf_sim_reset_clock(sim);
     /* fluid: free-slip lid, no-slip floor (default), periodic x and z (Izard §4.1.2.2) */

@@ -62,11 +62,11 @@
 #include <string.h>
 
 #include "coupling/gf_coupling.h"
-#include "io/gf_packing_cache.h"
 #include "particles/gf_packing.h"
 #include "scenes/gf_measure.h"
 #include "scenes/gf_scene.h"
 #include "scenes/gf_scene_box.h"
+#include "scenes/gf_scene_deposit.h"
 #include "scenes/gf_scene_settle.h"
 
 /* Walls are added in this order, so their ids are these (gf_scene_add_planes checks). */
@@ -167,7 +167,7 @@ static gf_status column_build(gf_sim *sim, const gf_run_spec *spec)
                                       .restitution = spec->contact.restitution};
     gf_packing_result pr;
     if (st == GF_OK)
-        st = gf_packing_build_cached(ctx, &ps, gf_sim_preparation_dir(sim), p, &pr);
+        st = gf_scene_deposit(sim, &ps, &pr);
     gf_particles_destroy(&base);
     gf_particles_destroy(&under);
     GF_TRY(st);
@@ -176,9 +176,6 @@ static gf_status column_build(gf_sim *sim, const gf_run_spec *spec)
                        "column_collapse: the preparation left no grain in the %.3g m x %.3g m column "
                        "(H0 = %.2g D is too low; raise column_length_over_D or aspect_ratio)",
                        g.R0, g.H0, g.H0 / g.D);
-    gf_log(ctx, GF_LOG_INFO, "column_collapse: %zu grains at Phi_i %.4f (interior, preparation; global %.4f), %d deposits, %.1f s%s",
-           pr.n_grains, pr.phi_local, pr.phi_global, pr.iterations, pr.cpu_s,
-           pr.reused ? " (read back from the preparations)" : "");
     /* re-equilibrate with the run's contacts behind the closed gate */
     int locked = gf_run_spec_param(spec, "settle_rotation_locked", 0.0) > 0.5;
     if (locked)

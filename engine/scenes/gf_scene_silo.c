@@ -44,11 +44,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "io/gf_packing_cache.h"
 #include "particles/gf_packing.h"
 #include "scenes/gf_measure.h"
 #include "scenes/gf_scene.h"
 #include "scenes/gf_scene_box.h"
+#include "scenes/gf_scene_deposit.h"
 #include "scenes/gf_scene_settle.h"
 
 static const gf_param_info silo_params[] = {
@@ -127,7 +127,6 @@ static const char *silo_check(const gf_run_spec *s, char *why, size_t n)
 static gf_status silo_build(gf_sim *sim, const gf_run_spec *spec)
 {
     gf_ctx *ctx = gf_sim_ctx(sim);
-    gf_particles *p = gf_sim_particles(sim);
     char why[256];
     if (silo_check(spec, why, sizeof why))
         return GF_FAIL(ctx, GF_ERR_CONFIG, "scene silo: %s", why);
@@ -147,9 +146,7 @@ static gf_status silo_build(gf_sim *sim, const gf_run_spec *spec)
                           .psd = {0.5 * d, spec->grains.polydispersity}, .density_kg_m3 = spec->grains.density_kg_m3,
                           .gravity_m_s2 = gr, .seed = spec->seed};
     gf_packing_result pr;
-    GF_TRY(gf_packing_build_cached(ctx, &ps, gf_sim_preparation_dir(sim), p, &pr));
-    gf_log(ctx, GF_LOG_INFO, "silo: %zu grains poured to H = %.1f d (Phi %.3f), %.1f s%s", pr.n_grains, g.H / d,
-           pr.phi_local, pr.cpu_s, pr.reused ? " (read back from the preparations)" : "");
+    GF_TRY(gf_scene_deposit(sim, &ps, &pr));
     GF_TRY(gf_scene_settle(sim, spec, gf_run_spec_param(spec, "settle_time_nd", 20.0)));
     gf_sim_reset_clock(sim);
     /* t = 0: the orifice opens (here rather than in start(), which a restart
