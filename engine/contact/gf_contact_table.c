@@ -5,10 +5,9 @@
  * form of the clipped linear law used by the tests (Schäfer, Dippel & Wolf 1996).
  */
 #include "contact/gf_contact.h"
+#include "core/gf_registry.h"
 
 #include <math.h>
-#include <stdio.h>
-#include <string.h>
 
 /* The registry: one row per law, defined in the law's own file. */
 static const gf_contact_info *const gf_contact_table[] = {
@@ -18,12 +17,12 @@ static const gf_contact_info *const gf_contact_table[] = {
 };
 enum { N_LAWS = sizeof gf_contact_table / sizeof gf_contact_table[0] };
 
+static const char *law_name(size_t i) { return gf_contact_table[i]->name; }
+
 const gf_contact_info *gf_contact_find(const char *law)
 {
-    for (size_t i = 0; i < N_LAWS; ++i)
-        if (law && strcmp(gf_contact_table[i]->name, law) == 0)
-            return gf_contact_table[i];
-    return NULL;
+    long i = gf_registry_index(N_LAWS, law_name, law);
+    return i < 0 ? NULL : gf_contact_table[i];
 }
 
 const gf_contact_info *const *gf_contact_all(int *n)
@@ -35,20 +34,8 @@ const gf_contact_info *const *gf_contact_all(int *n)
 const char *const *gf_contact_law_names(void)
 {
     static const char *names[N_LAWS + 1];
-    for (size_t i = 0; i < N_LAWS; ++i)
-        names[i] = gf_contact_table[i]->name;
-    names[N_LAWS] = NULL;
+    gf_registry_fill_names(N_LAWS, law_name, names);
     return names;
-}
-
-/* "linear, hertz": the known laws, for error messages. */
-static const char *known_laws(char *buf, size_t n)
-{
-    size_t len = 0;
-    buf[0] = '\0';
-    for (size_t i = 0; i < N_LAWS && len < n; ++i)
-        len += (size_t)snprintf(buf + len, n - len, "%s%s", i ? ", " : "", gf_contact_table[i]->name);
-    return buf;
 }
 
 double gf_contact_damping_ratio(double eps)
@@ -65,7 +52,7 @@ gf_status gf_contact_params_from_spec(gf_ctx *ctx, const gf_run_spec *spec, gf_c
     char known[256];
     if (!law)
         return GF_FAIL(ctx, GF_ERR_CONFIG, "contact.law: unknown law '%s' (known: %s)", c->law,
-                       known_laws(known, sizeof known));
+                       gf_registry_join(N_LAWS, law_name, "", ", ", known, sizeof known));
     if (!(eps > 0.0 && eps <= 1.0))
         return GF_FAIL(ctx, GF_ERR_CONFIG, "contact.restitution: must be in (0, 1] (got %g)", eps);
     if (!(c->t_contact_nd > 0.0))

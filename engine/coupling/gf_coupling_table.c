@@ -4,9 +4,7 @@
  * lines here: its extern declaration and its row. The rows are in the order
  * `fluid: auto` asks them, cheapest first.
  */
-#include <stdio.h>
-#include <string.h>
-
+#include "core/gf_registry.h"
 #include "coupling/gf_coupling_tier.h"
 
 /* --- declarations (one per tier) --- */
@@ -19,31 +17,20 @@ static const gf_coupling_tier *const gf_coupling_tier_table[] = {
     &gf_coupling_tier_resolved,
 };
 
+enum { N_TIERS = sizeof gf_coupling_tier_table / sizeof gf_coupling_tier_table[0] };
+
+static const char *tier_name(size_t i) { return gf_coupling_tier_table[i]->name; }
+
 const gf_coupling_tier *const *gf_coupling_tier_all(int *n)
 {
-    *n = (int)(sizeof gf_coupling_tier_table / sizeof gf_coupling_tier_table[0]);
+    *n = N_TIERS;
     return gf_coupling_tier_table;
 }
 
 const gf_coupling_tier *gf_coupling_tier_find(const char *name)
 {
-    int n = 0;
-    const gf_coupling_tier *const *all = gf_coupling_tier_all(&n);
-    for (int i = 0; i < n; ++i)
-        if (name && strcmp(all[i]->name, name) == 0)
-            return all[i];
-    return NULL;
+    long i = gf_registry_index(N_TIERS, tier_name, name);
+    return i < 0 ? NULL : gf_coupling_tier_table[i];
 }
 
-void gf_coupling_tier_names(char *buf, size_t n)
-{
-    int nt = 0;
-    const gf_coupling_tier *const *all = gf_coupling_tier_all(&nt);
-    size_t used = 0;
-    buf[0] = '\0';
-    for (int i = 0; i < nt && used < n; ++i) {
-        const char *sep = i == 0 ? "" : (i == nt - 1 ? " or " : ", ");
-        int w = snprintf(buf + used, n - used, "%s'%s'", sep, all[i]->name);
-        used += w > 0 ? (size_t)w : 0;
-    }
-}
+void gf_coupling_tier_names(char *buf, size_t n) { gf_registry_join(N_TIERS, tier_name, "'", " or ", buf, n); }

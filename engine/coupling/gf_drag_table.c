@@ -4,9 +4,7 @@
  * allowed values of fluid.drag and the error messages read this list.
  */
 #include "coupling/gf_drag.h"
-
-#include <stdio.h>
-#include <string.h>
+#include "core/gf_registry.h"
 
 static const gf_drag_info *const gf_drag_table[] = {
     &gf_drag_law_di_felice,
@@ -16,20 +14,18 @@ static const gf_drag_info *const gf_drag_table[] = {
 };
 enum { N_LAWS = sizeof gf_drag_table / sizeof gf_drag_table[0] };
 
+static const char *closure_name(size_t i) { return gf_drag_table[i]->name; }
+
 const gf_drag_info *gf_drag_lookup(const char *name)
 {
-    for (size_t i = 0; i < N_LAWS; ++i)
-        if (name && strcmp(gf_drag_table[i]->name, name) == 0)
-            return gf_drag_table[i];
-    return NULL;
+    long i = gf_registry_index(N_LAWS, closure_name, name);
+    return i < 0 ? NULL : gf_drag_table[i];
 }
 
 const char *const *gf_drag_names(void)
 {
     static const char *names[N_LAWS + 1];
-    for (size_t i = 0; i < N_LAWS; ++i)
-        names[i] = gf_drag_table[i]->name;
-    names[N_LAWS] = NULL;
+    gf_registry_fill_names(N_LAWS, closure_name, names);
     return names;
 }
 
@@ -39,11 +35,8 @@ gf_status gf_drag_find(gf_ctx *ctx, const char *name, const gf_drag_info **law)
     if (*law)
         return GF_OK;
     char known[256];
-    size_t len = 0;
-    known[0] = '\0';
-    for (size_t i = 0; i < N_LAWS && len < sizeof known; ++i)
-        len += (size_t)snprintf(known + len, sizeof known - len, "%s%s", i ? ", " : "", gf_drag_table[i]->name);
-    return GF_FAIL(ctx, GF_ERR_CONFIG, "fluid.drag: unknown closure '%s' (known: %s)", name ? name : "", known);
+    return GF_FAIL(ctx, GF_ERR_CONFIG, "fluid.drag: unknown closure '%s' (known: %s)", name ? name : "",
+                   gf_registry_join(N_LAWS, closure_name, "", ", ", known, sizeof known));
 }
 
 static double clip_eps(double eps) { return eps > 1.0 ? 1.0 : eps < 0.2 ? 0.2 : eps; }

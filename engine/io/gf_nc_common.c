@@ -63,6 +63,21 @@ gf_status gf_nc_check_info(gf_ctx *ctx, const char *path, const gf_var_info *inf
     return GF_OK;
 }
 
+gf_status gf_nc_check_vars(gf_ctx *ctx, const char *where, const char *what, const gf_var_info *vars, int n_vars,
+                           const char *const *reserved)
+{
+    if (n_vars < 1 || !vars)
+        return GF_FAIL(ctx, GF_ERR_ARG, "%s: need at least one %s (n_vars = %d)", where, what, n_vars);
+    for (int i = 0; i < n_vars; ++i) {
+        GF_TRY(gf_nc_check_info(ctx, where, &vars[i], i));
+        for (const char *const *r = reserved; *r; ++r)
+            if (strcmp(vars[i].name, *r) == 0)
+                return GF_FAIL(ctx, GF_ERR_ARG, "%s: %s name \"%s\" is reserved for a coordinate", where, what,
+                               vars[i].name);
+    }
+    return GF_OK;
+}
+
 void gf_nc_free(gf_nc_writer *w)
 {
     if (!w)
@@ -236,6 +251,18 @@ gf_status gf_nc_begin(gf_ctx *ctx, const char *path, const gf_nc_meta *meta, gf_
         st = gf_nc_check(w, nc_put_att_text(w->ncid, w->var_time, "axis", 1, "T"), "time axis");
     if (st == GF_OK)
         st = gf_nc_check(w, nc_put_att_text(w->ncid, w->var_time, "calendar", 8, "standard"), "time calendar");
+    return gf_nc_open_done(w, st, out);
+}
+
+gf_status gf_nc_alloc_varids(gf_nc_writer *w, int n_vars)
+{
+    w->n_vars = n_vars;
+    w->varids = calloc((size_t)(n_vars > 0 ? n_vars : 1), sizeof *w->varids);
+    return w->varids ? GF_OK : GF_FAIL(w->ctx, GF_ERR_NOMEM, "%s: out of memory", w->path);
+}
+
+gf_status gf_nc_open_done(gf_nc_writer *w, gf_status st, gf_nc_writer **out)
+{
     if (st != GF_OK) {
         gf_nc_writer_abort(&w);
         return st;

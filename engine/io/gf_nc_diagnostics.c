@@ -6,7 +6,6 @@
  * it is left uncompressed with the library's default chunking.
  */
 #include <netcdf.h>
-#include <stdlib.h>
 
 #include "io/gf_nc_internal.h"
 
@@ -21,21 +20,12 @@ gf_status gf_nc_diagnostics_open(gf_ctx *ctx, const char *path, const gf_nc_meta
         GF_TRY(gf_nc_check_info(ctx, path, &vars[i], i));
     gf_nc_writer *w;
     GF_TRY(gf_nc_begin(ctx, path, meta, GF_NC_DIAGNOSTICS, NULL, &w));
-    gf_status st = GF_OK;
-    w->n_vars = n_vars;
-    w->varids = calloc((size_t)(n_vars > 0 ? n_vars : 1), sizeof *w->varids);
-    if (!w->varids)
-        st = GF_FAIL(ctx, GF_ERR_NOMEM, "%s: out of memory", path);
+    gf_status st = gf_nc_alloc_varids(w, n_vars);
     for (int i = 0; i < n_vars && st == GF_OK; ++i)
         st = gf_nc_def_var(w, vars[i].name, NC_DOUBLE, 1, &w->dim_time, &vars[i], &w->varids[i]);
     if (st == GF_OK)
         st = gf_nc_end_def(w);
-    if (st != GF_OK) {
-        gf_nc_writer_abort(&w);
-        return st;
-    }
-    *out = w;
-    return GF_OK;
+    return gf_nc_open_done(w, st, out);
 }
 
 gf_status gf_nc_diagnostics_append(gf_nc_writer *w, double t_s, const double *values)

@@ -14,7 +14,6 @@
 #include <math.h>
 #include <netcdf.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "io/gf_nc_internal.h"
 
@@ -86,13 +85,8 @@ gf_status gf_nc_fields_open(gf_ctx *ctx, const char *path, const gf_nc_meta *met
     *out = NULL;
     const char *where = path ? path : "fields";
     GF_TRY(check_grid(ctx, where, n_cells, lo_m, cell_m));
-    if (n_vars < 1 || !vars)
-        return GF_FAIL(ctx, GF_ERR_ARG, "%s: need at least one field (n_vars = %d)", where, n_vars);
-    for (int i = 0; i < n_vars; ++i) {
-        GF_TRY(gf_nc_check_info(ctx, where, &vars[i], i));
-        if (strcmp(vars[i].name, "x") == 0 || strcmp(vars[i].name, "y") == 0 || strcmp(vars[i].name, "z") == 0)
-            return GF_FAIL(ctx, GF_ERR_ARG, "%s: field name \"%s\" is a coordinate", where, vars[i].name);
-    }
+    static const char *const coordinates[] = {"x", "y", "z", NULL};
+    GF_TRY(gf_nc_check_vars(ctx, where, "field", vars, n_vars, coordinates));
     gf_nc_writer *w;
     GF_TRY(gf_nc_begin(ctx, path, meta, GF_NC_FIELDS, NULL, &w));
     for (int k = 0; k < 3; ++k) {
@@ -100,17 +94,10 @@ gf_status gf_nc_fields_open(gf_ctx *ctx, const char *path, const gf_nc_meta *met
         w->grid_lo_m[k] = lo_m[k];
         w->grid_cell_m[k] = cell_m[k];
     }
-    w->n_vars = n_vars;
-    w->varids = calloc((size_t)n_vars, sizeof *w->varids);
-    gf_status st = w->varids ? GF_OK : GF_FAIL(ctx, GF_ERR_NOMEM, "%s: out of memory", path);
+    gf_status st = gf_nc_alloc_varids(w, n_vars);
     if (st == GF_OK)
         st = define_fields(w, lo_m, cell_m, vars);
-    if (st != GF_OK) {
-        gf_nc_writer_abort(&w);
-        return st;
-    }
-    *out = w;
-    return GF_OK;
+    return gf_nc_open_done(w, st, out);
 }
 
 gf_status gf_nc_fields_append(gf_nc_writer *w, double t_s, const double *const *fields)

@@ -48,6 +48,12 @@ gf_status gf_nc_begin(gf_ctx *ctx, const char *path, const gf_nc_meta *meta, gf_
                       const char *feature_type, gf_nc_writer **out);
 /* Leaves define mode. */
 gf_status gf_nc_end_def(gf_nc_writer *w);
+/* w->varids, zeroed, for the n_vars variables of a record (one slot at
+ * least); GF_ERR_NOMEM naming the file. */
+gf_status gf_nc_alloc_varids(gf_nc_writer *w, int n_vars);
+/* The last step of an open: on st == GF_OK hands w to *out (returns owned);
+ * otherwise aborts w, so that nothing is left on disk, and returns st. */
+gf_status gf_nc_open_done(gf_nc_writer *w, gf_status st, gf_nc_writer **out);
 /* Checks t_s (finite, not decreasing) and writes time[n_records]. The caller
  * increments n_records after its own variables of the record are written. */
 gf_status gf_nc_put_time(gf_nc_writer *w, double t_s);
@@ -61,6 +67,11 @@ gf_status gf_nc_compress(gf_nc_writer *w, int varid, const size_t *chunks);
 gf_status gf_nc_check(gf_nc_writer *w, int rc, const char *what);
 /* Validates one gf_var_info (name and units present). */
 gf_status gf_nc_check_info(gf_ctx *ctx, const char *path, const gf_var_info *info, int index);
+/* Validates a writer's list of n_vars variables (what: "field", ...): at
+ * least one, each valid, none named as one of the file's coordinates in
+ * reserved (NULL-terminated). */
+gf_status gf_nc_check_vars(gf_ctx *ctx, const char *where, const char *what, const gf_var_info *vars, int n_vars,
+                           const char *const *reserved);
 /* particles.nc: rebuilds the id -> trajectory table from the file's
  * trajectory_id variable (after gf_nc_writer_continue copied it). */
 gf_status gf_nc_particles_reload_ids(gf_nc_writer *w);

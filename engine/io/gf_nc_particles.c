@@ -175,12 +175,7 @@ gf_status gf_nc_particles_open(gf_ctx *ctx, const char *path, const gf_nc_meta *
         st = define_particles(w, &dim_traj);
     if (st == GF_OK)
         st = put_static(w, p);
-    if (st != GF_OK) {
-        gf_nc_writer_abort(&w);
-        return st;
-    }
-    *out = w;
-    return GF_OK;
+    return gf_nc_open_done(w, st, out);
 }
 
 static long find_slot(const gf_nc_writer *w, int64_t id)

@@ -91,29 +91,15 @@ gf_status gf_nc_probes_open(gf_ctx *ctx, const char *path, const gf_nc_meta *met
     *out = NULL;
     const char *where = path ? path : "probes";
     GF_TRY(check_stations(ctx, where, n_stations, station_names, station_xyz_m));
-    if (n_vars < 1 || !vars)
-        return GF_FAIL(ctx, GF_ERR_ARG, "%s: need at least one probed variable (n_vars = %d)", where, n_vars);
-    for (int i = 0; i < n_vars; ++i) {
-        GF_TRY(gf_nc_check_info(ctx, where, &vars[i], i));
-        static const char *const reserved[] = {"x", "y", "z", "station_name"};
-        for (int k = 0; k < 4; ++k)
-            if (strcmp(vars[i].name, reserved[k]) == 0)
-                return GF_FAIL(ctx, GF_ERR_ARG, "%s: variable name \"%s\" is reserved", where, vars[i].name);
-    }
+    static const char *const coordinates[] = {"x", "y", "z", "station_name", NULL};
+    GF_TRY(gf_nc_check_vars(ctx, where, "probed variable", vars, n_vars, coordinates));
     gf_nc_writer *w;
     GF_TRY(gf_nc_begin(ctx, path, meta, GF_NC_PROBES, "timeSeries", &w));
     w->n_stations = n_stations;
-    w->n_vars = n_vars;
-    w->varids = calloc((size_t)n_vars, sizeof *w->varids);
-    gf_status st = w->varids ? GF_OK : GF_FAIL(ctx, GF_ERR_NOMEM, "%s: out of memory", path);
+    gf_status st = gf_nc_alloc_varids(w, n_vars);
     if (st == GF_OK)
         st = define_probes(w, n_stations, station_names, station_xyz_m, vars);
-    if (st != GF_OK) {
-        gf_nc_writer_abort(&w);
-        return st;
-    }
-    *out = w;
-    return GF_OK;
+    return gf_nc_open_done(w, st, out);
 }
 
 gf_status gf_nc_probes_append(gf_nc_writer *w, double t_s, const double *values)

@@ -179,39 +179,97 @@ static void put_header(FILE *f, const char *collection)
 
 static void put_footer(FILE *f) { fprintf(f, "    </Grid>\n  </Domain>\n</Xdmf>\n"); }
 
-/* Grains: one Polyvertex grid per record, x, y, z (trajectory, time). */
-static gf_status put_particles(gf_ctx *ctx, const char *path, const sidecar *s)
+/* The file's x, y, z variables into xyz; 0 when one is missing. */
+static int find_xyz(const sidecar *s, const nc_var *xyz[3])
 {
-    const nc_var *x = find_var(s, "x"), *y = find_var(s, "y"), *z = find_var(s, "z");
-    if (!x || !y || !z || x->ndims != 2)
-        return GF_FAIL(ctx, GF_ERR_IO, "sidecar: %s has no x, y, z (trajectory, time)", path);
-    size_t n = x->dims[0];
-    static const char *const vel[3] = {"u", "v", "w"};
-    static const char *const per_grain[3] = {"radius", "glued", "trajectory_id"};
-    put_header(s->f, "grains");
+    static const char *const names[3] = {"x", "y", "z"};
+    for (int c = 0; c < 3; ++c)
+        if (!(xyz[c] = find_var(s, names[c])))
+            return 0;
+    return 1;
+}
+
+/* Writes the body of record k's grid (topology, geometry, attributes). */
+typedef void record_writer(const sidecar *s, size_t k, const void *arg);
+
+/* The temporal collection: one uniform grid "<collection>_<k>" at time_s[k]
+ * per record, its body from put. */
+static void put_collection(const sidecar *s, const char *collection, record_writer *put, const void *arg)
+{
+    put_header(s->f, collection);
     for (size_t k = 0; k < s->n_records; ++k) {
-        fprintf(s->f,
-                "    <Grid Name=\"grains_%zu\" GridType=\"Uniform\">\n      <Time Value=\"%.17g\"/>\n"
-                "      <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"%zu\" NodesPerElement=\"1\"/>\n"
-                "      <Geometry GeometryType=\"X_Y_Z\">\n",
-                k, s->time_s[k], n);
-        const nc_var *xyz[3] = {x, y, z};
-        for (int c = 0; c < 3; ++c)
-            put_record(s, xyz[c], 1, k, "        ");
-        fprintf(s->f, "      </Geometry>\n");
-        put_vector(s, "velocity", vel, 1, k, "Node");
-        for (int i = 0; i < 3; ++i) {
-            const nc_var *v = find_var(s, per_grain[i]);
-            if (!v || v->ndims != 1)
-                continue;
-            fprintf(s->f, "      <Attribute Name=\"%s\" AttributeType=\"Scalar\" Center=\"Node\">\n", v->name);
-            put_dataset(s, v, "        ");
-            fprintf(s->f, "      </Attribute>\n");
-        }
+        fprintf(s->f, "    <Grid Name=\"%s_%zu\" GridType=\"Uniform\">\n      <Time Value=\"%.17g\"/>\n", collection,
+                k, s->time_s[k]);
+        put(s, k, arg);
         fprintf(s->f, "    </Grid>\n");
     }
     put_footer(s->f);
+}
+
+/* Record k of the grains: a Polyvertex of x, y, z (trajectory, time), the
+ * velocity and the per-grain variables. arg: the x, y, z variables. */
+static void put_grains_record(const sidecar *s, size_t k, const void *arg)
+{
+    const nc_var *const *xyz = arg;
+    static const char *const vel[3] = {"u", "v", "w"};
+    static const char *const per_grain[3] = {"radius", "glued", "trajectory_id"};
+    fprintf(s->f,
+            "      <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"%zu\" NodesPerElement=\"1\"/>\n"
+            "      <Geometry GeometryType=\"X_Y_Z\">\n",
+            xyz[0]->dims[0]);
+    for (int c = 0; c < 3; ++c)
+        put_record(s, xyz[c], 1, k, "        ");
+    fprintf(s->f, "      </Geometry>\n");
+    put_vector(s, "velocity", vel, 1, k, "Node");
+    for (int i = 0; i < 3; ++i) {
+        const nc_var *v = find_var(s, per_grain[i]);
+        if (!v || v->ndims != 1)
+            continue;
+        fprintf(s->f, "      <Attribute Name=\"%s\" AttributeType=\"Scalar\" Center=\"Node\">\n", v->name);
+        put_dataset(s, v, "        ");
+        fprintf(s->f, "      </Attribute>\n");
+    }
+}
+
+/* Grains: one Polyvertex grid per record, x, y, z (trajectory, time). */
+static gf_status put_particles(gf_ctx *ctx, const char *path, const sidecar *s)
+{
+    const nc_var *xyz[3];
+    if (!find_xyz(s, xyz) || xyz[0]->ndims != 2)
+        return GF_FAIL(ctx, GF_ERR_IO, "sidecar: %s has no x, y, z (trajectory, time)", path);
+    put_collection(s, "grains", put_grains_record, xyz);
     return GF_OK;
+}
+
+typedef struct fluid_grid {
+    const nc_var *xyz[3];           /* cell centres */
+    const double *lo_m, *cell_m;    /* corner and cell size (x, y, z) */
+} fluid_grid;
+
+/* Record k of the fluid: a 3DCoRectMesh, every (time, z, y, x) variable a
+ * cell attribute, the velocity joined. arg: the fluid_grid. */
+static void put_fluid_record(const sidecar *s, size_t k, const void *arg)
+{
+    const fluid_grid *g = arg;
+    static const char *const vel[3] = {"u_fluid", "v_fluid", "w_fluid"};
+    fprintf(s->f,
+            "      <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"%zu %zu %zu\"/>\n"
+            "      <Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n"
+            "        <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">"
+            "%.17g %.17g %.17g</DataItem>\n"
+            "        <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">"
+            "%.17g %.17g %.17g</DataItem>\n      </Geometry>\n",
+            g->xyz[2]->dims[0] + 1, g->xyz[1]->dims[0] + 1, g->xyz[0]->dims[0] + 1, g->lo_m[2], g->lo_m[1],
+            g->lo_m[0], g->cell_m[2], g->cell_m[1], g->cell_m[0]);
+    for (int i = 0; i < s->n_vars; ++i) {
+        const nc_var *v = &s->vars[i];
+        if (v->ndims != 4)
+            continue;
+        fprintf(s->f, "      <Attribute Name=\"%s\" AttributeType=\"Scalar\" Center=\"Cell\">\n", v->name);
+        put_record(s, v, 0, k, "        ");
+        fprintf(s->f, "      </Attribute>\n");
+    }
+    put_vector(s, "fluid_velocity", vel, 0, k, "Cell");
 }
 
 /* Fluid: one 3DCoRectMesh grid per record, every (time, z, y, x) variable
@@ -219,34 +277,10 @@ static gf_status put_particles(gf_ctx *ctx, const char *path, const sidecar *s)
 static gf_status put_fields(gf_ctx *ctx, const char *path, const sidecar *s, const double lo_m[3],
                             const double cell_m[3])
 {
-    const nc_var *x = find_var(s, "x"), *y = find_var(s, "y"), *z = find_var(s, "z");
-    if (!x || !y || !z)
+    fluid_grid g = {.lo_m = lo_m, .cell_m = cell_m};
+    if (!find_xyz(s, g.xyz))
         return GF_FAIL(ctx, GF_ERR_IO, "sidecar: %s has no x, y, z cell centres", path);
-    static const char *const vel[3] = {"u_fluid", "v_fluid", "w_fluid"};
-    put_header(s->f, "fluid");
-    for (size_t k = 0; k < s->n_records; ++k) {
-        fprintf(s->f,
-                "    <Grid Name=\"fluid_%zu\" GridType=\"Uniform\">\n      <Time Value=\"%.17g\"/>\n"
-                "      <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"%zu %zu %zu\"/>\n"
-                "      <Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n"
-                "        <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">"
-                "%.17g %.17g %.17g</DataItem>\n"
-                "        <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">"
-                "%.17g %.17g %.17g</DataItem>\n      </Geometry>\n",
-                k, s->time_s[k], z->dims[0] + 1, y->dims[0] + 1, x->dims[0] + 1, lo_m[2], lo_m[1], lo_m[0],
-                cell_m[2], cell_m[1], cell_m[0]);
-        for (int i = 0; i < s->n_vars; ++i) {
-            const nc_var *v = &s->vars[i];
-            if (v->ndims != 4)
-                continue;
-            fprintf(s->f, "      <Attribute Name=\"%s\" AttributeType=\"Scalar\" Center=\"Cell\">\n", v->name);
-            put_record(s, v, 0, k, "        ");
-            fprintf(s->f, "      </Attribute>\n");
-        }
-        put_vector(s, "fluid_velocity", vel, 0, k, "Cell");
-        fprintf(s->f, "    </Grid>\n");
-    }
-    put_footer(s->f);
+    put_collection(s, "fluid", put_fluid_record, &g);
     return GF_OK;
 }
 

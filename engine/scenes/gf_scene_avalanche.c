@@ -31,10 +31,12 @@
 #include <string.h>
 
 #include "coupling/gf_coupling.h"
-#include "io/gf_packing_cache.h"
 #include "particles/gf_packing.h"
 #include "scenes/gf_measure.h"
 #include "scenes/gf_scene.h"
+#include "scenes/gf_scene_box.h"
+#include "scenes/gf_scene_deposit.h"
+#include "scenes/gf_scene_settle.h"
 
 static const gf_param_info avalanche_params[] = {
     {"length_over_D", "1", 5.0, 2.0, 1000.0, "periodic length L / D"},
@@ -70,13 +72,11 @@ static gf_status avalanche_build(gf_sim *sim, const gf_run_spec *spec)
     double phi = isnan(spec->phi_initial) ? gf_run_spec_param(spec, "phi_target", 0.6) : spec->phi_initial;
     if (h_bed + 2.0 * D > H)
         return GF_FAIL(ctx, GF_ERR_CONFIG, "avalanche: bed_height_over_D + 2 must not exceed height_over_D");
-    double lo[3] = {0, 0, 0}, hi[3] = {L, H, W}, grav[3] = {0, -spec->gravity_m_s2, 0};
-    int periodic[3] = {1, 0, 1};
-    GF_TRY(gf_sim_set_box(sim, lo, hi, periodic));
-    GF_TRY(gf_sim_set_gravity(sim, grav));
-    double floor_pt[3] = {0, 0, 0}, up[3] = {0, 1, 0}, lid_pt[3] = {0, H, 0}, down[3] = {0, -1, 0};
-    GF_TRY(gf_sim_add_wall(sim, floor_pt, up, spec->contact.wall_friction, NULL));
-    GF_TRY(gf_sim_add_wall(sim, lid_pt, down, spec->contact.wall_friction, NULL));
+    const double lo[3] = {0, 0, 0}, hi[3] = {L, H, W};
+    GF_TRY(gf_scene_box_under_gravity(sim, lo, hi, (const int[3]){1, 0, 1}, spec->gravity_m_s2));
+    const double mu = spec->contact.wall_friction;
+    const gf_scene_plane floor_and_lid[] = {{{0, 0, 0}, {0, 1, 0}, mu}, {{0, H, 0}, {0, -1, 0}, mu}};
+    GF_TRY(gf_scene_add_planes(sim, 2, floor_and_lid));
     gf_psd psd = {0.5 * D, spec->grains.polydispersity};
     gf_particles *base = NULL;
     GF_TRY(gf_particles_create(ctx, 256, &base));
@@ -89,16 +89,10 @@ static gf_status avalanche_build(gf_sim *sim, const gf_run_spec *spec)
                           .seed = spec->seed, .tolerance = gf_run_spec_param(spec, "phi_tolerance", 0.005)};
     gf_packing_result pr;
     if (st == GF_OK)
-        st = gf_packing_build_cached(ctx, &ps, gf_sim_preparation_dir(sim), p, &pr);
+        st = gf_scene_deposit(sim, &ps, &pr);
     gf_particles_destroy(&base);
     GF_TRY(st);
-    gf_log(ctx, GF_LOG_INFO, "avalanche: bed of %zu grains at Phi %.4f (preparation), %d deposits, %.1f s%s",
-           pr.n_grains, pr.phi_local, pr.iterations, pr.cpu_s,
-           pr.reused ? " (read back from the preparations)" : "");
-    double t_settle = gf_run_spec_param(spec, "settle_time_nd", 5.0) * sqrt(D / spec->gravity_m_s2);
-    long steps = (long)ceil(t_settle / gf_run_spec_dt_s(spec));
-    if (steps > 0)
-        GF_TRY(gf_sim_advance(sim, steps));
+    GF_TRY(gf_scene_settle(sim, spec, gf_run_spec_param(spec, "settle_time_nd", 5.0)));
     gf_sim_reset_clock(sim);
     /* fluid: free-slip lid, no-slip floor (default), periodic x and z (Izard §4.1.2.2) */
     return gf_sim_set_fluid_bc(sim, 1, 1, GF_BC_FREE_SLIP);

@@ -62,12 +62,14 @@
 #include <string.h>
 
 #include "coupling/gf_coupling.h"
-#include "io/gf_packing_cache.h"
 #include "particles/gf_packing.h"
 #include "scenes/gf_measure.h"
 #include "scenes/gf_scene.h"
+#include "scenes/gf_scene_box.h"
+#include "scenes/gf_scene_deposit.h"
+#include "scenes/gf_scene_settle.h"
 
-/* Walls are added in this order, so their ids are these (checked in build). */
+/* Walls are added in this order, so their ids are these (gf_scene_add_planes checks). */
 enum { WALL_FLOOR = 0, WALL_BACK, WALL_GATE, WALL_END, WALL_TOP };
 
 static const gf_param_info column_params[] = {
@@ -129,18 +131,15 @@ static gf_status column_build(gf_sim *sim, const gf_run_spec *spec)
     column_geom_of(spec, &g);
     if (g.R0 >= g.L)
         return GF_FAIL(ctx, GF_ERR_CONFIG, "column_collapse: domain_length_over_R0 must exceed 1");
-    double lo[3] = {0, 0, 0}, hi[3] = {g.L, g.top, g.W}, grav[3] = {0, -spec->gravity_m_s2, 0};
-    int periodic[3] = {0, 0, 1};
-    GF_TRY(gf_sim_set_box(sim, lo, hi, periodic));
-    GF_TRY(gf_sim_set_gravity(sim, grav));
-    const double walls[5][6] = {{0, 0, 0, 0, 1, 0},    {0, 0, 0, 1, 0, 0},        {g.R0, 0, 0, -1, 0, 0},
-                                {g.L, 0, 0, -1, 0, 0}, {0, g.top, 0, 0, -1, 0}};
-    for (int w = 0; w < 5; ++w) {
-        int id = -1;
-        GF_TRY(gf_sim_add_wall(sim, walls[w], walls[w] + 3, spec->contact.wall_friction, &id));
-        if (id != w)
-            return GF_FAIL(ctx, GF_ERR_ARG, "column_collapse: wall %d got id %d (walls must be added first)", w, id);
-    }
+    const double lo[3] = {0, 0, 0}, hi[3] = {g.L, g.top, g.W};
+    GF_TRY(gf_scene_box_under_gravity(sim, lo, hi, (const int[3]){0, 0, 1}, spec->gravity_m_s2));
+    const double mu = spec->contact.wall_friction;
+    const gf_scene_plane walls[] = {
+        [WALL_FLOOR] = {{0, 0, 0}, {0, 1, 0}, mu},     [WALL_BACK] = {{0, 0, 0}, {1, 0, 0}, mu},
+        [WALL_GATE] = {{g.R0, 0, 0}, {-1, 0, 0}, mu},  [WALL_END] = {{g.L, 0, 0}, {-1, 0, 0}, mu},
+        [WALL_TOP] = {{0, g.top, 0}, {0, -1, 0}, mu},
+    };
+    GF_TRY(gf_scene_add_planes(sim, 5, walls));
     gf_psd psd = {0.5 * g.D, spec->grains.polydispersity};
     gf_particles *base = NULL;
     GF_TRY(gf_particles_create(ctx, 256, &base));
@@ -168,7 +167,7 @@ static gf_status column_build(gf_sim *sim, const gf_run_spec *spec)
                                       .restitution = spec->contact.restitution};
     gf_packing_result pr;
     if (st == GF_OK)
-        st = gf_packing_build_cached(ctx, &ps, gf_sim_preparation_dir(sim), p, &pr);
+        st = gf_scene_deposit(sim, &ps, &pr);
     gf_particles_destroy(&base);
     gf_particles_destroy(&under);
     GF_TRY(st);
@@ -177,17 +176,11 @@ static gf_status column_build(gf_sim *sim, const gf_run_spec *spec)
                        "column_collapse: the preparation left no grain in the %.3g m x %.3g m column "
                        "(H0 = %.2g D is too low; raise column_length_over_D or aspect_ratio)",
                        g.R0, g.H0, g.H0 / g.D);
-    gf_log(ctx, GF_LOG_INFO, "column_collapse: %zu grains at Phi_i %.4f (interior, preparation; global %.4f), %d deposits, %.1f s%s",
-           pr.n_grains, pr.phi_local, pr.phi_global, pr.iterations, pr.cpu_s,
-           pr.reused ? " (read back from the preparations)" : "");
     /* re-equilibrate with the run's contacts behind the closed gate */
-    double t_settle = gf_run_spec_param(spec, "settle_time_nd", 5.0) * sqrt(g.D / spec->gravity_m_s2);
-    long steps = (long)ceil(t_settle / gf_run_spec_dt_s(spec));
     int locked = gf_run_spec_param(spec, "settle_rotation_locked", 0.0) > 0.5;
     if (locked)
         GF_TRY(gf_sim_set_rotation_locked(sim, 1));
-    if (steps > 0)
-        GF_TRY(gf_sim_advance(sim, steps));
+    GF_TRY(gf_scene_settle(sim, spec, gf_run_spec_param(spec, "settle_time_nd", 5.0)));
     if (locked)
         GF_TRY(gf_sim_set_rotation_locked(sim, 0)); /* free from t = 0 on (and on a restart) */
     gf_sim_reset_clock(sim);
@@ -252,16 +245,7 @@ static int column_done(gf_sim *sim)
     double T0 = sqrt(2.0 * g.H0 / s->gravity_m_s2);
     if (gf_sim_time_s(sim) < 2.0 * T0)
         return 0;
-    const gf_particles *p = gf_sim_particles(sim);
-    size_t n = 0;
-    double m = 0.0;
-    for (size_t i = 0; i < p->n_local; ++i)
-        if (!(p->flags[i] & GF_P_GLUED))
-            ++n, m += p->mass_kg[i];
-    if (n == 0)
-        return 1;
-    double ke = gf_particles_kinetic_energy(p) / (double)n, m_mean = m / (double)n;
-    return ke < gf_run_spec_param(s, "rest_energy", 1e-4) * m_mean * s->gravity_m_s2 * g.D;
+    return gf_scene_at_rest(sim, gf_run_spec_param(s, "rest_energy", 1e-4));
 }
 
 static gf_status column_initial_packing(gf_sim *sim, double *phi_measured, double *phi_local)

@@ -11,6 +11,7 @@
 #include <math.h>
 
 #include "scenes/gf_scene.h"
+#include "scenes/gf_scene_box.h"
 
 static const gf_param_info clamp_params[] = {
     {"squeeze_over_D", "1", 2e-3, 0.0, 0.04, "overlap with each glued partner / D"},
@@ -22,10 +23,8 @@ static gf_status clamp_build(gf_sim *sim, const gf_run_spec *spec)
     gf_particles *p = gf_sim_particles(sim);
     double D = spec->grains.diameter_m, R = 0.5 * D, rho = spec->grains.density_kg_m3;
     double d = D - gf_run_spec_param(spec, "squeeze_over_D", 2e-3) * D; /* centre distance */
-    double lo[3] = {-5.0 * D, -5.0 * D, -5.0 * D}, hi[3] = {5.0 * D, 5.0 * D, 5.0 * D}, g[3] = {0.0, -spec->gravity_m_s2, 0.0};
-    int periodic[3] = {0, 0, 0};
-    GF_TRY(gf_sim_set_box(sim, lo, hi, periodic));
-    GF_TRY(gf_sim_set_gravity(sim, g));
+    const double lo[3] = {-5.0 * D, -5.0 * D, -5.0 * D}, hi[3] = {5.0 * D, 5.0 * D, 5.0 * D};
+    GF_TRY(gf_scene_box_under_gravity(sim, lo, hi, (const int[3]){0, 0, 0}, spec->gravity_m_s2));
     GF_TRY(gf_particles_add(ctx, p, -d, 0.0, 0.0, R, rho, GF_P_GLUED, NULL));
     GF_TRY(gf_particles_add(ctx, p, 0.0, 0.0, 0.0, R, rho, 0, NULL));
     GF_TRY(gf_particles_add(ctx, p, d, 0.0, 0.0, R, rho, GF_P_GLUED, NULL));

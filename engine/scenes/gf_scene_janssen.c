@@ -51,10 +51,12 @@
  */
 #include <math.h>
 
-#include "io/gf_packing_cache.h"
 #include "particles/gf_packing.h"
 #include "scenes/gf_measure.h"
 #include "scenes/gf_scene.h"
+#include "scenes/gf_scene_box.h"
+#include "scenes/gf_scene_deposit.h"
+#include "scenes/gf_scene_settle.h"
 
 static const gf_param_info janssen_params[] = {
     {"side_over_D", "1", 10.0, 3.0, 1000.0, "box side S / D (seed: 0.1 m / 1 cm = 10)"},
@@ -145,7 +147,6 @@ static gf_status lower_floor(gf_sim *sim, const gf_run_spec *spec)
     double D = spec->grains.diameter_m, drop = gf_run_spec_param(spec, "floor_drop_over_D", 0.05) * D;
     if (!(drop > 0.0))
         return GF_OK;
-    long steps = (long)ceil(2.0 * sqrt(D / spec->gravity_m_s2) / gf_run_spec_dt_s(spec));
     int previous = 0; /* the floor y = 0 is wall 0 */
     for (int k = 1; k <= N_DROP; ++k) {
         double pt[3] = {0.0, -drop * k / N_DROP, 0.0}, up[3] = {0.0, 1.0, 0.0};
@@ -153,7 +154,7 @@ static gf_status lower_floor(gf_sim *sim, const gf_run_spec *spec)
         GF_TRY(gf_sim_add_wall(sim, pt, up, spec->contact.wall_friction, &id));
         GF_TRY(gf_sim_set_wall_active(sim, previous, 0));
         previous = id;
-        GF_TRY(gf_sim_advance(sim, steps));
+        GF_TRY(gf_scene_settle(sim, spec, 2.0));
     }
     return GF_OK;
 }
@@ -168,14 +169,16 @@ static gf_status janssen_build(gf_sim *sim, const gf_run_spec *spec)
     double top = h + 6.0 * D;
     int random_walls = gf_run_spec_param(spec, "random_walls", 1.0) > 0.5;
     double sb = wall_setback(spec, random_walls), margin = fmax(2.0 * D, sb + D);
-    double lo[3] = {-margin, -D, -margin}, hi[3] = {S + margin, top, S + margin}, grav[3] = {0, -g, 0};
-    int periodic[3] = {0, 0, 0};
-    GF_TRY(gf_sim_set_box(sim, lo, hi, periodic));
-    GF_TRY(gf_sim_set_gravity(sim, grav));
-    const double planes[6][6] = {{0, 0, 0, 0, 1, 0},       {0, top, 0, 0, -1, 0},  {-sb, 0, 0, 1, 0, 0},
-                                 {S + sb, 0, 0, -1, 0, 0}, {0, 0, -sb, 0, 0, 1},   {0, 0, S + sb, 0, 0, -1}};
-    for (int w = 0; w < 6; ++w)
-        GF_TRY(gf_sim_add_wall(sim, planes[w], planes[w] + 3, w < 2 ? spec->contact.wall_friction : 0.0, NULL));
+    const double lo[3] = {-margin, -D, -margin}, hi[3] = {S + margin, top, S + margin};
+    GF_TRY(gf_scene_box_under_gravity(sim, lo, hi, (const int[3]){0, 0, 0}, g));
+    /* floor and lid frictional; the side planes frictionless, the glued grains are the walls */
+    const double mu = spec->contact.wall_friction;
+    const gf_scene_plane planes[] = {
+        {{0, 0, 0}, {0, 1, 0}, mu},       {{0, top, 0}, {0, -1, 0}, mu},
+        {{-sb, 0, 0}, {1, 0, 0}, 0.0},    {{S + sb, 0, 0}, {-1, 0, 0}, 0.0},
+        {{0, 0, -sb}, {0, 0, 1}, 0.0},    {{0, 0, S + sb}, {0, 0, -1}, 0.0},
+    };
+    GF_TRY(gf_scene_add_planes(sim, 6, planes));
     /* glued walls first (kept apart as the preparation's obstacles), then the deposit between them */
     gf_rng *rng = gf_sim_rng(sim);
     gf_particles *walls = NULL;
@@ -206,34 +209,16 @@ static gf_status janssen_build(gf_sim *sim, const gf_run_spec *spec)
                           .seed = spec->seed};
     gf_packing_result pr;
     if (st == GF_OK)
-        st = gf_packing_build_cached(ctx, &ps, gf_sim_preparation_dir(sim), p, &pr);
+        st = gf_scene_deposit(sim, &ps, &pr);
     gf_particles_destroy(&walls);
     GF_TRY(st);
-    gf_log(ctx, GF_LOG_INFO, "janssen: %zu grains at Phi %.4f (preparation interior), %d deposits, %.1f s%s",
-           pr.n_grains, pr.phi_local, pr.iterations, pr.cpu_s,
-           pr.reused ? " (read back from the preparations)" : "");
-    double t_settle = gf_run_spec_param(spec, "settle_time_nd", 10.0) * sqrt(D / g);
-    long steps = (long)ceil(t_settle / gf_run_spec_dt_s(spec));
-    if (steps > 0)
-        GF_TRY(gf_sim_advance(sim, steps));
+    GF_TRY(gf_scene_settle(sim, spec, gf_run_spec_param(spec, "settle_time_nd", 10.0)));
     GF_TRY(lower_floor(sim, spec));
     gf_sim_reset_clock(sim);
     return GF_OK;
 }
 
-static int janssen_done(gf_sim *sim)
-{
-    const gf_run_spec *s = gf_sim_spec(sim);
-    const gf_particles *p = gf_sim_particles(sim);
-    size_t n = 0;
-    double m = 0.0;
-    for (size_t i = 0; i < p->n_local; ++i)
-        if (!(p->flags[i] & GF_P_GLUED))
-            ++n, m += p->mass_kg[i];
-    if (n == 0)
-        return 1;
-    return gf_particles_kinetic_energy(p) / (double)n < 1e-6 * (m / (double)n) * s->gravity_m_s2 * s->grains.diameter_m;
-}
+static int janssen_done(gf_sim *sim) { return gf_scene_at_rest(sim, 1e-6); }
 
 static gf_status janssen_initial_packing(gf_sim *sim, double *phi_measured, double *phi_local)
 {

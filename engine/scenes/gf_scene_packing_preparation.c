@@ -14,6 +14,7 @@
 #include <stdio.h>
 
 #include "scenes/gf_scene.h"
+#include "scenes/gf_scene_box.h"
 
 #define PREP_EXTENT 1e6 /* bound of the coordinates (m): any container */
 
@@ -52,8 +53,7 @@ static gf_status prep_build(gf_sim *sim, const gf_run_spec *spec)
     const double lo[3] = {param(spec, "box_lo_x_m"), param(spec, "box_lo_y_m"), param(spec, "box_lo_z_m")};
     const double hi[3] = {param(spec, "box_hi_x_m"), param(spec, "box_hi_y_m"), param(spec, "box_hi_z_m")};
     const int periodic[3] = {param(spec, "periodic_x") > 0.5, 0, param(spec, "periodic_z") > 0.5};
-    GF_TRY(gf_sim_set_box(sim, lo, hi, periodic));
-    GF_TRY(gf_sim_set_gravity(sim, (const double[3]){0.0, -spec->gravity_m_s2, 0.0}));
+    GF_TRY(gf_scene_box_under_gravity(sim, lo, hi, periodic, spec->gravity_m_s2));
     const double floor_pt[3] = {0.0, param(spec, "floor_y_m"), 0.0}, up[3] = {0.0, 1.0, 0.0};
     GF_TRY(gf_sim_add_wall(sim, floor_pt, up, spec->contact.wall_friction, NULL));
     if (param(spec, "walls_x") > 0.5 && !periodic[0])

@@ -7,16 +7,21 @@
 #include <math.h>
 #include <string.h>
 
+#include "core/gf_registry.h"
 #include "scenes/gf_scene.h"
+
+static const char *scene_name(size_t i)
+{
+    int n = 0;
+    return gf_scene_all(&n)[i]->name;
+}
 
 const gf_scene_desc *gf_scene_find(const char *name)
 {
     int n = 0;
     const gf_scene_desc *const *all = gf_scene_all(&n);
-    for (int i = 0; i < n; ++i)
-        if (name && strcmp(all[i]->name, name) == 0)
-            return all[i];
-    return NULL;
+    long i = gf_registry_index((size_t)n, scene_name, name);
+    return i < 0 ? NULL : all[i];
 }
 
 static const gf_param_info *find_param(const gf_scene_desc *d, const char *key)

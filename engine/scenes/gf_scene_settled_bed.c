@@ -25,6 +25,7 @@
 
 #include "coupling/gf_coupling.h" /* gf_fluid_bc */
 #include "scenes/gf_scene.h"
+#include "scenes/gf_scene_box.h"
 
 static const gf_param_info bed_params[] = {
     {"n_grains", "1", 1e4, 1.0, 1e7, "number of grains"},
@@ -55,12 +56,10 @@ static gf_status bed_build(gf_sim *sim, const gf_run_spec *spec)
     double dy = sqrt(d_max * d_max - 0.5 * ax * ax) + 0.01 * D;
     double layers = ceil((double)n / ((double)m * m));
     /* open top: room above the stack */
-    double lo[3] = {0.0, 0.0, 0.0}, hi[3] = {L, 2.0 * layers * dy + 10.0 * d_max, L};
-    int periodic[3] = {1, 0, 1};
-    GF_TRY(gf_sim_set_box(sim, lo, hi, periodic));
-    double pt[3] = {0.0, 0.0, 0.0}, up[3] = {0.0, 1.0, 0.0}, grav[3] = {0.0, -g, 0.0};
-    GF_TRY(gf_sim_add_wall(sim, pt, up, spec->contact.wall_friction, NULL));
-    GF_TRY(gf_sim_set_gravity(sim, grav));
+    const double lo[3] = {0.0, 0.0, 0.0}, hi[3] = {L, 2.0 * layers * dy + 10.0 * d_max, L};
+    GF_TRY(gf_scene_box_under_gravity(sim, lo, hi, (const int[3]){1, 0, 1}, g));
+    const gf_scene_plane floor_plane = {{0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, spec->contact.wall_friction};
+    GF_TRY(gf_scene_add_planes(sim, 1, &floor_plane));
     double jitter = 0.02 * D;
     (void)dy;
     size_t per_layer = (size_t)m * (size_t)m;

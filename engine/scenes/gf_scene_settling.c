@@ -21,6 +21,7 @@
 #include <math.h>
 
 #include "scenes/gf_scene.h"
+#include "scenes/gf_scene_box.h"
 
 static const gf_param_info settling_params[] = {
     {"mode", "1", 1.0, 0.0, 1.0, "0: single sphere; 1: homogeneous suspension"},
@@ -52,10 +53,8 @@ static gf_status settling_build(gf_sim *sim, const gf_run_spec *spec)
                            L / D, phi);
         L = n * a;
     }
-    double lo[3] = {0, 0, 0}, hi[3] = {L, L, L}, grav[3] = {0, -spec->gravity_m_s2, 0};
-    int periodic[3] = {1, 1, 1};
-    GF_TRY(gf_sim_set_box(sim, lo, hi, periodic));
-    GF_TRY(gf_sim_set_gravity(sim, grav));
+    const double lo[3] = {0, 0, 0}, hi[3] = {L, L, L};
+    GF_TRY(gf_scene_box_under_gravity(sim, lo, hi, (const int[3]){1, 1, 1}, spec->gravity_m_s2));
     if (!suspension)
         return gf_particles_add(ctx, p, 0.43 * L, 0.9 * L, 0.57 * L, 0.5 * D, rho, 0, NULL);
     gf_rng *rng = gf_sim_rng(sim);

@@ -44,10 +44,12 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "io/gf_packing_cache.h"
 #include "particles/gf_packing.h"
 #include "scenes/gf_measure.h"
 #include "scenes/gf_scene.h"
+#include "scenes/gf_scene_box.h"
+#include "scenes/gf_scene_deposit.h"
+#include "scenes/gf_scene_settle.h"
 
 static const gf_param_info silo_params[] = {
     {"width_x_over_d", "1", 25.0, 4.0, 400.0, "box width Lx / d along x (thesis: 25)"},
@@ -125,30 +127,27 @@ static const char *silo_check(const gf_run_spec *s, char *why, size_t n)
 static gf_status silo_build(gf_sim *sim, const gf_run_spec *spec)
 {
     gf_ctx *ctx = gf_sim_ctx(sim);
-    gf_particles *p = gf_sim_particles(sim);
     char why[256];
     if (silo_check(spec, why, sizeof why))
         return GF_FAIL(ctx, GF_ERR_CONFIG, "scene silo: %s", why);
     const silo_geom g = geometry(spec);
     const double d = g.d, gr = spec->gravity_m_s2;
-    double lo[3] = {0.0, -BOX_BELOW_OVER_D * d, 0.0}, hi[3] = {g.Lx, g.Lz_box, g.Ly}, grav[3] = {0, -gr, 0};
-    GF_TRY(gf_sim_set_box(sim, lo, hi, (const int[3]){0, 0, 0}));
-    GF_TRY(gf_sim_set_gravity(sim, grav));
-    const double planes[6][6] = {{0, 0, 0, 0, 1, 0},    {0, g.Lz_box, 0, 0, -1, 0}, {0, 0, 0, 1, 0, 0},
-                                 {g.Lx, 0, 0, -1, 0, 0}, {0, 0, 0, 0, 0, 1},        {0, 0, g.Ly, 0, 0, -1}};
-    for (int w = 0; w < 6; ++w) /* the floor is wall 0 (FLOOR_WALL) */
-        GF_TRY(gf_sim_add_wall(sim, planes[w], planes[w] + 3, spec->contact.wall_friction, NULL));
+    const double lo[3] = {0.0, -BOX_BELOW_OVER_D * d, 0.0}, hi[3] = {g.Lx, g.Lz_box, g.Ly};
+    GF_TRY(gf_scene_box_under_gravity(sim, lo, hi, (const int[3]){0, 0, 0}, gr));
+    const double mu = spec->contact.wall_friction;
+    const gf_scene_plane walls[] = {
+        [FLOOR_WALL] = {{0, 0, 0}, {0, 1, 0}, mu}, {{0, g.Lz_box, 0}, {0, -1, 0}, mu},
+        {{0, 0, 0}, {1, 0, 0}, mu},                {{g.Lx, 0, 0}, {-1, 0, 0}, mu},
+        {{0, 0, 0}, {0, 0, 1}, mu},                {{0, 0, g.Ly}, {0, 0, -1}, mu},
+    };
+    GF_TRY(gf_scene_add_planes(sim, 6, walls));
     gf_packing_spec ps = {.lo_m = {0, 0, 0}, .hi_m = {g.Lx, g.H, g.Ly}, .periodic = {0, 0, 0}, .walls_x = 1,
                           .walls_z = 1, .phi_target = NAN, .free_pour = 1, .mu_natural = spec->contact.friction,
                           .psd = {0.5 * d, spec->grains.polydispersity}, .density_kg_m3 = spec->grains.density_kg_m3,
                           .gravity_m_s2 = gr, .seed = spec->seed};
     gf_packing_result pr;
-    GF_TRY(gf_packing_build_cached(ctx, &ps, gf_sim_preparation_dir(sim), p, &pr));
-    gf_log(ctx, GF_LOG_INFO, "silo: %zu grains poured to H = %.1f d (Phi %.3f), %.1f s%s", pr.n_grains, g.H / d,
-           pr.phi_local, pr.cpu_s, pr.reused ? " (read back from the preparations)" : "");
-    long steps = (long)ceil(gf_run_spec_param(spec, "settle_time_nd", 20.0) * sqrt(d / gr) / gf_run_spec_dt_s(spec));
-    if (steps > 0)
-        GF_TRY(gf_sim_advance(sim, steps));
+    GF_TRY(gf_scene_deposit(sim, &ps, &pr));
+    GF_TRY(gf_scene_settle(sim, spec, gf_run_spec_param(spec, "settle_time_nd", 20.0)));
     gf_sim_reset_clock(sim);
     /* t = 0: the orifice opens (here rather than in start(), which a restart
      * skips: a restarted run rebuilds the scene and must find the hole open) */
