@@ -63,8 +63,9 @@ static gf_status save_held(const gf_unresolved *c, gf_restart *r)
     return st;
 }
 
-gf_status gf_unresolved_save(const gf_unresolved *c, gf_restart *r)
+gf_status gf_unresolved_save(const gf_coupling *cc, gf_restart *r)
 {
+    const gf_unresolved *c = (const gf_unresolved *)cc;
     const gf_fluid *f = c->fluid;
     const gf_grid *g = &f->grid;
     const gf_coupling_stats *s = &c->stats;
@@ -109,8 +110,9 @@ static gf_status load_held(gf_unresolved *c, gf_restart *r)
     return st;
 }
 
-gf_status gf_unresolved_load(gf_unresolved *c, gf_restart *r)
+gf_status gf_unresolved_load(gf_coupling *cc, gf_restart *r)
 {
+    gf_unresolved *c = (gf_unresolved *)cc;
     gf_fluid *f = c->fluid;
     const gf_grid *g = &f->grid;
     gf_coupling_stats *s = &c->stats;
