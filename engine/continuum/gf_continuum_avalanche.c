@@ -2,7 +2,6 @@
 #include "continuum/gf_continuum_avalanche.h"
 
 #include <math.h>
-#include <stdio.h>
 #include <string.h>
 
 #include "core/gf_groups.h"
@@ -102,15 +101,9 @@ static gf_status open_diagnostics(gf_ctx *ctx, const gf_run_spec *spec, const av
                           .grain_density_kg_m3 = spec->grains.density_kg_m3,
                           .gravity_m_s2 = spec->gravity_m_s2,
                           .slope_sin = sin(ag->layer.incline_rad)};
-    gf_scales scales;
-    GF_TRY(gf_groups_compute(ctx, &in, &scales));
-    gf_nc_meta meta = {.spec = spec, .scales = &scales, .resolved_yaml = yaml, .fluid_model = "none",
-                       .fluid_model_reason = "method: continuum (dry)", .stages = "continuum",
-                       .incline_deg = ag->theta_deg, .phi_initial_measured = ag->layer.phi,
-                       .phi_initial_local = ag->layer.phi};
-    char path[4200];
-    snprintf(path, sizeof path, "%s/diagnostics.nc", dir);
-    return gf_nc_diagnostics_open(ctx, path, &meta, avalanche_diag, 5, w);
+    gf_nc_meta meta = {.spec = spec, .resolved_yaml = yaml, .incline_deg = ag->theta_deg,
+                       .phi_initial_measured = ag->layer.phi, .phi_initial_local = ag->layer.phi};
+    return gf_continuum_diagnostics_open(ctx, &in, meta, dir, avalanche_diag, 5, w);
 }
 
 /* The record of avalanche_diag (a gf_continuum_sampler; user: the avalanche_geom). */

@@ -2,7 +2,6 @@
 #include "continuum/gf_continuum_collapse.h"
 
 #include <math.h>
-#include <stdio.h>
 #include <string.h>
 
 #include "continuum/gf_continuum.h"
@@ -115,15 +114,10 @@ static gf_status open_diagnostics(gf_ctx *ctx, const gf_run_spec *spec, const co
     gf_groups_input in = {.diameter_m = cg->D, .grain_density_kg_m3 = spec->grains.density_kg_m3,
                           .gravity_m_s2 = cg->g, .slope_sin = 1.0, .column_height_m = cg->H0,
                           .column_length_m = cg->R0};
-    gf_scales scales;
-    GF_TRY(gf_groups_compute(ctx, &in, &scales));
-    gf_nc_meta meta = {.spec = spec, .scales = &scales, .resolved_yaml = yaml, .fluid_model = "none",
-                       .fluid_model_reason = "method: continuum (dry)", .stages = "continuum",
-                       .column_length_m = cg->R0, .column_height_m = cg->H0, .incline_deg = 90.0,
-                       .phi_initial_measured = spec->continuum.phi, .phi_initial_local = spec->continuum.phi};
-    char path[4200];
-    snprintf(path, sizeof path, "%s/diagnostics.nc", dir);
-    return gf_nc_diagnostics_open(ctx, path, &meta, collapse_diag, 3, w);
+    gf_nc_meta meta = {.spec = spec, .resolved_yaml = yaml, .column_length_m = cg->R0, .column_height_m = cg->H0,
+                       .incline_deg = 90.0, .phi_initial_measured = spec->continuum.phi,
+                       .phi_initial_local = spec->continuum.phi};
+    return gf_continuum_diagnostics_open(ctx, &in, meta, dir, collapse_diag, 3, w);
 }
 
 typedef struct sample_ctx {
