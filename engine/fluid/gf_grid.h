@@ -65,6 +65,10 @@ static inline int gf_grid_wrap(const gf_grid *g, int d, int m)
     return m < 0 ? m + n : m;
 }
 
+/* The faces of component a on one plane m along a (the two other axes' face counts multiplied), and the
+ * n-th of them, n < gf_grid_plane_faces, x fastest: returns its face index and fills its (i,j,k). */
+size_t gf_grid_plane_faces(const gf_grid *g, int a);
+size_t gf_grid_plane_face(const gf_grid *g, int a, int m, size_t n, int idx[3]);
 /* Copies face 0 onto face n of every periodic axis of component a. */
 void gf_grid_sync_periodic(const gf_grid *g, int a, double *u);
 /* Value of component a at the neighbour of face (i,j,k) one step along d (dir = +-1), with the BCs. */
