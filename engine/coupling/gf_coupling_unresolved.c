@@ -269,22 +269,7 @@ static gf_grid_bc map_bc(gf_fluid_bc b)
     return b == GF_BC_PERIODIC ? GF_GRID_PERIODIC : b == GF_BC_FREE_SLIP ? GF_GRID_FREE_SLIP : GF_GRID_NO_SLIP;
 }
 
-static void unresolved_destroy(gf_coupling *cc)
-{
-    gf_unresolved *c = U(cc);
-    gf_fluid_destroy(&c->fluid);
-    for (int a = 0; a < 3; ++a) {
-        free(c->uc[a]);
-        free(c->gp[a]);
-    }
-    for (int v = 0; v < FLD_N; ++v)
-        free(c->fields[v]);
-    free(c->lanes);
-    free(c->kern);
-    free(c->held);
-    free(c->mean_v);
-    free(c);
-}
+static void unresolved_destroy(gf_coupling *cc);
 
 static gf_status unresolved_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_coupling_setup *setup,
                                    gf_coupling **out)
@@ -382,6 +367,23 @@ static void unresolved_set_threads(gf_coupling *cc, int n_threads)
 {
     gf_unresolved *c = U(cc);
     c->n_threads = n_threads > 1 ? n_threads : 1;
+}
+
+static void unresolved_destroy(gf_coupling *cc)
+{
+    gf_unresolved *c = U(cc);
+    gf_fluid_destroy(&c->fluid);
+    for (int a = 0; a < 3; ++a) {
+        free(c->uc[a]);
+        free(c->gp[a]);
+    }
+    for (int v = 0; v < FLD_N; ++v)
+        free(c->fields[v]);
+    free(c->lanes);
+    free(c->kern);
+    free(c->held);
+    free(c->mean_v);
+    free(c);
 }
 
 gf_status gf_unresolved_reserve(gf_unresolved *c, size_t n)
