@@ -268,15 +268,10 @@ static double mean_coefficient(const gf_grid *g, const double *const a[3])
     double s = 0.0;
     size_t cnt = 0;
     for (int d = 0; d < 3; ++d)
-        for (int k = 0; k < g->nf[d][2]; ++k)
-            for (int j = 0; j < g->nf[d][1]; ++j)
-                for (int i = 0; i < g->nf[d][0]; ++i) {
-                    int idx[3] = {i, j, k};
-                    if (!gf_grid_face_free(g, d, idx[d]))
-                        continue;
-                    s += a[d][gf_grid_face(g, d, i, j, k)];
-                    ++cnt;
-                }
+        GF_GRID_FOR_FREE_FACES(g, d, fi, i, j, k) {
+            s += a[d][fi];
+            ++cnt;
+        }
     return cnt ? s / (double)cnt : 1.0;
 }
 
