@@ -82,9 +82,9 @@ static gf_status save_held(const gf_unresolved *c, gf_restart *r)
     return st;
 }
 
-gf_status gf_unresolved_save(const gf_coupling *cc, gf_restart *r)
+gf_status gf_unresolved_save(const gf_coupling *base, gf_restart *r)
 {
-    const gf_unresolved *c = (const gf_unresolved *)cc;
+    const gf_unresolved *c = (const gf_unresolved *)base;
     const gf_fluid *f = c->fluid;
     const gf_grid *g = &f->grid;
     const gf_coupling_stats *s = &c->stats;
@@ -125,9 +125,9 @@ static gf_status load_held(gf_unresolved *c, gf_restart *r)
     return st;
 }
 
-gf_status gf_unresolved_load(gf_coupling *cc, gf_restart *r)
+gf_status gf_unresolved_load(gf_coupling *base, gf_restart *r)
 {
-    gf_unresolved *c = (gf_unresolved *)cc;
+    gf_unresolved *c = (gf_unresolved *)base;
     gf_coupling_stats *s = &c->stats;
     if (!gf_restart_has(r, "coupling_counts"))
         return GF_FAIL(c->ctx, GF_ERR_CONFIG,

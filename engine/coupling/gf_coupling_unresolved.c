@@ -117,7 +117,6 @@
 static gf_unresolved *U(gf_coupling *c) { return (gf_unresolved *)c; }
 static const gf_unresolved *CU(const gf_coupling *c) { return (const gf_unresolved *)c; }
 
-
 static const gf_var_info field_vars[FLD_N] = {
     {"fluid_fraction", "1", "fluid volume fraction (kernel-averaged)", NULL},
     {"u_fluid", "m s-1", "fluid velocity along x (interstitial, cell-centred)", NULL},
@@ -250,9 +249,9 @@ static void pressure_reference_axis(gf_unresolved *c)
     }
 }
 
-static gf_status unresolved_set_gravity(gf_coupling *cc, const double g[3])
+static gf_status unresolved_set_gravity(gf_coupling *base, const double g[3])
 {
-    gf_unresolved *c = U(cc);
+    gf_unresolved *c = U(base);
     for (int d = 0; d < 3; ++d)
         if (!isfinite(g[d]))
             return GF_FAIL(c->ctx, GF_ERR_ARG, "coupling: gravity component %d is not finite", d);
@@ -269,7 +268,7 @@ static gf_grid_bc map_bc(gf_fluid_bc b)
     return b == GF_BC_PERIODIC ? GF_GRID_PERIODIC : b == GF_BC_FREE_SLIP ? GF_GRID_FREE_SLIP : GF_GRID_NO_SLIP;
 }
 
-static void unresolved_destroy(gf_coupling *cc);
+static void unresolved_destroy(gf_coupling *base);
 
 static gf_status unresolved_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_coupling_setup *setup,
                                    gf_coupling **out)
@@ -363,15 +362,15 @@ static gf_status unresolved_create(gf_ctx *ctx, const gf_run_spec *spec, const g
     return GF_OK;
 }
 
-static void unresolved_set_threads(gf_coupling *cc, int n_threads)
+static void unresolved_set_threads(gf_coupling *base, int n_threads)
 {
-    gf_unresolved *c = U(cc);
+    gf_unresolved *c = U(base);
     c->n_threads = n_threads > 1 ? n_threads : 1;
 }
 
-static void unresolved_destroy(gf_coupling *cc)
+static void unresolved_destroy(gf_coupling *base)
 {
-    gf_unresolved *c = U(cc);
+    gf_unresolved *c = U(base);
     gf_fluid_destroy(&c->fluid);
     for (int a = 0; a < 3; ++a) {
         free(c->uc[a]);
@@ -511,9 +510,9 @@ static double pore_pressure_limit(const gf_unresolved *c, const gf_particles *p)
     return PORE_PRESSURE_TAU_FACTOR * tau;
 }
 
-static double unresolved_dt_max_s(const gf_coupling *cc, const gf_particles *p)
+static double unresolved_dt_max_s(const gf_coupling *base, const gf_particles *p)
 {
-    const gf_unresolved *c = CU(cc);
+    const gf_unresolved *c = CU(base);
     double cfl = c->spec.fluid.cfl, h = min_cell(c);
     double rate = advective_rate(c);
     double dt = rate > 0.0 ? cfl / rate : 1e30;
@@ -715,9 +714,9 @@ static void fix_mixture_momentum(gf_unresolved *c, const gf_particles *p)
     }
 }
 
-static gf_status unresolved_fluid_step(gf_coupling *cc, const gf_particles *p, double dt_s)
+static gf_status unresolved_fluid_step(gf_coupling *base, const gf_particles *p, double dt_s)
 {
-    gf_unresolved *c = U(cc);
+    gf_unresolved *c = U(base);
     gf_ctx *ctx = c->ctx;
     double t0 = gf_wtime();
     gf_fluid *f = c->fluid;
@@ -729,12 +728,12 @@ static gf_status unresolved_fluid_step(gf_coupling *cc, const gf_particles *p, d
     if (rate * dt_s > 1.0)
         return GF_FAIL(ctx, GF_ERR_NUMERIC, "fluid step dt = %.3g s exceeds the advective CFL stability limit %.3g s "
                        "(CFL number %.2f > 1); take dt <= gf_coupling_dt_max_s = %.3g s", dt_s, 1.0 / rate,
-                       rate * dt_s, unresolved_dt_max_s(cc, p));
+                       rate * dt_s, unresolved_dt_max_s(base, p));
     double vmax = grain_speed_max(p), h = min_cell(c);
     if (vmax * dt_s > h)
         return GF_FAIL(ctx, GF_ERR_NUMERIC, "fluid step dt = %.3g s lets grains move %.2f cells (|v|max = %.3g m/s, "
                        "limit 1 cell); take dt <= gf_coupling_dt_max_s = %.3g s", dt_s, vmax * dt_s / h, vmax,
-                       unresolved_dt_max_s(cc, p));
+                       unresolved_dt_max_s(base, p));
     GF_TRY(gf_unresolved_reserve(c, p->n_local));
 
     /* 1. fluid fraction from the grains as they are now */
@@ -794,7 +793,7 @@ static gf_status unresolved_fluid_step(gf_coupling *cc, const gf_particles *p, d
     fix_mixture_momentum(c, p);
     if (gf_fluid_nonfinite(f))
         return GF_FAIL(ctx, GF_ERR_NUMERIC, "fluid state became non-finite after a step of %.3g s (CFL number %.2f, "
-                       "dt_max %.3g s)", dt_s, rate * dt_s, unresolved_dt_max_s(cc, p));
+                       "dt_max %.3g s)", dt_s, rate * dt_s, unresolved_dt_max_s(base, p));
 
     /* 4. held fluid velocity and non-drag forces at each grain */
     cell_fields(c);
@@ -867,25 +866,25 @@ static void add_held_force(const gf_unresolved *c, held_grain *hg, gf_particles 
         *f[a] += K * (hg->uf[a] - v[a]) + phi1 * hg->f_other_N[a] + (phi1 - 1.0) * (*f[a] + m * c->setup.gravity_m_s2[a]);
 }
 
-static int unresolved_forces_in_order(const gf_coupling *cc, const gf_particles *p)
+static int unresolved_forces_in_order(const gf_coupling *base, const gf_particles *p)
 {
-    const gf_unresolved *c = CU(cc);
+    const gf_unresolved *c = CU(base);
     return c->first_step ||
            (c->held_epoch_known && c->held_epoch == p->order_epoch && c->n_held == p->n_local);
 }
 
-static void unresolved_add_forces_range(gf_coupling *cc, gf_particles *p, size_t i0, size_t i1)
+static void unresolved_add_forces_range(gf_coupling *base, gf_particles *p, size_t i0, size_t i1)
 {
-    gf_unresolved *c = U(cc);
+    gf_unresolved *c = U(base);
     if (c->first_step)
         return;
     for (size_t i = i0; i < i1; ++i)
         add_held_force(c, &c->held[i], p, i);
 }
 
-static gf_status unresolved_add_forces(gf_coupling *cc, gf_particles *p)
+static gf_status unresolved_add_forces(gf_coupling *base, gf_particles *p)
 {
-    gf_unresolved *c = U(cc);
+    gf_unresolved *c = U(base);
     if (c->first_step)
         return GF_OK;  /* no fluid step yet: the fluid is at rest and hydrostatic, nothing held */
     int reordered = p->n_local != c->n_held;
@@ -930,9 +929,9 @@ static gf_status unresolved_add_forces(gf_coupling *cc, gf_particles *p)
 
 /* --- probes and outputs ----------------------------------------------------------------------------- */
 
-static double unresolved_excess_pressure_Pa(const gf_coupling *cc, const double x_m[3])
+static double unresolved_excess_pressure_Pa(const gf_coupling *base, const double x_m[3])
 {
-    const gf_unresolved *c = CU(cc);
+    const gf_unresolved *c = CU(base);
     const gf_grid *g = &c->fluid->grid;
     int i0[3];
     double t[3];
@@ -967,10 +966,10 @@ static double unresolved_excess_pressure_Pa(const gf_coupling *cc, const double 
     return v;
 }
 
-static int unresolved_fields(const gf_coupling *cc, int n_cells[3], double lo_m[3], double cell_m[3],
+static int unresolved_fields(const gf_coupling *base, int n_cells[3], double lo_m[3], double cell_m[3],
                              const gf_var_info **vars, const double *const **fields)
 {
-    const gf_unresolved *c = CU(cc);
+    const gf_unresolved *c = CU(base);
     const gf_grid *g = &c->fluid->grid;
     for (int d = 0; d < 3; ++d) {
         n_cells[d] = g->n[d];
@@ -982,9 +981,9 @@ static int unresolved_fields(const gf_coupling *cc, int n_cells[3], double lo_m[
     return FLD_N;
 }
 
-static double unresolved_fluid_flow_rate(const gf_coupling *cc)
+static double unresolved_fluid_flow_rate(const gf_coupling *base)
 {
-    const gf_unresolved *c = CU(cc);
+    const gf_unresolved *c = CU(base);
     const gf_grid *g = &c->fluid->grid;
     double s = 0.0, vc = g->h_m[0] * g->h_m[1] * g->h_m[2];
     for (size_t cc = 0; cc < g->n_cells; ++cc)
@@ -992,9 +991,9 @@ static double unresolved_fluid_flow_rate(const gf_coupling *cc)
     return s / (g->h_m[0] * g->n[0]);
 }
 
-static double unresolved_fluid_mass_kg(const gf_coupling *cc)
+static double unresolved_fluid_mass_kg(const gf_coupling *base)
 {
-    const gf_unresolved *c = CU(cc);
+    const gf_unresolved *c = CU(base);
     const gf_grid *g = &c->fluid->grid;
     double s = 0.0;
     for (size_t cc = 0; cc < g->n_cells; ++cc)
