@@ -65,24 +65,24 @@ static double parabola_average(double s0, double s1)
 static void set_inflow(gf_continuum *s, int a, int m)
 {
     const gf_grid *g = &s->g;
-    for (int k = 0; k < g->nf[a][2]; ++k)
-        for (int j = 0; j < g->nf[a][1]; ++j)
-            for (int i = 0; i < g->nf[a][0]; ++i) {
-                int idx[3] = {i, j, k};
-                if (idx[a] != m)
-                    continue;
-                double v = s->p.inflow_umax_m_s;
-                for (int d = 0; d < 3; ++d)
-                    if (d != a && bounded_by_wall(&s->p, d))
-                        v *= parabola_average((double)idx[d] / g->n[d], (double)(idx[d] + 1) / g->n[d]);
-                s->u[a][gf_grid_face(g, a, i, j, k)] = v;
-            }
+    for (size_t n = 0; n < gf_grid_plane_faces(g, a); ++n) {
+        int idx[3];
+        size_t q = gf_grid_plane_face(g, a, m, n, idx);
+        double v = s->p.inflow_umax_m_s;
+        for (int d = 0; d < 3; ++d)
+            if (d != a && bounded_by_wall(&s->p, d))
+                v *= parabola_average((double)idx[d] / g->n[d], (double)(idx[d] + 1) / g->n[d]);
+        s->u[a][q] = v;
+    }
 }
 
 static gf_status map_unknowns(gf_continuum *s)
 {
     const gf_grid *g = &s->g;
     int count = 0;
+    s->unknown_face = malloc((g->n_faces[0] + g->n_faces[1] + g->n_faces[2]) * sizeof *s->unknown_face);
+    if (!s->unknown_face)
+        return GF_FAIL(s->ctx, GF_ERR_NOMEM, "continuum: unknown map");
     for (int a = 0; a < s->n_comp; ++a) {
         s->unknown[a] = malloc(g->n_faces[a] * sizeof(int));
         if (!s->unknown[a])
@@ -95,7 +95,10 @@ static gf_status map_unknowns(gf_continuum *s)
                                                    : (m >= 1 && m <= n - 1) ||
                                                          (m == 0 && s->p.side[a][0] == GF_SIDE_OUTFLOW) ||
                                                          (m == n && s->p.side[a][1] == GF_SIDE_OUTFLOW);
-                    s->unknown[a][gf_grid_face(g, a, i, j, k)] = free_face ? count++ : -1;
+                    size_t q = gf_grid_face(g, a, i, j, k);
+                    s->unknown[a][q] = free_face ? count : -1;
+                    if (free_face)
+                        s->unknown_face[count++] = (gf_unknown_face){a, {i, j, k}, q};
                 }
     }
     s->n_unknowns = count;
@@ -201,7 +204,7 @@ void gf_continuum_destroy(gf_continuum **ps)
         free(s->rho_face[a]);
     }
     free(s->p_cell), free(s->div_cell), free(s->eta_cell), free(s->strain_cell), free(s->diag_cell);
-    free(s->rhs), free(s->x), free(s->c_cell), free(s->c_new), free(s->c_start);
+    free(s->rhs), free(s->x), free(s->c_cell), free(s->c_new), free(s->c_start), free(s->unknown_face);
     gf_cont_lu_destroy(&s->lu_p);
     gf_cont_poisson_destroy(&s->poisson);
     gf_cont_lu_destroy(&s->lu);

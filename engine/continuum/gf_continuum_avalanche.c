@@ -2,7 +2,6 @@
 #include "continuum/gf_continuum_avalanche.h"
 
 #include <math.h>
-#include <stdio.h>
 #include <string.h>
 
 #include "core/gf_groups.h"
@@ -95,24 +94,6 @@ static double end_time_s(const gf_run_spec *spec, const avalanche_geom *ag)
     return (spec->end_time_nd > 0.0 ? spec->end_time_nd : 200.0) * ag->t_grain;
 }
 
-static gf_status open_diagnostics(gf_ctx *ctx, const gf_run_spec *spec, const avalanche_geom *ag, const char *dir,
-                                  const char *yaml, gf_nc_writer **w)
-{
-    gf_groups_input in = {.diameter_m = spec->grains.diameter_m,
-                          .grain_density_kg_m3 = spec->grains.density_kg_m3,
-                          .gravity_m_s2 = spec->gravity_m_s2,
-                          .slope_sin = sin(ag->layer.incline_rad)};
-    gf_scales scales;
-    GF_TRY(gf_groups_compute(ctx, &in, &scales));
-    gf_nc_meta meta = {.spec = spec, .scales = &scales, .resolved_yaml = yaml, .fluid_model = "none",
-                       .fluid_model_reason = "method: continuum (dry)", .stages = "continuum",
-                       .incline_deg = ag->theta_deg, .phi_initial_measured = ag->layer.phi,
-                       .phi_initial_local = ag->layer.phi};
-    char path[4200];
-    snprintf(path, sizeof path, "%s/diagnostics.nc", dir);
-    return gf_nc_diagnostics_open(ctx, path, &meta, avalanche_diag, 5, w);
-}
-
 /* The record of avalanche_diag (a gf_continuum_sampler; user: the avalanche_geom). */
 static void sample(const gf_continuum *s, void *user, double *v)
 {
@@ -126,16 +107,24 @@ static void sample(const gf_continuum *s, void *user, double *v)
     v[4] = u_top;
 }
 
-static gf_status run_steps(gf_ctx *ctx, const gf_run_spec *spec, const avalanche_geom *ag, gf_continuum *s,
-                           gf_nc_writer *w, volatile int *interrupt, gf_continuum_avalanche_result *r)
+static const gf_continuum_diagnostics avalanche_diagnostics = {avalanche_diag, 5, sample};
+
+/* The layer on its incline as a continuum scene (a gf_continuum_describe; user: the avalanche_geom filled). */
+static gf_status describe(gf_ctx *ctx, const gf_run_spec *spec, void *user, gf_continuum_scene *sc)
 {
-    double v[5];
-    GF_TRY(gf_continuum_run_until(ctx, s, end_time_s(spec, ag), spec->output.interval_nd * ag->t_grain, w,
-                                  sample, (void *)ag, interrupt, "continuum avalanche", &r->steps));
-    sample(s, (void *)ag, v);
-    r->flow_rate_m3_s = v[0];
-    r->surface_velocity_m_s = v[4];
-    r->time_s = gf_continuum_time(s);
+    (void)ctx;
+    avalanche_geom *ag = user;
+    geometry(spec, ag);
+    sc->what = "continuum avalanche";
+    sc->params = gf_continuum_layer_params(&ag->layer);
+    sc->t_end_s = end_time_s(spec, ag);
+    sc->groups = (gf_groups_input){.diameter_m = spec->grains.diameter_m,
+                                   .grain_density_kg_m3 = spec->grains.density_kg_m3,
+                                   .gravity_m_s2 = spec->gravity_m_s2,
+                                   .slope_sin = sin(ag->layer.incline_rad)};
+    sc->meta = (gf_nc_meta){.incline_deg = ag->theta_deg, .phi_initial_measured = ag->layer.phi,
+                            .phi_initial_local = ag->layer.phi};
+    sc->diagnostics = avalanche_diagnostics;
     return GF_OK;
 }
 
@@ -144,23 +133,17 @@ gf_status gf_continuum_avalanche_run(gf_ctx *ctx, const gf_run_spec *spec, const
                                      gf_continuum_avalanche_result *r)
 {
     memset(r, 0, sizeof *r);
-    GF_TRY(gf_run_spec_check_method(ctx, spec));
     avalanche_geom ag;
-    geometry(spec, &ag);
-    gf_continuum_params p = gf_continuum_layer_params(&ag.layer);
+    const gf_continuum_output out = {output_dir, resolved_yaml, interrupt};
     gf_continuum *s = NULL;
-    GF_TRY(gf_continuum_create(ctx, &p, &s));
-    gf_nc_writer *w = NULL;
-    gf_status st = gf_continuum_init_pressure(s);
-    if (st == GF_OK)
-        st = output_dir ? open_diagnostics(ctx, spec, &ag, output_dir, resolved_yaml, &w) : GF_OK;
-    if (st == GF_OK)
-        st = run_steps(ctx, spec, &ag, s, w, interrupt, r);
-    if (st == GF_OK)
-        st = gf_nc_writer_close(&w);
-    gf_nc_writer_abort(&w);
+    GF_TRY(gf_continuum_scene_run(ctx, spec, describe, &ag, &out, &s, &r->steps));
+    double v[5];
+    sample(s, &ag, v);
+    r->flow_rate_m3_s = v[0];
+    r->surface_velocity_m_s = v[4];
+    r->time_s = gf_continuum_time(s);
     gf_continuum_destroy(&s);
-    return st;
+    return GF_OK;
 }
 
 void gf_continuum_avalanche_size(const gf_run_spec *spec, double *cells, double *steps)

@@ -2,7 +2,6 @@
 #include "continuum/gf_continuum_collapse.h"
 
 #include <math.h>
-#include <stdio.h>
 #include <string.h>
 
 #include "continuum/gf_continuum.h"
@@ -109,44 +108,55 @@ static void measure(const gf_continuum *s, const collapse_geom *cg, double phi, 
     }
 }
 
-static gf_status open_diagnostics(gf_ctx *ctx, const gf_run_spec *spec, const collapse_geom *cg, const char *dir,
-                                  const char *yaml, gf_nc_writer **w)
-{
-    gf_groups_input in = {.diameter_m = cg->D, .grain_density_kg_m3 = spec->grains.density_kg_m3,
-                          .gravity_m_s2 = cg->g, .slope_sin = 1.0, .column_height_m = cg->H0,
-                          .column_length_m = cg->R0};
-    gf_scales scales;
-    GF_TRY(gf_groups_compute(ctx, &in, &scales));
-    gf_nc_meta meta = {.spec = spec, .scales = &scales, .resolved_yaml = yaml, .fluid_model = "none",
-                       .fluid_model_reason = "method: continuum (dry)", .stages = "continuum",
-                       .column_length_m = cg->R0, .column_height_m = cg->H0, .incline_deg = 90.0,
-                       .phi_initial_measured = spec->continuum.phi, .phi_initial_local = spec->continuum.phi};
-    char path[4200];
-    snprintf(path, sizeof path, "%s/diagnostics.nc", dir);
-    return gf_nc_diagnostics_open(ctx, path, &meta, collapse_diag, 3, w);
-}
+/* The run's state: the geometry, the solid fraction and the deposit's volume per unit width at t = 0. */
+typedef struct collapse_run {
+    collapse_geom cg;
+    double phi, volume0_m2;
+} collapse_run;
 
-typedef struct sample_ctx {
-    const collapse_geom *cg;
-    double phi;
-} sample_ctx;
-
-/* front_position, deposit_height, packing_fraction */
+/* front_position, deposit_height, packing_fraction (a gf_continuum_sampler; user: the collapse_run) */
 static void sample_record(const gf_continuum *s, void *user, double *values)
 {
-    const sample_ctx *sc = user;
+    const collapse_run *cr = user;
     double front, height, volume, height_max;
-    measure(s, sc->cg, sc->phi, &front, &height, &volume, &height_max);
-    values[0] = front, values[1] = height_max, values[2] = sc->phi;
+    measure(s, &cr->cg, cr->phi, &front, &height, &volume, &height_max);
+    values[0] = front, values[1] = height_max, values[2] = cr->phi;
 }
 
-static gf_status run_steps(gf_ctx *ctx, const gf_run_spec *spec, const collapse_geom *cg, gf_continuum *s,
-                           gf_nc_writer *w, volatile int *interrupt, gf_continuum_collapse_result *r)
+static const gf_continuum_diagnostics collapse_diagnostics = {collapse_diag, 3, sample_record};
+
+/* The column R0 x H0 against the back wall, and its volume (user: the collapse_run). */
+static void fill_column(gf_continuum *s, void *user)
 {
-    sample_ctx sc = {cg, spec->continuum.phi};
-    GF_TRY(gf_continuum_run_until(ctx, s, end_time_s(spec, cg), spec->output.interval_nd * cg->t_grain, w,
-                                  sample_record, &sc, interrupt, "continuum collapse", &r->steps));
-    r->time_s = gf_continuum_time(s);
+    collapse_run *cr = user;
+    const gf_grid *g = gf_continuum_grid(s);
+    double *c = gf_continuum_fraction(s);
+    for (int j = 0; j < g->n[1]; ++j)
+        for (int i = 0; i < g->n[0]; ++i)
+            c[gf_grid_cell(g, i, j, 0)] =
+                ((i + 0.5) * g->h_m[0] < cr->cg.R0 && (j + 0.5) * g->h_m[1] < cr->cg.H0) ? 1.0 : 0.0;
+    double front0, height0;
+    measure(s, &cr->cg, cr->phi, &front0, &height0, &cr->volume0_m2, NULL);
+}
+
+/* The column in its box as a continuum scene (a gf_continuum_describe; user: the collapse_run filled).
+ * Errors: the spec's scene is not a column. */
+static gf_status describe(gf_ctx *ctx, const gf_run_spec *spec, void *user, gf_continuum_scene *sc)
+{
+    collapse_run *cr = user;
+    const collapse_geom *cg = &cr->cg;
+    GF_TRY(geometry(ctx, spec, &cr->cg));
+    cr->phi = spec->continuum.phi;
+    sc->what = "continuum collapse";
+    sc->params = solver_params(spec, cg);
+    sc->fill = fill_column;
+    sc->t_end_s = end_time_s(spec, cg);
+    sc->groups = (gf_groups_input){.diameter_m = cg->D, .grain_density_kg_m3 = spec->grains.density_kg_m3,
+                                   .gravity_m_s2 = cg->g, .slope_sin = 1.0, .column_height_m = cg->H0,
+                                   .column_length_m = cg->R0};
+    sc->meta = (gf_nc_meta){.column_length_m = cg->R0, .column_height_m = cg->H0, .incline_deg = 90.0,
+                            .phi_initial_measured = cr->phi, .phi_initial_local = cr->phi};
+    sc->diagnostics = collapse_diagnostics;
     return GF_OK;
 }
 
@@ -155,37 +165,19 @@ gf_status gf_continuum_collapse_run(gf_ctx *ctx, const gf_run_spec *spec, const 
                                     gf_continuum_collapse_result *r)
 {
     memset(r, 0, sizeof *r);
-    GF_TRY(gf_run_spec_check_method(ctx, spec));
-    collapse_geom cg;
-    GF_TRY(geometry(ctx, spec, &cg));
-    gf_continuum_params p = solver_params(spec, &cg);
+    collapse_run cr;
+    const gf_continuum_output out = {output_dir, resolved_yaml, interrupt};
     gf_continuum *s = NULL;
-    GF_TRY(gf_continuum_create(ctx, &p, &s));
-    const gf_grid *g = gf_continuum_grid(s);
-    double *c = gf_continuum_fraction(s);
-    for (int j = 0; j < g->n[1]; ++j)
-        for (int i = 0; i < g->n[0]; ++i)
-            c[gf_grid_cell(g, i, j, 0)] = ((i + 0.5) * g->h_m[0] < cg.R0 && (j + 0.5) * g->h_m[1] < cg.H0) ? 1.0 : 0.0;
-    gf_status st = gf_continuum_init_pressure(s);
-    double front0, height0, volume0;
-    measure(s, &cg, spec->continuum.phi, &front0, &height0, &volume0, NULL);
-    gf_nc_writer *w = NULL;
-    if (st == GF_OK && output_dir)
-        st = open_diagnostics(ctx, spec, &cg, output_dir, resolved_yaml, &w);
-    if (st == GF_OK)
-        st = run_steps(ctx, spec, &cg, s, w, interrupt, r);
-    if (st == GF_OK) {
-        double volume;
-        measure(s, &cg, spec->continuum.phi, &r->front_m, &r->height_m, &volume, NULL);
-        r->mass_drift = volume / volume0 - 1.0;
-        r->body_front_m = gf_continuum_collapse_extent(s, 2.0 * cg.D);
-        r->column_length_m = cg.R0;
-        r->column_height_m = cg.H0;
-        st = gf_nc_writer_close(&w);
-    }
-    gf_nc_writer_abort(&w);
+    GF_TRY(gf_continuum_scene_run(ctx, spec, describe, &cr, &out, &s, &r->steps));
+    double volume;
+    measure(s, &cr.cg, cr.phi, &r->front_m, &r->height_m, &volume, NULL);
+    r->mass_drift = volume / cr.volume0_m2 - 1.0;
+    r->body_front_m = gf_continuum_collapse_extent(s, 2.0 * cr.cg.D);
+    r->column_length_m = cr.cg.R0;
+    r->column_height_m = cr.cg.H0;
+    r->time_s = gf_continuum_time(s);
     gf_continuum_destroy(&s);
-    return st;
+    return GF_OK;
 }
 
 gf_status gf_continuum_collapse_size(gf_ctx *ctx, const gf_run_spec *spec, double *cells, double *steps)

@@ -6,6 +6,12 @@
 #include "continuum/gf_cont_poisson.h"
 #include "continuum/gf_continuum.h"
 
+/* One unknown velocity face of the implicit system: component a's face q at index idx. */
+typedef struct gf_unknown_face {
+    int a, idx[3];
+    size_t q;
+} gf_unknown_face;
+
 struct gf_continuum {
     gf_ctx *ctx;
     gf_continuum_params p;
@@ -21,6 +27,8 @@ struct gf_continuum {
     size_t n_edges[3];
     int *unknown[3];       /* face -> unknown index, -1 for a boundary (prescribed) or duplicate face */
     int n_unknowns;
+    gf_unknown_face *unknown_face; /* unknown index -> face, numbered component by component, x fastest:
+                                    * the per-unknown loops (predictor, viscous rows, projection) follow it */
     double *rhs, *x;
     gf_cont_poisson *poisson;
     gf_cont_lu *lu;

@@ -121,18 +121,13 @@ void gf_continuum_advect(gf_continuum *s, double dt)
         s->u_old[a] = tmp;
     }
     /* s->u now holds u^n (read by the stencils), s->u_old receives u* */
-    for (int a = 0; a < s->n_comp; ++a)
-        for (int k = 0; k < g->nf[a][2]; ++k)
-            for (int j = 0; j < g->nf[a][1]; ++j)
-                for (int i = 0; i < g->nf[a][0]; ++i) {
-                    size_t q = gf_grid_face(g, a, i, j, k);
-                    if (s->unknown[a][q] < 0)
-                        continue;
-                    int idx[3] = {i, j, k};
-                    s->u_old[a][q] = s->u[a][q] + dt * (s->p.body_accel_m_s2[a] - convection(s, a, idx, gamma) -
-                                                         gf_continuum_pressure_gradient(s, s->p_cell, a, idx) /
-                                                             gf_continuum_rho(s, a, q));
-                }
+    for (int r = 0; r < s->n_unknowns; ++r) {
+        const gf_unknown_face *f = &s->unknown_face[r];
+        int a = f->a;
+        s->u_old[a][f->q] = s->u[a][f->q] + dt * (s->p.body_accel_m_s2[a] - convection(s, a, f->idx, gamma) -
+                                                   gf_continuum_pressure_gradient(s, s->p_cell, a, f->idx) /
+                                                       gf_continuum_rho(s, a, f->q));
+    }
     for (int a = 0; a < s->n_comp; ++a) {
         double *tmp = s->u[a];
         s->u[a] = s->u_old[a];

@@ -39,9 +39,17 @@ static double val(const gf_continuum *s, int a, int i, int j, int k)
     return gf_continuum_value(s, a, idx);
 }
 
-/* gdot_ab on the edge normal to axis k at idx (face indices along a and b). */
-static double edge_shear(const gf_continuum *s, int a, int b, const int idx[3])
+static void other_axes(int k, int *a, int *b)
 {
+    *a = k == 0 ? 1 : 0;
+    *b = k == 2 ? 1 : 2;
+}
+
+/* gdot_ab on the edge normal to axis k at idx (face indices along a and b). */
+static double edge_shear(const gf_continuum *s, int k, const int idx[3])
+{
+    int a, b;
+    other_axes(k, &a, &b);
     int ea[3] = {0, 0, 0}, eb[3] = {0, 0, 0};
     ea[a] = 1;
     eb[b] = 1;
@@ -50,12 +58,6 @@ static double edge_shear(const gf_continuum *s, int a, int b, const int idx[3])
     double dub_da = (val(s, b, idx[0], idx[1], idx[2]) - val(s, b, idx[0] - ea[0], idx[1] - ea[1], idx[2] - ea[2])) /
                     s->g.h_m[a];
     return dua_db + dub_da;
-}
-
-static void other_axes(int k, int *a, int *b)
-{
-    *a = k == 0 ? 1 : 0;
-    *b = k == 2 ? 1 : 2;
 }
 
 static double pressure_at_cell(const gf_continuum *s, const int idx[3])
@@ -75,17 +77,25 @@ static int n_pairs(const gf_continuum *s)
     return s->n_comp == 3 ? 3 : 1;  /* 2-D: the edges normal to z only */
 }
 
-static void edge_strains(gf_continuum *s)
+/* The normal axis of the kk-th edge family. */
+static int edge_family(const gf_continuum *s, int kk)
+{
+    return s->n_comp == 3 ? kk : 2;
+}
+
+/* A value on the edge normal to axis k at idx. */
+typedef double edge_value_fn(const gf_continuum *s, int k, const int idx[3]);
+
+/* out[k][edge] = value(edge) for every edge of every family, x fastest. */
+static void fill_edges(const gf_continuum *s, double *const out[3], edge_value_fn *value)
 {
     for (int kk = 0; kk < n_pairs(s); ++kk) {
-        int k = s->n_comp == 3 ? kk : 2, a, b;
-        other_axes(k, &a, &b);
-        for (int i2 = 0; i2 < s->ne[k][2]; ++i2)
-            for (int i1 = 0; i1 < s->ne[k][1]; ++i1)
-                for (int i0 = 0; i0 < s->ne[k][0]; ++i0) {
-                    int idx[3] = {i0, i1, i2};
-                    s->e_edge[k][edge_index(s, k, idx)] = edge_shear(s, a, b, idx);
-                }
+        int k = edge_family(s, kk);
+        const int *n = s->ne[k];
+        for (size_t q = 0; q < s->n_edges[k]; ++q) {
+            int idx[3] = {(int)(q % n[0]), (int)(q / n[0] % n[1]), (int)(q / ((size_t)n[0] * n[1]))};
+            out[k][q] = value(s, k, idx);
+        }
     }
 }
 
@@ -108,7 +118,7 @@ static void cell_strains(gf_continuum *s, double *offsq[3])
                 s->diag_cell[c] = diag;
                 double total = diag;
                 for (int kk = 0; kk < n_pairs(s); ++kk) {
-                    int k = s->n_comp == 3 ? kk : 2, a, b;
+                    int a, b, k = edge_family(s, kk);
                     other_axes(k, &a, &b);
                     double avg = 0.0;
                     for (int da = 0; da < 2; ++da)
@@ -125,6 +135,27 @@ static void cell_strains(gf_continuum *s, double *offsq[3])
             }
 }
 
+/* eta on the edge normal to k at idx: its own gdot_ab, the rest of |gdot|^2, the pressure and c from the
+ * four cells around it. */
+static double edge_viscosity(const gf_continuum *s, int k, const int idx[3])
+{
+    int a, b;
+    other_axes(k, &a, &b);
+    double rest = 0.0, pres = 0.0, frac = 0.0;
+    for (int da = -1; da < 1; ++da)
+        for (int db = -1; db < 1; ++db) {
+            int cidx[3] = {idx[0], idx[1], idx[2]};
+            cidx[a] += da;
+            cidx[b] += db;
+            size_t c = gf_continuum_cell_clamped(s, cidx);
+            rest += 0.25 * (s->strain_cell[c] - s->offsq_cell[k][c]);
+            pres += 0.25 * (s->p.pressure_ref_Pa + s->p_cell[c]);
+            frac += 0.25 * s->c_cell[c];
+        }
+    double e = s->e_edge[k][edge_index(s, k, idx)];
+    return viscosity(s, e * e + rest, pres, frac);
+}
+
 void gf_continuum_update_viscosity(gf_continuum *s)
 {
     const gf_grid *g = &s->g;
@@ -136,9 +167,8 @@ void gf_continuum_update_viscosity(gf_continuum *s)
                 s->eta_edge[k][q] = s->p.viscosity_Pa_s;
         return;
     }
-    double **offsq = s->offsq_cell;
-    edge_strains(s);
-    cell_strains(s, offsq);
+    fill_edges(s, s->e_edge, edge_shear);
+    cell_strains(s, s->offsq_cell);
     for (int k2 = 0; k2 < g->n[2]; ++k2)
         for (int j = 0; j < g->n[1]; ++j)
             for (int i = 0; i < g->n[0]; ++i) {
@@ -146,29 +176,7 @@ void gf_continuum_update_viscosity(gf_continuum *s)
                 size_t c = gf_grid_cell(g, i, j, k2);
                 s->eta_cell[c] = viscosity(s, s->strain_cell[c], pressure_at_cell(s, idx), s->c_cell[c]);
             }
-    for (int kk = 0; kk < n_pairs(s); ++kk) {
-        int k = s->n_comp == 3 ? kk : 2, a, b;
-        other_axes(k, &a, &b);
-        for (int i2 = 0; i2 < s->ne[k][2]; ++i2)
-            for (int i1 = 0; i1 < s->ne[k][1]; ++i1)
-                for (int i0 = 0; i0 < s->ne[k][0]; ++i0) {
-                    int idx[3] = {i0, i1, i2};
-                    size_t q = edge_index(s, k, idx);
-                    double rest = 0.0, pres = 0.0, frac = 0.0;
-                    for (int da = -1; da < 1; ++da)
-                        for (int db = -1; db < 1; ++db) {
-                            int cidx[3] = {i0, i1, i2};
-                            cidx[a] += da;
-                            cidx[b] += db;
-                            size_t c = gf_continuum_cell_clamped(s, cidx);
-                            rest += 0.25 * (s->strain_cell[c] - offsq[k][c]);
-                            pres += 0.25 * (s->p.pressure_ref_Pa + s->p_cell[c]);
-                            frac += 0.25 * s->c_cell[c];
-                        }
-                    double e = s->e_edge[k][q];
-                    s->eta_edge[k][q] = viscosity(s, e * e + rest, pres, frac);
-                }
-    }
+    fill_edges(s, s->eta_edge, edge_viscosity);
 }
 
 /* Adds coef * u_comp(idx) to row: the matrix for an unknown face, the right-hand side otherwise. */
@@ -269,28 +277,19 @@ gf_status gf_continuum_viscous(gf_continuum *s, double dt)
     double rho_dt = s->p.density_kg_m3 / dt;
     int newtonian = s->p.rheology == GF_RHEOLOGY_NEWTONIAN && !s->p.two_phase; /* constant matrix */
     gf_cont_lu_clear(s->lu);
-    for (int a = 0; a < s->n_comp; ++a)
-        for (int k = 0; k < g->nf[a][2]; ++k)
-            for (int j = 0; j < g->nf[a][1]; ++j)
-                for (int i = 0; i < g->nf[a][0]; ++i) {
-                    size_t q = gf_grid_face(g, a, i, j, k);
-                    int row = s->unknown[a][q];
-                    if (row < 0)
-                        continue;
-                    int idx[3] = {i, j, k};
-                    double rho_dt_q = s->rho_face[a] ? s->rho_face[a][q] / dt : rho_dt;
-                    s->rhs[row] = rho_dt_q * s->u[a][q];
-                    assemble_row(s, a, idx, row, rho_dt_q);
-                }
+    for (int row = 0; row < s->n_unknowns; ++row) {
+        const gf_unknown_face *f = &s->unknown_face[row];
+        double rho_dt_q = s->rho_face[f->a] ? s->rho_face[f->a][f->q] / dt : rho_dt;
+        s->rhs[row] = rho_dt_q * s->u[f->a][f->q];
+        assemble_row(s, f->a, f->idx, row, rho_dt_q);
+    }
     if (!newtonian || !s->factored) {
         GF_TRY(gf_cont_lu_factor(s->ctx, s->lu));
         s->factored = 1;
     }
     GF_TRY(gf_cont_lu_solve(s->ctx, s->lu, s->rhs, s->x));
-    for (int a = 0; a < s->n_comp; ++a)
-        for (size_t q = 0; q < g->n_faces[a]; ++q)
-            if (s->unknown[a][q] >= 0)
-                s->u[a][q] = s->x[s->unknown[a][q]];
+    for (int row = 0; row < s->n_unknowns; ++row)
+        s->u[s->unknown_face[row].a][s->unknown_face[row].q] = s->x[row];
     for (int a = 0; a < s->n_comp; ++a)
         gf_grid_sync_periodic(g, a, s->u[a]);
     return GF_OK;
@@ -332,17 +331,10 @@ double gf_continuum_cell_divergence(const gf_continuum *s, int i, int j, int k)
 
 void gf_continuum_correct_velocity(gf_continuum *s, const double *phi, double dt)
 {
-    const gf_grid *g = &s->g;
-    for (int a = 0; a < s->n_comp; ++a)
-        for (int k = 0; k < g->nf[a][2]; ++k)
-            for (int j = 0; j < g->nf[a][1]; ++j)
-                for (int i = 0; i < g->nf[a][0]; ++i) {
-                    size_t q = gf_grid_face(g, a, i, j, k);
-                    if (s->unknown[a][q] < 0)
-                        continue;
-                    int idx[3] = {i, j, k};
-                    s->u[a][q] -= dt / gf_continuum_rho(s, a, q) * gf_continuum_pressure_gradient(s, phi, a, idx);
-                }
+    for (int r = 0; r < s->n_unknowns; ++r) {
+        const gf_unknown_face *f = &s->unknown_face[r];
+        s->u[f->a][f->q] -= dt / gf_continuum_rho(s, f->a, f->q) * gf_continuum_pressure_gradient(s, phi, f->a, f->idx);
+    }
 }
 
 /*

@@ -22,11 +22,30 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "coupling/gf_coupling_restart.h"
 #include "coupling/gf_coupling_unresolved.h"
 
 #define HELD_F64 9 /* K, uf[3], f_other[3], eps, mass */
 
 static const char *const field_names[FLD_N] = {"field_eps", "field_u", "field_v", "field_w", "field_p"};
+static const char *const face_names[3] = {"fluid_u", "fluid_v", "fluid_w"};
+
+enum { GRID_ARRAYS = 3 + 2 + FLD_N };
+
+/* The face velocities, excess pressure and fluid fraction, then the output fields, in the order they are
+ * written. */
+static void grid_arrays(const gf_unresolved *c, gf_restart_array list[GRID_ARRAYS])
+{
+    const gf_fluid *f = c->fluid;
+    size_t n_cells = f->grid.n_cells;
+    int n = 0;
+    for (int a = 0; a < 3; ++a)
+        list[n++] = (gf_restart_array){face_names[a], f->grid.n_faces[a], f->u[a]};
+    list[n++] = (gf_restart_array){"fluid_p", n_cells, f->p_Pa};
+    list[n++] = (gf_restart_array){"fluid_eps", n_cells, f->eps};
+    for (int v = 0; v < FLD_N; ++v)
+        list[n++] = (gf_restart_array){field_names[v], n_cells, c->fields[v]};
+}
 
 static void held_pack(const held_grain *h, double *v)
 {
@@ -63,8 +82,9 @@ static gf_status save_held(const gf_unresolved *c, gf_restart *r)
     return st;
 }
 
-gf_status gf_unresolved_save(const gf_unresolved *c, gf_restart *r)
+gf_status gf_unresolved_save(const gf_coupling *base, gf_restart *r)
 {
+    const gf_unresolved *c = (const gf_unresolved *)base;
     const gf_fluid *f = c->fluid;
     const gf_grid *g = &f->grid;
     const gf_coupling_stats *s = &c->stats;
@@ -77,13 +97,9 @@ gf_status gf_unresolved_save(const gf_unresolved *c, gf_restart *r)
     GF_TRY(gf_restart_put_f64(r, "coupling_sums", 10, sums));
     GF_TRY(gf_restart_put_f64(r, "coupling_volumes", 2,
                               (const double[2]){s->solid_volume_grid_m3, s->solid_volume_grains_m3}));
-    GF_TRY(gf_restart_put_f64(r, "fluid_u", g->n_faces[0], f->u[0]));
-    GF_TRY(gf_restart_put_f64(r, "fluid_v", g->n_faces[1], f->u[1]));
-    GF_TRY(gf_restart_put_f64(r, "fluid_w", g->n_faces[2], f->u[2]));
-    GF_TRY(gf_restart_put_f64(r, "fluid_p", g->n_cells, f->p_Pa));
-    GF_TRY(gf_restart_put_f64(r, "fluid_eps", g->n_cells, f->eps));
-    for (int v = 0; v < FLD_N; ++v)
-        GF_TRY(gf_restart_put_f64(r, field_names[v], g->n_cells, c->fields[v]));
+    gf_restart_array list[GRID_ARRAYS];
+    grid_arrays(c, list);
+    GF_TRY(gf_coupling_put_arrays(r, list, GRID_ARRAYS));
     return save_held(c, r);
 }
 
@@ -109,10 +125,9 @@ static gf_status load_held(gf_unresolved *c, gf_restart *r)
     return st;
 }
 
-gf_status gf_unresolved_load(gf_unresolved *c, gf_restart *r)
+gf_status gf_unresolved_load(gf_coupling *base, gf_restart *r)
 {
-    gf_fluid *f = c->fluid;
-    const gf_grid *g = &f->grid;
+    gf_unresolved *c = (gf_unresolved *)base;
     gf_coupling_stats *s = &c->stats;
     if (!gf_restart_has(r, "coupling_counts"))
         return GF_FAIL(c->ctx, GF_ERR_CONFIG,
@@ -120,19 +135,12 @@ gf_status gf_unresolved_load(gf_unresolved *c, gf_restart *r)
     int64_t counts[7];
     double sums[10], vol[2];
     GF_TRY(gf_restart_get_i64(r, "coupling_counts", 7, counts));
-    if (counts[0] != g->n[0] || counts[1] != g->n[1] || counts[2] != g->n[2])
-        return GF_FAIL(c->ctx, GF_ERR_CONFIG,
-                       "restart: the checkpoint's fluid grid is %lldx%lldx%lld cells, this spec builds %dx%dx%d",
-                       (long long)counts[0], (long long)counts[1], (long long)counts[2], g->n[0], g->n[1], g->n[2]);
+    GF_TRY(gf_coupling_check_grid(c->ctx, counts, &c->fluid->grid));
     GF_TRY(gf_restart_get_f64(r, "coupling_sums", 10, sums));
     GF_TRY(gf_restart_get_f64(r, "coupling_volumes", 2, vol));
-    GF_TRY(gf_restart_get_f64(r, "fluid_u", g->n_faces[0], f->u[0]));
-    GF_TRY(gf_restart_get_f64(r, "fluid_v", g->n_faces[1], f->u[1]));
-    GF_TRY(gf_restart_get_f64(r, "fluid_w", g->n_faces[2], f->u[2]));
-    GF_TRY(gf_restart_get_f64(r, "fluid_p", g->n_cells, f->p_Pa));
-    GF_TRY(gf_restart_get_f64(r, "fluid_eps", g->n_cells, f->eps));
-    for (int v = 0; v < FLD_N; ++v)
-        GF_TRY(gf_restart_get_f64(r, field_names[v], g->n_cells, c->fields[v]));
+    gf_restart_array list[GRID_ARRAYS];
+    grid_arrays(c, list);
+    GF_TRY(gf_coupling_get_arrays(r, list, GRID_ARRAYS));
     GF_TRY(load_held(c, r));
     c->first_step = (int)counts[3];
     c->user_gradp = (int)counts[4];

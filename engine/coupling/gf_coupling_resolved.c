@@ -37,6 +37,7 @@
 #include <string.h>
 
 #include "core/gf_timer.h"
+#include "coupling/gf_coupling_restart.h"
 #include "coupling/gf_coupling_tier.h"
 #include "coupling/gf_ibm.h"
 #include "fluid/gf_fluid.h"
@@ -483,19 +484,32 @@ static const char *const face_names[3][2] = {{"resolved_u", "resolved_adv_u"},
                                              {"resolved_v", "resolved_adv_v"},
                                              {"resolved_w", "resolved_adv_w"}};
 
+enum { GRID_ARRAYS = 3 * 2 + 1 + RF_N };
+
+/* The grid state a fluid step reads from the previous one (face velocities, the previous step's advection
+ * term, pressure) and the output fields, in the order they are written. */
+static void grid_arrays(const gf_resolved *c, gf_restart_array list[GRID_ARRAYS])
+{
+    const gf_grid *g = &c->fluid->grid;
+    int n = 0;
+    for (int a = 0; a < 3; ++a) {
+        list[n++] = (gf_restart_array){face_names[a][0], g->n_faces[a], c->fluid->u[a]};
+        list[n++] = (gf_restart_array){face_names[a][1], g->n_faces[a], c->A_old[a]};
+    }
+    list[n++] = (gf_restart_array){"resolved_p", g->n_cells, c->fluid->p_Pa};
+    for (int v = 0; v < RF_N; ++v)
+        list[n++] = (gf_restart_array){resolved_vars[v].name, g->n_cells, c->fields[v]};
+}
+
 static gf_status resolved_save(const gf_coupling *cc, gf_restart *r)
 {
     const gf_resolved *c = CR(cc);
     const gf_grid *g = &c->fluid->grid;
     int64_t counts[5] = {g->n[0], g->n[1], g->n[2], c->first_step, c->n_steps};
+    gf_restart_array list[GRID_ARRAYS];
+    grid_arrays(c, list);
     GF_TRY(gf_restart_put_i64(r, "resolved_counts", 5, counts));
-    for (int a = 0; a < 3; ++a) {
-        GF_TRY(gf_restart_put_f64(r, face_names[a][0], g->n_faces[a], c->fluid->u[a]));
-        GF_TRY(gf_restart_put_f64(r, face_names[a][1], g->n_faces[a], c->A_old[a]));
-    }
-    GF_TRY(gf_restart_put_f64(r, "resolved_p", g->n_cells, c->fluid->p_Pa));
-    for (int v = 0; v < RF_N; ++v)
-        GF_TRY(gf_restart_put_f64(r, resolved_vars[v].name, g->n_cells, c->fields[v]));
+    GF_TRY(gf_coupling_put_arrays(r, list, GRID_ARRAYS));
     GF_TRY(gf_restart_put_i64(r, "resolved_held_id", c->n_held, c->held_id));
     GF_TRY(gf_restart_put_f64(r, "resolved_held_F", 3 * c->n_held, c->held_F));
     return gf_restart_put_f64(r, "resolved_held_T", 3 * c->n_held, c->held_T);
@@ -504,23 +518,15 @@ static gf_status resolved_save(const gf_coupling *cc, gf_restart *r)
 static gf_status resolved_load(gf_coupling *cc, gf_restart *r)
 {
     gf_resolved *c = R_(cc);
-    const gf_grid *g = &c->fluid->grid;
     if (!gf_restart_has(r, "resolved_counts"))
         return GF_FAIL(c->ctx, GF_ERR_CONFIG, "restart: the checkpoint holds no resolved-tier fluid state (a dry run "
                        "or another tier wrote it)");
     int64_t counts[5];
     GF_TRY(gf_restart_get_i64(r, "resolved_counts", 5, counts));
-    if (counts[0] != g->n[0] || counts[1] != g->n[1] || counts[2] != g->n[2])
-        return GF_FAIL(c->ctx, GF_ERR_CONFIG, "restart: the checkpoint's grid is %lldx%lldx%lld cells, this spec "
-                       "builds %dx%dx%d", (long long)counts[0], (long long)counts[1], (long long)counts[2], g->n[0],
-                       g->n[1], g->n[2]);
-    for (int a = 0; a < 3; ++a) {
-        GF_TRY(gf_restart_get_f64(r, face_names[a][0], g->n_faces[a], c->fluid->u[a]));
-        GF_TRY(gf_restart_get_f64(r, face_names[a][1], g->n_faces[a], c->A_old[a]));
-    }
-    GF_TRY(gf_restart_get_f64(r, "resolved_p", g->n_cells, c->fluid->p_Pa));
-    for (int v = 0; v < RF_N; ++v)
-        GF_TRY(gf_restart_get_f64(r, resolved_vars[v].name, g->n_cells, c->fields[v]));
+    GF_TRY(gf_coupling_check_grid(c->ctx, counts, &c->fluid->grid));
+    gf_restart_array list[GRID_ARRAYS];
+    grid_arrays(c, list);
+    GF_TRY(gf_coupling_get_arrays(r, list, GRID_ARRAYS));
     size_t n = 0;
     GF_TRY(gf_restart_len(r, "resolved_held_id", &n));
     GF_TRY(reserve_held(c, n));

@@ -113,6 +113,9 @@
 #define OSEEN_LOG_RE0 (-3.0)
 #define OSEEN_DLOG_RE (7.0 / (OSEEN_N - 1))
 
+/* The tier's object behind the handle the tier row receives (gf_coupling base is its first member). */
+static gf_unresolved *U(gf_coupling *c) { return (gf_unresolved *)c; }
+static const gf_unresolved *CU(const gf_coupling *c) { return (const gf_unresolved *)c; }
 
 static const gf_var_info field_vars[FLD_N] = {
     {"fluid_fraction", "1", "fluid volume fraction (kernel-averaged)", NULL},
@@ -246,8 +249,9 @@ static void pressure_reference_axis(gf_unresolved *c)
     }
 }
 
-gf_status gf_unresolved_set_gravity(gf_unresolved *c, const double g[3])
+static gf_status unresolved_set_gravity(gf_coupling *base, const double g[3])
 {
+    gf_unresolved *c = U(base);
     for (int d = 0; d < 3; ++d)
         if (!isfinite(g[d]))
             return GF_FAIL(c->ctx, GF_ERR_ARG, "coupling: gravity component %d is not finite", d);
@@ -264,7 +268,10 @@ static gf_grid_bc map_bc(gf_fluid_bc b)
     return b == GF_BC_PERIODIC ? GF_GRID_PERIODIC : b == GF_BC_FREE_SLIP ? GF_GRID_FREE_SLIP : GF_GRID_NO_SLIP;
 }
 
-gf_status gf_unresolved_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_coupling_setup *setup, gf_unresolved **out)
+static void unresolved_destroy(gf_coupling *base);
+
+static gf_status unresolved_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_coupling_setup *setup,
+                                   gf_coupling **out)
 {
     *out = NULL;
     const gf_fluid_spec *fs = &spec->fluid;
@@ -323,7 +330,7 @@ gf_status gf_unresolved_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_co
     c->sigma_m = fmax(hmax > 0.0 ? hmax : fs->cell_over_D * D, D);
     st = calibrate_self_mobility(ctx, c);
     if (st != GF_OK) {
-        gf_unresolved_destroy(&c);
+        unresolved_destroy(&c->base);
         return st;
     }
 
@@ -338,7 +345,7 @@ gf_status gf_unresolved_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_co
     /* a cell's lanes are one cache line: 64-byte aligned */
     ok &= (c->lanes = aligned_alloc(64, g->n_cells * GF_AVERAGE_LANES * sizeof(double))) != NULL;
     if (!ok) {
-        gf_unresolved_destroy(&c);
+        unresolved_destroy(&c->base);
         return GF_FAIL(ctx, GF_ERR_NOMEM, "coupling: out of memory for %zu cells", g->n_cells);
     }
     for (size_t i = 0; i < g->n_cells; ++i)
@@ -351,20 +358,19 @@ gf_status gf_unresolved_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_co
     c->stats.self_mobility_s_kg = c->self_mobility;
     gf_log(ctx, GF_LOG_INFO, "coupling: unresolved, %dx%dx%d cells of %.3g x %.3g x %.3g m, kernel sigma %.3g m, drag %s",
            g->n[0], g->n[1], g->n[2], g->h_m[0], g->h_m[1], g->h_m[2], c->sigma_m, law->name);
-    *out = c;
+    *out = &c->base;
     return GF_OK;
 }
 
-void gf_unresolved_set_threads(gf_unresolved *c, int n_threads)
+static void unresolved_set_threads(gf_coupling *base, int n_threads)
 {
+    gf_unresolved *c = U(base);
     c->n_threads = n_threads > 1 ? n_threads : 1;
 }
 
-void gf_unresolved_destroy(gf_unresolved **pc)
+static void unresolved_destroy(gf_coupling *base)
 {
-    if (!pc || !*pc)
-        return;
-    gf_unresolved *c = *pc;
+    gf_unresolved *c = U(base);
     gf_fluid_destroy(&c->fluid);
     for (int a = 0; a < 3; ++a) {
         free(c->uc[a]);
@@ -377,7 +383,6 @@ void gf_unresolved_destroy(gf_unresolved **pc)
     free(c->held);
     free(c->mean_v);
     free(c);
-    *pc = NULL;
 }
 
 gf_status gf_unresolved_reserve(gf_unresolved *c, size_t n)
@@ -505,8 +510,9 @@ static double pore_pressure_limit(const gf_unresolved *c, const gf_particles *p)
     return PORE_PRESSURE_TAU_FACTOR * tau;
 }
 
-double gf_unresolved_dt_max_s(const gf_unresolved *c, const gf_particles *p)
+static double unresolved_dt_max_s(const gf_coupling *base, const gf_particles *p)
 {
+    const gf_unresolved *c = CU(base);
     double cfl = c->spec.fluid.cfl, h = min_cell(c);
     double rate = advective_rate(c);
     double dt = rate > 0.0 ? cfl / rate : 1e30;
@@ -708,8 +714,9 @@ static void fix_mixture_momentum(gf_unresolved *c, const gf_particles *p)
     }
 }
 
-gf_status gf_unresolved_fluid_step(gf_unresolved *c, const gf_particles *p, double dt_s)
+static gf_status unresolved_fluid_step(gf_coupling *base, const gf_particles *p, double dt_s)
 {
+    gf_unresolved *c = U(base);
     gf_ctx *ctx = c->ctx;
     double t0 = gf_wtime();
     gf_fluid *f = c->fluid;
@@ -721,12 +728,12 @@ gf_status gf_unresolved_fluid_step(gf_unresolved *c, const gf_particles *p, doub
     if (rate * dt_s > 1.0)
         return GF_FAIL(ctx, GF_ERR_NUMERIC, "fluid step dt = %.3g s exceeds the advective CFL stability limit %.3g s "
                        "(CFL number %.2f > 1); take dt <= gf_coupling_dt_max_s = %.3g s", dt_s, 1.0 / rate,
-                       rate * dt_s, gf_unresolved_dt_max_s(c, p));
+                       rate * dt_s, unresolved_dt_max_s(base, p));
     double vmax = grain_speed_max(p), h = min_cell(c);
     if (vmax * dt_s > h)
         return GF_FAIL(ctx, GF_ERR_NUMERIC, "fluid step dt = %.3g s lets grains move %.2f cells (|v|max = %.3g m/s, "
                        "limit 1 cell); take dt <= gf_coupling_dt_max_s = %.3g s", dt_s, vmax * dt_s / h, vmax,
-                       gf_unresolved_dt_max_s(c, p));
+                       unresolved_dt_max_s(base, p));
     GF_TRY(gf_unresolved_reserve(c, p->n_local));
 
     /* 1. fluid fraction from the grains as they are now */
@@ -786,7 +793,7 @@ gf_status gf_unresolved_fluid_step(gf_unresolved *c, const gf_particles *p, doub
     fix_mixture_momentum(c, p);
     if (gf_fluid_nonfinite(f))
         return GF_FAIL(ctx, GF_ERR_NUMERIC, "fluid state became non-finite after a step of %.3g s (CFL number %.2f, "
-                       "dt_max %.3g s)", dt_s, rate * dt_s, gf_unresolved_dt_max_s(c, p));
+                       "dt_max %.3g s)", dt_s, rate * dt_s, unresolved_dt_max_s(base, p));
 
     /* 4. held fluid velocity and non-drag forces at each grain */
     cell_fields(c);
@@ -859,22 +866,25 @@ static void add_held_force(const gf_unresolved *c, held_grain *hg, gf_particles 
         *f[a] += K * (hg->uf[a] - v[a]) + phi1 * hg->f_other_N[a] + (phi1 - 1.0) * (*f[a] + m * c->setup.gravity_m_s2[a]);
 }
 
-int gf_unresolved_forces_in_order(const gf_unresolved *c, const gf_particles *p)
+static int unresolved_forces_in_order(const gf_coupling *base, const gf_particles *p)
 {
+    const gf_unresolved *c = CU(base);
     return c->first_step ||
            (c->held_epoch_known && c->held_epoch == p->order_epoch && c->n_held == p->n_local);
 }
 
-void gf_unresolved_add_forces_range(gf_unresolved *c, gf_particles *p, size_t i0, size_t i1)
+static void unresolved_add_forces_range(gf_coupling *base, gf_particles *p, size_t i0, size_t i1)
 {
+    gf_unresolved *c = U(base);
     if (c->first_step)
         return;
     for (size_t i = i0; i < i1; ++i)
         add_held_force(c, &c->held[i], p, i);
 }
 
-gf_status gf_unresolved_add_forces(gf_unresolved *c, gf_particles *p)
+static gf_status unresolved_add_forces(gf_coupling *base, gf_particles *p)
 {
+    gf_unresolved *c = U(base);
     if (c->first_step)
         return GF_OK;  /* no fluid step yet: the fluid is at rest and hydrostatic, nothing held */
     int reordered = p->n_local != c->n_held;
@@ -919,8 +929,9 @@ gf_status gf_unresolved_add_forces(gf_unresolved *c, gf_particles *p)
 
 /* --- probes and outputs ----------------------------------------------------------------------------- */
 
-double gf_unresolved_excess_pressure_Pa(const gf_unresolved *c, const double x_m[3])
+static double unresolved_excess_pressure_Pa(const gf_coupling *base, const double x_m[3])
 {
+    const gf_unresolved *c = CU(base);
     const gf_grid *g = &c->fluid->grid;
     int i0[3];
     double t[3];
@@ -955,9 +966,10 @@ double gf_unresolved_excess_pressure_Pa(const gf_unresolved *c, const double x_m
     return v;
 }
 
-int gf_unresolved_fields(const gf_unresolved *c, int n_cells[3], double lo_m[3], double cell_m[3],
-                       const gf_var_info **vars, const double *const **fields)
+static int unresolved_fields(const gf_coupling *base, int n_cells[3], double lo_m[3], double cell_m[3],
+                             const gf_var_info **vars, const double *const **fields)
 {
+    const gf_unresolved *c = CU(base);
     const gf_grid *g = &c->fluid->grid;
     for (int d = 0; d < 3; ++d) {
         n_cells[d] = g->n[d];
@@ -969,8 +981,9 @@ int gf_unresolved_fields(const gf_unresolved *c, int n_cells[3], double lo_m[3],
     return FLD_N;
 }
 
-double gf_unresolved_fluid_flow_rate(const gf_unresolved *c)
+static double unresolved_fluid_flow_rate(const gf_coupling *base)
 {
+    const gf_unresolved *c = CU(base);
     const gf_grid *g = &c->fluid->grid;
     double s = 0.0, vc = g->h_m[0] * g->h_m[1] * g->h_m[2];
     for (size_t cc = 0; cc < g->n_cells; ++cc)
@@ -978,8 +991,9 @@ double gf_unresolved_fluid_flow_rate(const gf_unresolved *c)
     return s / (g->h_m[0] * g->n[0]);
 }
 
-double gf_unresolved_fluid_mass_kg(const gf_unresolved *c)
+static double unresolved_fluid_mass_kg(const gf_coupling *base)
 {
+    const gf_unresolved *c = CU(base);
     const gf_grid *g = &c->fluid->grid;
     double s = 0.0;
     for (size_t cc = 0; cc < g->n_cells; ++cc)
@@ -987,125 +1001,36 @@ double gf_unresolved_fluid_mass_kg(const gf_unresolved *c)
     return c->rho_f * s * g->h_m[0] * g->h_m[1] * g->h_m[2];
 }
 
-/* --- diagnostics (gf_coupling_diag.h) ------------------------------------------------------------------ */
-
-void gf_unresolved_get_stats(const gf_unresolved *c, gf_coupling_stats *s) { *s = c->stats; }
-
-void gf_unresolved_set_mean_pressure_gradient(gf_unresolved *c, const double G[3])
-{
-    c->user_gradp = 1;
-    for (int d = 0; d < 3; ++d)
-        c->mean_gradp[d] = G[d];
-}
-
-void gf_unresolved_set_dem_step(gf_unresolved *c, double dt_s)
-{
-    if (dt_s > 0.0)
-        c->dt_dem_s = dt_s;
-}
-
-int gf_unresolved_grain_state(const gf_unresolved *c, size_t i, double *K, double uf[3], double *eps)
-{
-    if (i >= c->n_held)
-        return 0;
-    *K = c->held[i].K_kg_s;
-    for (int a = 0; a < 3; ++a)
-        uf[a] = c->held[i].uf[a];
-    *eps = c->held[i].eps;
-    return 1;
-}
-
-void gf_unresolved_mean_fluid_velocity(const gf_unresolved *c, double u[3])
-{
-    const gf_grid *g = &c->fluid->grid;
-    double se = 0.0;
-    u[0] = u[1] = u[2] = 0.0;
-    for (size_t cc = 0; cc < g->n_cells; ++cc) {
-        se += c->fluid->eps[cc];
-        for (int a = 0; a < 3; ++a)
-            u[a] += c->fluid->eps[cc] * c->fields[FLD_U + a][cc];
-    }
-    for (int a = 0; a < 3; ++a)
-        u[a] /= se;
-}
-
 /* --- the tier row (gf_coupling_tier.h): the calls above behind the table --------------------------- */
-
-static gf_unresolved *U(gf_coupling *c) { return (gf_unresolved *)c; }
-static const gf_unresolved *CU(const gf_coupling *c) { return (const gf_unresolved *)c; }
-
-static gf_status op_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_coupling_setup *setup, gf_coupling **out)
-{
-    gf_unresolved *c = NULL;
-    GF_TRY(gf_unresolved_create(ctx, spec, setup, &c));
-    *out = &c->base;
-    return GF_OK;
-}
-
-static void op_destroy(gf_coupling *c)
-{
-    gf_unresolved *u = U(c);
-    gf_unresolved_destroy(&u);
-}
 
 /* The unresolved tier is the cheapest that carries a fluid: `fluid: auto` takes it whenever the
  * regime needs one (gf_tier.h says when). */
-static int op_auto_fits(const gf_tier_query *q, char *why, size_t n)
+static int unresolved_auto_fits(const gf_tier_query *q, char *why, size_t n)
 {
     (void)q;
     snprintf(why, n, "unresolved: averaged fluid on cells of a few D, the cheapest tier with pore pressure");
     return 1;
 }
 
-static void op_set_threads(gf_coupling *c, int n) { gf_unresolved_set_threads(U(c), n); }
-static double op_dt_max_s(const gf_coupling *c, const gf_particles *p) { return gf_unresolved_dt_max_s(CU(c), p); }
-static gf_status op_fluid_step(gf_coupling *c, const gf_particles *p, double dt_s)
-{
-    return gf_unresolved_fluid_step(U(c), p, dt_s);
-}
-static gf_status op_add_forces(gf_coupling *c, gf_particles *p) { return gf_unresolved_add_forces(U(c), p); }
-static int op_forces_in_order(const gf_coupling *c, const gf_particles *p)
-{
-    return gf_unresolved_forces_in_order(CU(c), p);
-}
-static void op_add_forces_range(gf_coupling *c, gf_particles *p, size_t i0, size_t i1)
-{
-    gf_unresolved_add_forces_range(U(c), p, i0, i1);
-}
-static double op_excess_pressure_Pa(const gf_coupling *c, const double x[3])
-{
-    return gf_unresolved_excess_pressure_Pa(CU(c), x);
-}
-static int op_fields(const gf_coupling *c, int n[3], double lo[3], double h[3], const gf_var_info **vars,
-                     const double *const **fields)
-{
-    return gf_unresolved_fields(CU(c), n, lo, h, vars, fields);
-}
-static gf_status op_set_gravity(gf_coupling *c, const double g[3]) { return gf_unresolved_set_gravity(U(c), g); }
-static gf_status op_save(const gf_coupling *c, gf_restart *r) { return gf_unresolved_save(CU(c), r); }
-static gf_status op_load(gf_coupling *c, gf_restart *r) { return gf_unresolved_load(U(c), r); }
-static double op_flow_rate(const gf_coupling *c) { return gf_unresolved_fluid_flow_rate(CU(c)); }
-static double op_fluid_mass(const gf_coupling *c) { return gf_unresolved_fluid_mass_kg(CU(c)); }
-
 const gf_coupling_tier gf_coupling_tier_unresolved = {
     .name = "unresolved",
     .summary = "locally averaged Navier-Stokes on cells of a few D, drag closure, pore pressure",
-    .create = op_create,
-    .destroy = op_destroy,
-    .auto_fits = op_auto_fits,
-    .set_threads = op_set_threads,
-    .dt_max_s = op_dt_max_s,
-    .fluid_step = op_fluid_step,
-    .add_forces = op_add_forces,
-    .forces_in_order = op_forces_in_order,
-    .add_forces_range = op_add_forces_range,
-    .excess_pressure_Pa = op_excess_pressure_Pa,
-    .fields = op_fields,
-    .set_gravity = op_set_gravity,
-    .save = op_save,
-    .load = op_load,
-    .fluid_flow_rate = op_flow_rate,
-    .fluid_mass_kg = op_fluid_mass,
+    .create = unresolved_create,
+    .destroy = unresolved_destroy,
+    .auto_fits = unresolved_auto_fits,
+    .set_threads = unresolved_set_threads,
+    .dt_max_s = unresolved_dt_max_s,
+    .fluid_step = unresolved_fluid_step,
+    .add_forces = unresolved_add_forces,
+    .forces_in_order = unresolved_forces_in_order,
+    .add_forces_range = unresolved_add_forces_range,
+    .excess_pressure_Pa = unresolved_excess_pressure_Pa,
+    .fields = unresolved_fields,
+    .set_gravity = unresolved_set_gravity,
+    .save = gf_unresolved_save,
+    .load = gf_unresolved_load,
+    .fluid_flow_rate = unresolved_fluid_flow_rate,
+    .fluid_mass_kg = unresolved_fluid_mass_kg,
 };
 
 /* --- diagnostics of this tier through the public handle (gf_coupling_diag.h) --------------------- */
@@ -1119,7 +1044,7 @@ void gf_coupling_get_stats(const gf_coupling *c, gf_coupling_stats *s)
 {
     const gf_unresolved *u = diag_of(c);
     if (u)
-        gf_unresolved_get_stats(u, s);
+        *s = u->stats;
     else
         memset(s, 0, sizeof *s);
 }
@@ -1127,28 +1052,47 @@ void gf_coupling_get_stats(const gf_coupling *c, gf_coupling_stats *s)
 void gf_coupling_set_mean_pressure_gradient(gf_coupling *c, const double G_Pa_m[3])
 {
     gf_unresolved *u = diag_of(c);
-    if (u)
-        gf_unresolved_set_mean_pressure_gradient(u, G_Pa_m);
+    if (!u)
+        return;
+    u->user_gradp = 1;
+    for (int d = 0; d < 3; ++d)
+        u->mean_gradp[d] = G_Pa_m[d];
 }
 
 void gf_coupling_set_dem_step(gf_coupling *c, double dt_s)
 {
     gf_unresolved *u = diag_of(c);
-    if (u)
-        gf_unresolved_set_dem_step(u, dt_s);
+    if (u && dt_s > 0.0)
+        u->dt_dem_s = dt_s;
 }
 
 int gf_coupling_grain_state(const gf_coupling *c, size_t i, double *K_kg_s, double uf_m_s[3], double *eps)
 {
     const gf_unresolved *u = diag_of(c);
-    return u ? gf_unresolved_grain_state(u, i, K_kg_s, uf_m_s, eps) : 0;
+    if (!u || i >= u->n_held)
+        return 0;
+    *K_kg_s = u->held[i].K_kg_s;
+    for (int a = 0; a < 3; ++a)
+        uf_m_s[a] = u->held[i].uf[a];
+    *eps = u->held[i].eps;
+    return 1;
 }
 
 void gf_coupling_mean_fluid_velocity(const gf_coupling *c, double u_m_s[3])
 {
     const gf_unresolved *u = diag_of(c);
-    if (u)
-        gf_unresolved_mean_fluid_velocity(u, u_m_s);
-    else
+    if (!u) {
         u_m_s[0] = u_m_s[1] = u_m_s[2] = NAN;
+        return;
+    }
+    const gf_grid *g = &u->fluid->grid;
+    double se = 0.0;
+    u_m_s[0] = u_m_s[1] = u_m_s[2] = 0.0;
+    for (size_t cc = 0; cc < g->n_cells; ++cc) {
+        se += u->fluid->eps[cc];
+        for (int a = 0; a < 3; ++a)
+            u_m_s[a] += u->fluid->eps[cc] * u->fields[FLD_U + a][cc];
+    }
+    for (int a = 0; a < 3; ++a)
+        u_m_s[a] /= se;
 }

@@ -60,30 +60,9 @@ struct gf_unresolved {
 
 typedef struct gf_unresolved gf_unresolved;
 
-/* The tier's calls (gf_coupling.h says what each does); gf_coupling_tier_unresolved puts them in the
- * registry. */
-gf_status gf_unresolved_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_coupling_setup *setup,
-                               gf_unresolved **out);
-void gf_unresolved_destroy(gf_unresolved **c);
-void gf_unresolved_set_threads(gf_unresolved *c, int n_threads);
-double gf_unresolved_dt_max_s(const gf_unresolved *c, const gf_particles *p);
-gf_status gf_unresolved_fluid_step(gf_unresolved *c, const gf_particles *p, double dt_s);
-gf_status gf_unresolved_add_forces(gf_unresolved *c, gf_particles *p);
-int gf_unresolved_forces_in_order(const gf_unresolved *c, const gf_particles *p);
-void gf_unresolved_add_forces_range(gf_unresolved *c, gf_particles *p, size_t i0, size_t i1);
-double gf_unresolved_excess_pressure_Pa(const gf_unresolved *c, const double x_m[3]);
-int gf_unresolved_fields(const gf_unresolved *c, int n_cells[3], double lo_m[3], double cell_m[3],
-                         const gf_var_info **vars, const double *const **fields);
-gf_status gf_unresolved_set_gravity(gf_unresolved *c, const double gravity_m_s2[3]);
-gf_status gf_unresolved_save(const gf_unresolved *c, gf_restart *r);
-gf_status gf_unresolved_load(gf_unresolved *c, gf_restart *r);
-double gf_unresolved_fluid_flow_rate(const gf_unresolved *c);
-double gf_unresolved_fluid_mass_kg(const gf_unresolved *c);
-void gf_unresolved_get_stats(const gf_unresolved *c, gf_coupling_stats *s);
-void gf_unresolved_set_mean_pressure_gradient(gf_unresolved *c, const double G_Pa_m[3]);
-void gf_unresolved_set_dem_step(gf_unresolved *c, double dt_s);
-int gf_unresolved_grain_state(const gf_unresolved *c, size_t i, double *K_kg_s, double uf_m_s[3], double *eps);
-void gf_unresolved_mean_fluid_velocity(const gf_unresolved *c, double u_m_s[3]);
+/* The tier's checkpoint (gf_coupling_checkpoint.c): gf_coupling_save and gf_coupling_load for this tier. */
+gf_status gf_unresolved_save(const gf_coupling *c, gf_restart *r);
+gf_status gf_unresolved_load(gf_coupling *c, gf_restart *r);
 
 /* Mean-slip closures (gf_coupling_mean_slip.c; no-ops or NULL for per-grain closures). */
 /* <v> at every grain from the grains' current velocities and the cached kernels; uses c->lanes. */

@@ -49,24 +49,18 @@ void gf_fluid_advect(gf_fluid *f, double dt_s)
         double *out = f->work[a];
         const double *u = f->u[a];
         memset(out, 0, g->n_faces[a] * sizeof(double));
-        for (int k = 0; k < g->nf[a][2]; ++k)
-            for (int j = 0; j < g->nf[a][1]; ++j)
-                for (int i = 0; i < g->nf[a][0]; ++i) {
-                    int idx[3] = {i, j, k};
-                    if (!gf_grid_face_free(g, a, idx[a]))
-                        continue;
-                    size_t fi = gf_grid_face(g, a, i, j, k);
-                    double adv = 0.0;
-                    for (int d = 0; d < 3; ++d) {
-                        if (g->n[d] == 1 && g->periodic[d])
-                            continue;  /* a single periodic cell: no variation along d */
-                        double vd = d == a ? u[fi] : gf_fluid_advecting_velocity(g, uu, a, d, i, j, k);
-                        double nb = gf_grid_face_neighbour(g, u, a, i, j, k, d, vd > 0.0 ? -1 : +1);
-                        adv += vd > 0.0 ? vd * (u[fi] - nb) / g->h_m[d] : vd * (nb - u[fi]) / g->h_m[d];
-                    }
-                    double b = gf_grid_face_from_cells(g, f->body[a], a, i, j, k);
-                    out[fi] = dt_s * (b - adv);
-                }
+        GF_GRID_FOR_FREE_FACES(g, a, fi, i, j, k) {
+            double adv = 0.0;
+            for (int d = 0; d < 3; ++d) {
+                if (g->n[d] == 1 && g->periodic[d])
+                    continue;  /* a single periodic cell: no variation along d */
+                double vd = d == a ? u[fi] : gf_fluid_advecting_velocity(g, uu, a, d, i, j, k);
+                double nb = gf_grid_face_neighbour(g, u, a, i, j, k, d, vd > 0.0 ? -1 : +1);
+                adv += vd > 0.0 ? vd * (u[fi] - nb) / g->h_m[d] : vd * (nb - u[fi]) / g->h_m[d];
+            }
+            double b = gf_grid_face_from_cells(g, f->body[a], a, i, j, k);
+            out[fi] = dt_s * (b - adv);
+        }
         gf_grid_sync_periodic(g, a, out);
     }
 }

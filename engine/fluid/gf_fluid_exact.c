@@ -97,17 +97,12 @@ static void velocity_error(const gf_fluid_exact_case *c, const gf_fluid *f, doub
     double s2 = 0.0, mx = 0.0;
     long n = 0;
     for (int a = 0; a < 3; ++a)
-        for (int k = 0; k < g->nf[a][2]; ++k)
-            for (int j = 0; j < g->nf[a][1]; ++j)
-                for (int i = 0; i < g->nf[a][0]; ++i) {
-                    int idx[3] = {i, j, k};
-                    if (!gf_grid_face_free(g, a, idx[a]))
-                        continue;
-                    double x[3];
-                    face_position(g, a, i, j, k, x);
-                    double e = f->u[a][gf_grid_face(g, a, i, j, k)] - exact_u(c, a, x, t);
-                    s2 += e * e, mx = fmax(mx, fabs(e)), ++n;
-                }
+        GF_GRID_FOR_FREE_FACES(g, a, fi, i, j, k) {
+            double x[3];
+            face_position(g, a, i, j, k, x);
+            double e = f->u[a][fi] - exact_u(c, a, x, t);
+            s2 += e * e, mx = fmax(mx, fabs(e)), ++n;
+        }
     r->err_rms = sqrt(s2 / (double)n) / scale;
     r->err_max = mx / scale;
 }

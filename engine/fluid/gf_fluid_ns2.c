@@ -9,14 +9,6 @@
  * depend on the thread count (nor do the slab FFTs'; gf_poisson.h). */
 static int step_threads(const gf_fluid *f) { return gf_poisson_plan_threads(f->poisson); }
 
-/* Visits every free face of component a: body(fi, i, j, k). */
-#define FOR_FREE_FACES(g, a, fi, i, j, k)                                        \
-    for (int k = 0; k < (g)->nf[a][2]; ++k)                                      \
-        for (int j = 0; j < (g)->nf[a][1]; ++j)                                  \
-            for (int i = 0; i < (g)->nf[a][0]; ++i)                              \
-                for (size_t fi = gf_grid_face(g, a, i, j, k), once_ = 1; once_; once_ = 0) \
-                    if (gf_grid_face_free(g, a, (a) == 0 ? i : (a) == 1 ? j : k))
-
 /* 1 when face (i,j,k) of component a has all its stencil neighbours inside the arrays, no boundary rule
  * needed: the fast path of the loops below (the generic gf_grid calls handle the rest, the same values). */
 static int interior_face(const gf_grid *g, int a, int i, int j, int k)
@@ -70,7 +62,7 @@ void gf_fluid_ns2_advection(const gf_fluid *f, double *const A[3])
     for (int a = 0; a < 3; ++a) {
         memset(A[a], 0, g->n_faces[a] * sizeof(double));
 #pragma omp parallel for num_threads(nt) if (nt > 1) schedule(static)
-        FOR_FREE_FACES(g, a, fi, i, j, k)
+        GF_GRID_FOR_FREE_FACES(g, a, fi, i, j, k)
         A[a][fi] = -(interior_face(g, a, i, j, k) ? advection_interior(g, uu, a, fi, i, j, k)
                                                    : advection_generic(g, uu, a, fi, i, j, k));
         gf_grid_sync_periodic(g, a, A[a]);
@@ -104,7 +96,7 @@ void gf_fluid_ns2_rates(const gf_fluid *f, const double *const A[3], const doubl
     for (int a = 0; a < 3; ++a) {
         memset(r[a], 0, g->n_faces[a] * sizeof(double));
 #pragma omp parallel for num_threads(nt) if (nt > 1) schedule(static)
-        FOR_FREE_FACES(g, a, fi, i, j, k)
+        GF_GRID_FOR_FREE_FACES(g, a, fi, i, j, k)
         {
             double adv = 1.5 * A[a][fi] - 0.5 * A_old[a][fi];
             r[a][fi] = adv + nu * laplacian(g, f->u[a], a, fi, i, j, k) -
@@ -185,7 +177,7 @@ gf_status gf_fluid_ns2_project(gf_ctx *ctx, gf_fluid *f, double dt_s)
     for (int a = 0; a < 3; ++a) {
         memcpy(f->u[a], f->work[a], g->n_faces[a] * sizeof(double));
 #pragma omp parallel for num_threads(nt) if (nt > 1) schedule(static)
-        FOR_FREE_FACES(g, a, fi, i, j, k)
+        GF_GRID_FOR_FREE_FACES(g, a, fi, i, j, k)
         f->u[a][fi] -= dt_s / rho * pressure_gradient(g, phi, a, i, j, k);
         gf_grid_sync_periodic(g, a, f->u[a]);
     }

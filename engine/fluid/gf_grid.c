@@ -34,20 +34,29 @@ gf_status gf_grid_init(gf_ctx *ctx, gf_grid *g, const int n[3], const double lo_
     return GF_OK;
 }
 
+size_t gf_grid_plane_faces(const gf_grid *g, int a)
+{
+    return g->n_faces[a] / (size_t)g->nf[a][a];
+}
+
+size_t gf_grid_plane_face(const gf_grid *g, int a, int m, size_t n, int idx[3])
+{
+    int d1 = a == 0 ? 1 : 0, d2 = a == 2 ? 1 : 2;  /* the other two axes, the lower one fastest */
+    idx[a] = m;
+    idx[d1] = (int)(n % (size_t)g->nf[a][d1]);
+    idx[d2] = (int)(n / (size_t)g->nf[a][d1]);
+    return gf_grid_face(g, a, idx[0], idx[1], idx[2]);
+}
+
 void gf_grid_sync_periodic(const gf_grid *g, int a, double *u)
 {
     if (!g->periodic[a])
         return;
-    int m = g->n[a];
-    for (int k = 0; k < g->nf[a][2]; ++k)
-        for (int j = 0; j < g->nf[a][1]; ++j)
-            for (int i = 0; i < g->nf[a][0]; ++i) {
-                int idx[3] = {i, j, k};
-                if (idx[a] != m)
-                    continue;
-                idx[a] = 0;
-                u[gf_grid_face(g, a, i, j, k)] = u[gf_grid_face(g, a, idx[0], idx[1], idx[2])];
-            }
+    for (size_t n = 0; n < gf_grid_plane_faces(g, a); ++n) {
+        int idx[3];
+        size_t first = gf_grid_plane_face(g, a, 0, n, idx);
+        u[gf_grid_plane_face(g, a, g->n[a], n, idx)] = u[first];
+    }
 }
 
 double gf_grid_face_neighbour(const gf_grid *g, const double *u, int a, int i, int j, int k, int d, int dir)

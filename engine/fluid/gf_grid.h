@@ -53,6 +53,15 @@ static inline int gf_grid_face_free(const gf_grid *g, int a, int m)
 {
     return g->periodic[a] ? (m < g->n[a]) : (m >= 1 && m <= g->n[a] - 1);
 }
+/* Visits every free face of component a (gf_grid_face_free), x fastest: declares its face index fi and
+ * (i, j, k) for the statement that follows. Plain nested loops: an OpenMP `parallel for` placed before it
+ * shares the outer one. */
+#define GF_GRID_FOR_FREE_FACES(g, a, fi, i, j, k)                                            \
+    for (int k = 0; k < (g)->nf[a][2]; ++k)                                                  \
+        for (int j = 0; j < (g)->nf[a][1]; ++j)                                              \
+            for (int i = 0; i < (g)->nf[a][0]; ++i)                                          \
+                for (size_t fi = gf_grid_face(g, a, i, j, k), once_ = 1; once_; once_ = 0) \
+                    if (gf_grid_face_free(g, a, (a) == 0 ? i : (a) == 1 ? j : k))
 /* Wraps a cell index on a periodic axis; on a wall axis returns -1 outside [0, n). */
 static inline int gf_grid_wrap(const gf_grid *g, int d, int m)
 {
@@ -65,6 +74,10 @@ static inline int gf_grid_wrap(const gf_grid *g, int d, int m)
     return m < 0 ? m + n : m;
 }
 
+/* The faces of component a on one plane m along a (the two other axes' face counts multiplied), and the
+ * n-th of them, n < gf_grid_plane_faces, x fastest: returns its face index and fills its (i,j,k). */
+size_t gf_grid_plane_faces(const gf_grid *g, int a);
+size_t gf_grid_plane_face(const gf_grid *g, int a, int m, size_t n, int idx[3]);
 /* Copies face 0 onto face n of every periodic axis of component a. */
 void gf_grid_sync_periodic(const gf_grid *g, int a, double *u);
 /* Value of component a at the neighbour of face (i,j,k) one step along d (dir = +-1), with the BCs. */

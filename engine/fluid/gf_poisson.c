@@ -3,6 +3,7 @@
 
 #include <fftw3.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -86,12 +87,45 @@ static void transform3_execute(const transform3 *t, double *work, int backward)
     }
 }
 
-struct gf_poisson_plan {
-    const gf_grid *g;
+/* What the Poisson and the Helmholtz solvers diagonalise with: the transform pair on its work array, the
+ * eigenvalues of the 1-D second difference per mode and axis, and the scaling of FFTW's unnormalised
+ * forward + backward pair. */
+typedef struct spectral3 {
     transform3 tr;
     double *work;
-    double *eig[3];       /* eigenvalues of the 1-D second difference per mode */
-    double norm;          /* forward+backward scaling of FFTW's unnormalised transforms */
+    double *eig[3];
+    double norm;
+} spectral3;
+
+/* The work array for len[0] len[1] len[2] values and the whole 3-D plans of kinds kf, kb (given x, y, z; FFTW
+ * is row-major, so z goes first). Errors: out of memory, FFTW cannot plan (what names the solver). */
+static gf_status spectral3_plan(gf_ctx *ctx, spectral3 *s, const int len[3], const fftw_r2r_kind kf[3],
+                                const fftw_r2r_kind kb[3], const char *what)
+{
+    s->work = fftw_malloc((size_t)len[0] * len[1] * len[2] * sizeof(double));
+    if (!s->work)
+        return GF_FAIL(ctx, GF_ERR_NOMEM, "%s: out of memory for %dx%dx%d values", what, len[0], len[1], len[2]);
+    for (int d = 0; d < 3; ++d) {
+        s->tr.dims[d] = len[2 - d];
+        s->tr.kind[0][d] = kf[2 - d], s->tr.kind[1][d] = kb[2 - d];
+    }
+    if (!transform3_plan(&s->tr, s->work, 0, 1))
+        return GF_FAIL(ctx, GF_ERR_UNSUPPORTED, "%s: FFTW could not plan a %dx%dx%d transform", what, len[0], len[1],
+                       len[2]);
+    return GF_OK;
+}
+
+static void spectral3_free(spectral3 *s)
+{
+    transform3_free_plans(&s->tr);
+    fftw_free(s->work);
+    for (int d = 0; d < 3; ++d)
+        free(s->eig[d]);
+}
+
+struct gf_poisson_plan {
+    const gf_grid *g;
+    spectral3 sp;
     double *r, *z, *p, *q;  /* CG vectors */
 };
 
@@ -103,47 +137,38 @@ gf_status gf_poisson_plan_create(gf_ctx *ctx, const gf_grid *g, gf_poisson_plan 
         return GF_FAIL(ctx, GF_ERR_NOMEM, "poisson plan: out of memory");
     pl->g = g;
     size_t n = g->n_cells;
-    pl->work = fftw_malloc(n * sizeof(double));
     pl->r = malloc(n * sizeof(double));
     pl->z = malloc(n * sizeof(double));
     pl->p = malloc(n * sizeof(double));
     pl->q = malloc(n * sizeof(double));
-    pl->norm = 1.0;
+    pl->sp.norm = 1.0;
     fftw_r2r_kind kf[3], kb[3];
-    int ok = pl->work && pl->r && pl->z && pl->p && pl->q;
+    int ok = pl->r && pl->z && pl->p && pl->q;
     for (int d = 0; d < 3 && ok; ++d) {
         int nd = g->n[d];
         double h2 = g->h_m[d] * g->h_m[d];
-        pl->eig[d] = malloc((size_t)nd * sizeof(double));
-        if (!pl->eig[d]) {
+        pl->sp.eig[d] = malloc((size_t)nd * sizeof(double));
+        if (!pl->sp.eig[d]) {
             ok = 0;
             break;
         }
         for (int m = 0; m < nd; ++m) {
             if (g->periodic[d]) {
                 int fr = m <= nd / 2 ? m : nd - m;  /* half-complex: index m holds frequency fr */
-                pl->eig[d][m] = (2.0 * cos(2.0 * M_PI * fr / nd) - 2.0) / h2;
+                pl->sp.eig[d][m] = (2.0 * cos(2.0 * M_PI * fr / nd) - 2.0) / h2;
             } else {
-                pl->eig[d][m] = (2.0 * cos(M_PI * m / nd) - 2.0) / h2;
+                pl->sp.eig[d][m] = (2.0 * cos(M_PI * m / nd) - 2.0) / h2;
             }
         }
         kf[d] = g->periodic[d] ? FFTW_R2HC : FFTW_REDFT10;
         kb[d] = g->periodic[d] ? FFTW_HC2R : FFTW_REDFT01;
-        pl->norm *= g->periodic[d] ? nd : 2.0 * nd;
+        pl->sp.norm *= g->periodic[d] ? nd : 2.0 * nd;
     }
-    if (!ok) {
+    gf_status st = ok ? spectral3_plan(ctx, &pl->sp, g->n, kf, kb, "poisson plan")
+                      : GF_FAIL(ctx, GF_ERR_NOMEM, "poisson plan: out of memory for %zu cells", n);
+    if (st != GF_OK) {
         gf_poisson_plan_destroy(&pl);
-        return GF_FAIL(ctx, GF_ERR_NOMEM, "poisson plan: out of memory for %zu cells", n);
-    }
-    /* FFTW is row-major: the slowest index (z) first. */
-    for (int d = 0; d < 3; ++d) {
-        pl->tr.kind[0][d] = kf[2 - d], pl->tr.kind[1][d] = kb[2 - d];
-        pl->tr.dims[d] = g->n[2 - d];
-    }
-    if (!transform3_plan(&pl->tr, pl->work, 0, 1)) {
-        gf_poisson_plan_destroy(&pl);
-        return GF_FAIL(ctx, GF_ERR_UNSUPPORTED, "poisson plan: FFTW could not plan a %dx%dx%d transform", g->n[0],
-                       g->n[1], g->n[2]);
+        return st;
     }
     *out = pl;
     return GF_OK;
@@ -154,10 +179,7 @@ void gf_poisson_plan_destroy(gf_poisson_plan **plan)
     if (!plan || !*plan)
         return;
     gf_poisson_plan *pl = *plan;
-    transform3_free_plans(&pl->tr);
-    fftw_free(pl->work);
-    for (int d = 0; d < 3; ++d)
-        free(pl->eig[d]);
+    spectral3_free(&pl->sp);
     free(pl->r);
     free(pl->z);
     free(pl->p);
@@ -168,30 +190,30 @@ void gf_poisson_plan_destroy(gf_poisson_plan **plan)
 
 gf_status gf_poisson_plan_set_threads(gf_ctx *ctx, gf_poisson_plan *pl, int n_threads)
 {
-    if (!transform3_plan(&pl->tr, pl->work, 1, n_threads))
+    if (!transform3_plan(&pl->sp.tr, pl->sp.work, 1, n_threads))
         return GF_FAIL(ctx, GF_ERR_UNSUPPORTED, "poisson plan: FFTW could not plan the slab transforms");
     return GF_OK;
 }
 
-int gf_poisson_plan_threads(const gf_poisson_plan *pl) { return pl ? pl->tr.n_threads : 1; }
+int gf_poisson_plan_threads(const gf_poisson_plan *pl) { return pl ? pl->sp.tr.n_threads : 1; }
 
 void gf_poisson_solve_const(gf_poisson_plan *pl, const double *rhs, double *phi)
 {
     const gf_grid *g = pl->g;
-    const int nt = pl->tr.n_threads;
-    memcpy(pl->work, rhs, g->n_cells * sizeof(double));
-    transform3_execute(&pl->tr, pl->work, 0);
+    const int nt = pl->sp.tr.n_threads;
+    memcpy(pl->sp.work, rhs, g->n_cells * sizeof(double));
+    transform3_execute(&pl->sp.tr, pl->sp.work, 0);
     /* pointwise: the same values on any number of threads */
 #pragma omp parallel for num_threads(nt) if (nt > 1) schedule(static)
     for (int k = 0; k < g->n[2]; ++k)
         for (int j = 0; j < g->n[1]; ++j)
             for (int i = 0; i < g->n[0]; ++i) {
                 size_t c = gf_grid_cell(g, i, j, k);
-                double lam = pl->eig[0][i] + pl->eig[1][j] + pl->eig[2][k];
-                pl->work[c] = (i == 0 && j == 0 && k == 0) ? 0.0 : pl->work[c] / (lam * pl->norm);
+                double lam = pl->sp.eig[0][i] + pl->sp.eig[1][j] + pl->sp.eig[2][k];
+                pl->sp.work[c] = (i == 0 && j == 0 && k == 0) ? 0.0 : pl->sp.work[c] / (lam * pl->sp.norm);
             }
-    transform3_execute(&pl->tr, pl->work, 1);
-    memcpy(phi, pl->work, g->n_cells * sizeof(double));
+    transform3_execute(&pl->sp.tr, pl->sp.work, 1);
+    memcpy(phi, pl->sp.work, g->n_cells * sizeof(double));
 }
 
 /* The neighbour index of cell index m along axis d in direction dir (0: -1,
@@ -268,15 +290,10 @@ static double mean_coefficient(const gf_grid *g, const double *const a[3])
     double s = 0.0;
     size_t cnt = 0;
     for (int d = 0; d < 3; ++d)
-        for (int k = 0; k < g->nf[d][2]; ++k)
-            for (int j = 0; j < g->nf[d][1]; ++j)
-                for (int i = 0; i < g->nf[d][0]; ++i) {
-                    int idx[3] = {i, j, k};
-                    if (!gf_grid_face_free(g, d, idx[d]))
-                        continue;
-                    s += a[d][gf_grid_face(g, d, i, j, k)];
-                    ++cnt;
-                }
+        GF_GRID_FOR_FREE_FACES(g, d, fi, i, j, k) {
+            s += a[d][fi];
+            ++cnt;
+        }
     return cnt ? s / (double)cnt : 1.0;
 }
 
@@ -347,8 +364,7 @@ struct gf_helmholtz_plan {
     int a;
     int len[3], off[3];   /* unknowns per axis and first face index */
     size_t n;
-    transform3 tr;
-    double *work, *eig[3], norm;
+    spectral3 sp;
 };
 
 gf_status gf_helmholtz_plan_create(gf_ctx *ctx, const gf_grid *g, int a, gf_helmholtz_plan **out)
@@ -359,8 +375,8 @@ gf_status gf_helmholtz_plan_create(gf_ctx *ctx, const gf_grid *g, int a, gf_helm
         return GF_FAIL(ctx, GF_ERR_NOMEM, "helmholtz plan: out of memory");
     pl->g = g;
     pl->a = a;
-    pl->tr.n_threads = 1;
-    pl->norm = 1.0;
+    pl->sp.tr.n_threads = 1;
+    pl->sp.norm = 1.0;
     pl->n = 1;
     fftw_r2r_kind kf[3], kb[3];
     for (int d = 0; d < 3; ++d) {
@@ -377,8 +393,8 @@ gf_status gf_helmholtz_plan_create(gf_ctx *ctx, const gf_grid *g, int a, gf_helm
         pl->n *= (size_t)(len > 0 ? len : 0);
         if (len <= 0)
             break;
-        pl->eig[d] = malloc((size_t)len * sizeof(double));
-        if (!pl->eig[d]) {
+        pl->sp.eig[d] = malloc((size_t)len * sizeof(double));
+        if (!pl->sp.eig[d]) {
             gf_helmholtz_plan_destroy(&pl);
             return GF_FAIL(ctx, GF_ERR_NOMEM, "helmholtz plan: out of memory");
         }
@@ -387,11 +403,11 @@ gf_status gf_helmholtz_plan_create(gf_ctx *ctx, const gf_grid *g, int a, gf_helm
         if (!walls) {
             kf[d] = FFTW_R2HC;
             kb[d] = FFTW_HC2R;
-            pl->norm *= n;
+            pl->sp.norm *= n;
         } else if (d == a) {
             kf[d] = kb[d] = FFTW_RODFT00;
             shift = 1.0;
-            pl->norm *= 2.0 * n;
+            pl->sp.norm *= 2.0 * n;
         } else {
             int ns_lo = g->bc[d][0] != GF_GRID_FREE_SLIP, ns_hi = g->bc[d][1] != GF_GRID_FREE_SLIP;
             if (ns_lo && ns_hi) {
@@ -405,28 +421,24 @@ gf_status gf_helmholtz_plan_create(gf_ctx *ctx, const gf_grid *g, int a, gf_helm
                 kf[d] = kb[d] = ns_lo ? FFTW_RODFT11 : FFTW_REDFT11;
                 shift = 0.5;
             }
-            pl->norm *= 2.0 * n;
+            pl->sp.norm *= 2.0 * n;
         }
         for (int m = 0; m < len; ++m) {
             double fr = m + shift;
             if (!walls) {
                 fr = m <= n / 2 ? m : n - m;
-                pl->eig[d][m] = (2.0 * cos(2.0 * M_PI * fr / N) - 2.0) / h2;
+                pl->sp.eig[d][m] = (2.0 * cos(2.0 * M_PI * fr / N) - 2.0) / h2;
             } else {
-                pl->eig[d][m] = (2.0 * cos(M_PI * fr / N) - 2.0) / h2;
+                pl->sp.eig[d][m] = (2.0 * cos(M_PI * fr / N) - 2.0) / h2;
             }
         }
     }
-    if (pl->n > 0) {
-        pl->work = fftw_malloc(pl->n * sizeof(double));
-        for (int d = 0; d < 3; ++d) {
-            pl->tr.dims[d] = pl->len[2 - d];
-            pl->tr.kind[0][d] = kf[2 - d], pl->tr.kind[1][d] = kb[2 - d];
-        }
-        if (!pl->work || !transform3_plan(&pl->tr, pl->work, 0, 1)) {
-            gf_helmholtz_plan_destroy(&pl);
-            return GF_FAIL(ctx, GF_ERR_UNSUPPORTED, "helmholtz plan: FFTW could not plan component %d", a);
-        }
+    char what[48];
+    snprintf(what, sizeof what, "helmholtz plan of component %d", a);
+    gf_status st = pl->n > 0 ? spectral3_plan(ctx, &pl->sp, pl->len, kf, kb, what) : GF_OK;
+    if (st != GF_OK) {
+        gf_helmholtz_plan_destroy(&pl);
+        return st;
     }
     *out = pl;
     return GF_OK;
@@ -437,10 +449,7 @@ void gf_helmholtz_plan_destroy(gf_helmholtz_plan **plan)
     if (!plan || !*plan)
         return;
     gf_helmholtz_plan *pl = *plan;
-    transform3_free_plans(&pl->tr);
-    fftw_free(pl->work);
-    for (int d = 0; d < 3; ++d)
-        free(pl->eig[d]);
+    spectral3_free(&pl->sp);
     free(pl);
     *plan = NULL;
 }
@@ -448,10 +457,10 @@ void gf_helmholtz_plan_destroy(gf_helmholtz_plan **plan)
 gf_status gf_helmholtz_plan_set_threads(gf_ctx *ctx, gf_helmholtz_plan *pl, int n_threads)
 {
     if (pl->n == 0) {
-        pl->tr.n_threads = n_threads > 1 ? n_threads : 1;
+        pl->sp.tr.n_threads = n_threads > 1 ? n_threads : 1;
         return GF_OK;
     }
-    if (!transform3_plan(&pl->tr, pl->work, 1, n_threads))
+    if (!transform3_plan(&pl->sp.tr, pl->sp.work, 1, n_threads))
         return GF_FAIL(ctx, GF_ERR_UNSUPPORTED, "helmholtz plan: FFTW could not plan the slab transforms of "
                        "component %d", pl->a);
     return GF_OK;
@@ -461,10 +470,10 @@ gf_status gf_helmholtz_plan_set_threads(gf_ctx *ctx, gf_helmholtz_plan *pl, int 
 static void helmholtz_copy(const gf_helmholtz_plan *pl, double *u, int to_work)
 {
     const gf_grid *g = pl->g;
-#pragma omp parallel for num_threads(pl->tr.n_threads) if (pl->tr.n_threads > 1) schedule(static)
+#pragma omp parallel for num_threads(pl->sp.tr.n_threads) if (pl->sp.tr.n_threads > 1) schedule(static)
     for (int k = 0; k < pl->len[2]; ++k)
         for (int j = 0; j < pl->len[1]; ++j) {
-            double *w = pl->work + ((size_t)k * pl->len[1] + j) * pl->len[0];
+            double *w = pl->sp.work + ((size_t)k * pl->len[1] + j) * pl->len[0];
             double *row = u + gf_grid_face(g, pl->a, pl->off[0], j + pl->off[1], k + pl->off[2]);
             if (to_work)
                 memcpy(w, row, (size_t)pl->len[0] * sizeof(double));
@@ -478,15 +487,15 @@ void gf_helmholtz_solve(gf_helmholtz_plan *pl, double c, double *u)
     if (pl->n == 0)
         return;
     helmholtz_copy(pl, u, 1);
-    transform3_execute(&pl->tr, pl->work, 0);
-#pragma omp parallel for num_threads(pl->tr.n_threads) if (pl->tr.n_threads > 1) schedule(static)
+    transform3_execute(&pl->sp.tr, pl->sp.work, 0);
+#pragma omp parallel for num_threads(pl->sp.tr.n_threads) if (pl->sp.tr.n_threads > 1) schedule(static)
     for (int k = 0; k < pl->len[2]; ++k)
         for (int j = 0; j < pl->len[1]; ++j) {
-            double *w = pl->work + ((size_t)k * pl->len[1] + j) * pl->len[0];
+            double *w = pl->sp.work + ((size_t)k * pl->len[1] + j) * pl->len[0];
             for (int i = 0; i < pl->len[0]; ++i)
-                w[i] /= pl->norm * (1.0 - c * (pl->eig[0][i] + pl->eig[1][j] + pl->eig[2][k]));
+                w[i] /= pl->sp.norm * (1.0 - c * (pl->sp.eig[0][i] + pl->sp.eig[1][j] + pl->sp.eig[2][k]));
         }
-    transform3_execute(&pl->tr, pl->work, 1);
+    transform3_execute(&pl->sp.tr, pl->sp.work, 1);
     helmholtz_copy(pl, u, 0);
     gf_grid_sync_periodic(pl->g, pl->a, u);
 }

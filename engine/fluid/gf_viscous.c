@@ -30,24 +30,18 @@ gf_status gf_fluid_viscous(gf_ctx *ctx, gf_fluid *f, double dt_s)
     for (int a = 0; a < 3; ++a) {
         double *r = f->work[a];
         const double *u = f->u[a];
-        for (int k = 0; k < g->nf[a][2]; ++k)
-            for (int j = 0; j < g->nf[a][1]; ++j)
-                for (int i = 0; i < g->nf[a][0]; ++i) {
-                    int idx[3] = {i, j, k};
-                    if (!gf_grid_face_free(g, a, idx[a]))
-                        continue;
-                    size_t fi = gf_grid_face(g, a, i, j, k);
-                    int lo[3] = {i, j, k}, hi[3] = {i, j, k};
-                    lo[a] = gf_grid_wrap(g, a, idx[a] - 1);
-                    hi[a] = gf_grid_wrap(g, a, idx[a]);
-                    double dp = (f->p_Pa[gf_grid_cell(g, hi[0], hi[1], hi[2])] -
-                                 f->p_Pa[gf_grid_cell(g, lo[0], lo[1], lo[2])]) / g->h_m[a];
-                    double ef = gf_grid_face_from_cells(g, f->eps, a, i, j, k);
-                    double bf = gf_grid_face_from_cells(g, f->beta, a, i, j, k);
-                    double bvf = gf_grid_face_from_cells(g, f->beta_v[a], a, i, j, k);
-                    r[fi] += dt_s * (nu * gf_grid_face_laplacian(g, u, a, i, j, k) - dp / rho +
-                                     (bvf - bf * u[fi]) / (ef * rho));
-                }
+        GF_GRID_FOR_FREE_FACES(g, a, fi, i, j, k) {
+            int lo[3] = {i, j, k}, hi[3] = {i, j, k};
+            lo[a] = gf_grid_wrap(g, a, lo[a] - 1);  /* the cells either side of the face */
+            hi[a] = gf_grid_wrap(g, a, hi[a]);
+            double dp = (f->p_Pa[gf_grid_cell(g, hi[0], hi[1], hi[2])] -
+                         f->p_Pa[gf_grid_cell(g, lo[0], lo[1], lo[2])]) / g->h_m[a];
+            double ef = gf_grid_face_from_cells(g, f->eps, a, i, j, k);
+            double bf = gf_grid_face_from_cells(g, f->beta, a, i, j, k);
+            double bvf = gf_grid_face_from_cells(g, f->beta_v[a], a, i, j, k);
+            r[fi] += dt_s * (nu * gf_grid_face_laplacian(g, u, a, i, j, k) - dp / rho +
+                             (bvf - bf * u[fi]) / (ef * rho));
+        }
         gf_grid_sync_periodic(g, a, r);
         gf_helmholtz_solve(f->visc[a], dt_s * nu, r);
         double s = 0.0;
