@@ -27,24 +27,6 @@
 #include "stages/gf_post_stats.h"
 #include "stages/gf_stage_util.h"
 
-const gf_post_col gf_stage_deposit_cols[] = {
-    {"R_inf_m", 0, "m", "final runout from the back wall"},
-    {"H_inf_m", 0, "m", "final deposit height (maximum)"},
-    {"R_inf_over_R0", 0, "1", "final runout over the initial column length"},
-    {"runout_norm", 0, "1", "normalised runout (R_inf - R0)/R0"},
-    {"H_inf_over_R0", 0, "1", "final height over the initial column length"},
-    {"H_back_over_H0", 0, "1", "final height at the back wall (x < 2 D) over the initial column height"},
-    {"deposit_shape", 1, "", "deposit shape (triangle or trapezoid)"},
-    {"flank_angle_deg", 0, "degree", "slope angle of the collapsed flank"},
-    {"plateau_length_m", 0, "m", "length of the full-height plateau at the back"},
-    {"deposit_area_m2", 0, "m2", "cross-section of the heap under its surface, above the floor plane"},
-    {"deposit_area_over_column", 0, "1", "heap cross-section over R0 H0 (Phi_i / Phi_deposit)"},
-    {"Ufront_particles_max_m_s", 0, "m s-1", "maximum front speed from the grains' toe"},
-    {"Ufront_particles_max_err_m_s", 0, "m s-1", "uncertainty of Ufront_particles_max_m_s"},
-    {"t_front_max_speed_s", 0, "s", "time of the maximum front speed"},
-    {"t_rest_s", 0, "s", "time after which the front stays within D/2 of its final position"},
-    {NULL, 0, NULL, NULL}};
-
 /*
  * A run without grains (method: continuum, engine/continuum/gf_continuum_collapse.h)
  * has its heap only as the diagnostics' front_position and deposit_height: the

@@ -12,12 +12,6 @@
 
 #include "stages/gf_stage_util.h"
 
-const gf_post_col gf_stage_energy_cols[] = {
-    {"Ecx_max_over_mgD", 0, "1", "maximum horizontal kinetic energy per grain over m g D"},
-    {"t_Ecx_max_s", 0, "s", "time of the maximum horizontal kinetic energy"},
-    {"grain_mass_kg", 0, "kg", "mean mobile-grain mass m"},
-    {NULL, 0, NULL, NULL}};
-
 gf_status gf_stage_energy(gf_ctx *ctx, const gf_stage_in *in, const gf_stage_opts *opts, gf_stage_out *out)
 {
     if (!gf_stage_has_file(in, "diagnostics.nc"))

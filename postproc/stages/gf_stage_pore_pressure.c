@@ -21,17 +21,6 @@
 
 #include "stages/gf_stage_util.h"
 
-const gf_post_col gf_stage_pore_pressure_cols[] = {
-    {"Pb_station", 1, "", "gauge reported in the summary"},
-    {"Pb_x_m", 0, "m", "gauge position x"},
-    {"Pb_min_Pa", 0, "Pa", "minimum basal excess pore pressure"},
-    {"Pb_max_Pa", 0, "Pa", "maximum basal excess pore pressure"},
-    {"t_Pb_min_s", 0, "s", "time of the minimum"},
-    {"t_Pb_max_s", 0, "s", "time of the maximum"},
-    {"Pb_ext_over_drho_g_H0", 0, "1", "dominant extremum of the basal excess pore pressure over drho g H0"},
-    {"t_Pb_relax_s", 0, "s", "time after which |P_b| stays below 10 % of its extremum"},
-    {NULL, 0, NULL, NULL}};
-
 typedef struct trace_stats {
     double pmin, pmax, tmin, tmax, pext, trelax;
 } trace_stats;

@@ -31,21 +31,6 @@
 #include "stages/gf_silo_flow.h"
 #include "stages/gf_stage_util.h"
 
-const gf_post_col gf_stage_profiles_cols[] = {
-    {"Ug_max_m_s", 0, "m s-1", "largest slab-averaged grain velocity over the steady window"},
-    {"phi_g_max", 0, "1", "largest slab grain volume fraction over the steady window"},
-    {"h_g_m", 0, "m", "flowing-layer height: top of the slabs with phi_g >= phi_g_max/2"},
-    {"Uf_max_m_s", 0, "m s-1", "largest slab-averaged fluid velocity over the steady window"},
-    {"n_profile_frames", 0, "1", "frames averaged for the profiles"},
-    {"St_bar", 0, "1", "mean particle Stokes number rho_p <|u| D> / (9 eta_f) over the steady window"},
-    {"Re_bar", 0, "1", "mean particle Reynolds number St_bar / r"},
-    /* scene silo (stages/gf_silo_flow.h) */
-    {"silo_b_z1_over_d", 0, "1", "silo: diffusion length b / d of the Gaussian v_y(x) at z = d"},
-    {"silo_b_z5_over_d", 0, "1", "silo: diffusion length b / d of the Gaussian v_y(x) at z = 5 d"},
-    {"silo_gauss_R2_min", 0, "1", "silo: smallest R^2 of the Gaussian fits at z >= 3 d"},
-    {"silo_b_decreasing", 0, "1", "silo: 1 when b(z) decreases from z = d up, else 0"},
-    {NULL, 0, NULL, NULL}};
-
 #define NSLAB_MAX 4096
 
 /* Fluid slab averages from fields.nc over records with time >= t0. */
