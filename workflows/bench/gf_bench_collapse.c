@@ -46,8 +46,8 @@ static const collapse_args defaults = {.seed = 1, .aspect = 1.0, .length_D = 16.
 static const gf_bench_flag flags[] = {
     GF_BENCH_FLAG("--seed", LONG, collapse_args, seed),       GF_BENCH_FLAG("--aspect", REAL, collapse_args, aspect),
     GF_BENCH_FLAG("--length", REAL, collapse_args, length_D), GF_BENCH_FLAG("--width", REAL, collapse_args, width_D),
-    GF_BENCH_FLAG("--end-time", REAL, collapse_args, end_nd), GF_BENCH_FLAG("--lammps-data", PATH, collapse_args, lammps),
-    GF_BENCH_FLAG("--dump", PATH, collapse_args, dump),
+    GF_BENCH_FLAG("--end-time", REAL, collapse_args, end_nd), GF_BENCH_FLAG("--dump", PATH, collapse_args, dump),
+    GF_BENCH_FLAG("--lammps-data", PATH, collapse_args, lammps),
 };
 
 GF_BENCH_VALID(collapse_args, a->seed > 0 && a->aspect > 0.0 && a->length_D > 0.0 && a->width_D > 0.0)
