@@ -179,34 +179,14 @@ static gf_status read_failed(gf_ctx *ctx, const gf_ncr *f, const char *name, int
                    name, nc_strerror(rc));
 }
 
-gf_status gf_ncr_var_1d(gf_ctx *ctx, const gf_ncr *f, const char *name, double **data, size_t *n)
+/* The whole variable name, of rank 1 or 2 (its shape into shape[]), into
+ * *data (malloc'ed; NULL on failure), fill values as NaN. */
+static gf_status read_whole(gf_ctx *ctx, const gf_ncr *f, const char *name, int rank, size_t *shape, double **data)
 {
     int varid;
-    size_t shape[1];
     *data = NULL;
-    *n = 0;
-    GF_TRY(var_shape(ctx, f, name, 1, &varid, shape));
-    double *v = malloc((shape[0] ? shape[0] : 1) * sizeof *v);
-    if (!v)
-        return GF_FAIL(ctx, GF_ERR_NOMEM, "%s: '%s': out of memory", f->path, name);
-    int rc = shape[0] ? nc_get_var_double(f->ncid, varid, v) : NC_NOERR;
-    if (rc != NC_NOERR) {
-        free(v);
-        return read_failed(ctx, f, name, rc);
-    }
-    fill_to_nan(f, varid, v, shape[0]);
-    *data = v;
-    *n = shape[0];
-    return GF_OK;
-}
-
-gf_status gf_ncr_var_2d(gf_ctx *ctx, const gf_ncr *f, const char *name, double **data, size_t *n0, size_t *n1)
-{
-    int varid;
-    size_t shape[2];
-    *data = NULL;
-    GF_TRY(var_shape(ctx, f, name, 2, &varid, shape));
-    size_t n = shape[0] * shape[1];
+    GF_TRY(var_shape(ctx, f, name, rank, &varid, shape));
+    size_t n = rank == 2 ? shape[0] * shape[1] : shape[0];
     double *v = malloc((n ? n : 1) * sizeof *v);
     if (!v)
         return GF_FAIL(ctx, GF_ERR_NOMEM, "%s: '%s': out of memory", f->path, name);
@@ -217,41 +197,57 @@ gf_status gf_ncr_var_2d(gf_ctx *ctx, const gf_ncr *f, const char *name, double *
     }
     fill_to_nan(f, varid, v, n);
     *data = v;
+    return GF_OK;
+}
+
+gf_status gf_ncr_var_1d(gf_ctx *ctx, const gf_ncr *f, const char *name, double **data, size_t *n)
+{
+    size_t shape[1];
+    *n = 0;
+    GF_TRY(read_whole(ctx, f, name, 1, shape, data));
+    *n = shape[0];
+    return GF_OK;
+}
+
+gf_status gf_ncr_var_2d(gf_ctx *ctx, const gf_ncr *f, const char *name, double **data, size_t *n0, size_t *n1)
+{
+    size_t shape[2];
+    GF_TRY(read_whole(ctx, f, name, 2, shape, data));
     *n0 = shape[0];
     *n1 = shape[1];
     return GF_OK;
 }
 
-gf_status gf_ncr_var_2d_col(gf_ctx *ctx, const gf_ncr *f, const char *name, size_t k, double *out, size_t n0)
+/* Line k of the 2-d variable name into out (n values, fill values as NaN):
+ * a row (k along dimension fixed_dim = 0) or a column (fixed_dim = 1). */
+static gf_status read_line(gf_ctx *ctx, const gf_ncr *f, const char *name, int fixed_dim, size_t k, double *out,
+                           size_t n)
 {
     int varid;
     size_t shape[2];
     GF_TRY(var_shape(ctx, f, name, 2, &varid, shape));
-    if (k >= shape[1] || n0 != shape[0])
-        return GF_FAIL(ctx, GF_ERR_IO, "%s: '%s': column %zu of %zu x %zu requested with %zu rows", f->path, name, k,
-                       shape[0], shape[1], n0);
-    size_t start[2] = {0, k}, count[2] = {n0, 1};
-    int rc = n0 ? nc_get_vara_double(f->ncid, varid, start, count, out) : NC_NOERR;
+    const int free_dim = 1 - fixed_dim;
+    if (k >= shape[fixed_dim] || n != shape[free_dim])
+        return GF_FAIL(ctx, GF_ERR_IO, "%s: '%s': %s %zu of %zu x %zu requested with %zu %s", f->path, name,
+                       fixed_dim ? "column" : "row", k, shape[0], shape[1], n, fixed_dim ? "rows" : "columns");
+    size_t start[2] = {0, 0}, count[2] = {1, 1};
+    start[fixed_dim] = k;
+    count[free_dim] = n;
+    int rc = n ? nc_get_vara_double(f->ncid, varid, start, count, out) : NC_NOERR;
     if (rc != NC_NOERR)
         return read_failed(ctx, f, name, rc);
-    fill_to_nan(f, varid, out, n0);
+    fill_to_nan(f, varid, out, n);
     return GF_OK;
+}
+
+gf_status gf_ncr_var_2d_col(gf_ctx *ctx, const gf_ncr *f, const char *name, size_t k, double *out, size_t n0)
+{
+    return read_line(ctx, f, name, 1, k, out, n0);
 }
 
 gf_status gf_ncr_var_2d_row(gf_ctx *ctx, const gf_ncr *f, const char *name, size_t k, double *out, size_t n1)
 {
-    int varid;
-    size_t shape[2];
-    GF_TRY(var_shape(ctx, f, name, 2, &varid, shape));
-    if (k >= shape[0] || n1 != shape[1])
-        return GF_FAIL(ctx, GF_ERR_IO, "%s: '%s': row %zu of %zu x %zu requested with %zu columns", f->path, name, k,
-                       shape[0], shape[1], n1);
-    size_t start[2] = {k, 0}, count[2] = {1, n1};
-    int rc = n1 ? nc_get_vara_double(f->ncid, varid, start, count, out) : NC_NOERR;
-    if (rc != NC_NOERR)
-        return read_failed(ctx, f, name, rc);
-    fill_to_nan(f, varid, out, n1);
-    return GF_OK;
+    return read_line(ctx, f, name, 0, k, out, n1);
 }
 
 gf_status gf_ncr_char_row(gf_ctx *ctx, const gf_ncr *f, const char *name, size_t k, char *buf, size_t size)

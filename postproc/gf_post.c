@@ -74,26 +74,33 @@ static int cmp_str(const void *a, const void *b)
     return strcmp(*(char *const *)a, *(char *const *)b);
 }
 
-/* Run directories (malloc'ed strings, sorted). */
-static gf_status find_runs(gf_ctx *ctx, const char *dir, char ***out, int *n_out)
+/* Appends a copy of s to the list (*list, *n entries of *cap allocated),
+ * growing it; 0 when out of memory (the list is left as it was). */
+static int append_copy(char ***list, int *n, int *cap, const char *s)
 {
-    *out = NULL;
-    *n_out = 0;
-    if (is_run_dir(dir)) {
-        char **list = malloc(sizeof *list);
-        if (!list || !(list[0] = strdup(dir)))
-            return GF_FAIL(ctx, GF_ERR_NOMEM, "post: out of memory");
-        *out = list;
-        *n_out = 1;
-        return GF_OK;
+    if (*n == *cap) {
+        const int grown_cap = *cap ? 2 * *cap : 8;
+        char **grown = realloc(*list, (size_t)grown_cap * sizeof **list);
+        if (!grown)
+            return 0;
+        *list = grown;
+        *cap = grown_cap;
     }
+    char *copy = strdup(s);
+    if (!copy)
+        return 0;
+    (*list)[(*n)++] = copy;
+    return 1;
+}
+
+/* The run directories directly below dir, appended to the list. */
+static gf_status list_run_dirs(gf_ctx *ctx, const char *dir, char ***list, int *n, int *cap)
+{
     DIR *d = opendir(dir);
     if (!d)
         return GF_FAIL(ctx, GF_ERR_IO, "post: cannot read directory %s (%s)", dir, strerror(errno));
-    int n = 0, cap = 16;
-    char **list = malloc((size_t)cap * sizeof *list);
     struct dirent *e;
-    while (list && (e = readdir(d))) {
+    while ((e = readdir(d))) {
         if (e->d_name[0] == '.' || strcmp(e->d_name, "figures") == 0)
             continue;
         char p[1200];
@@ -101,18 +108,32 @@ static gf_status find_runs(gf_ctx *ctx, const char *dir, char ***out, int *n_out
         struct stat st;
         if (stat(p, &st) != 0 || !S_ISDIR(st.st_mode) || !is_run_dir(p))
             continue;
-        if (n == cap) {
-            cap *= 2;
-            char **nl = realloc(list, (size_t)cap * sizeof *list);
-            if (!nl)
-                break;
-            list = nl;
-        }
-        list[n++] = strdup(p);
+        if (!append_copy(list, n, cap, p))
+            break;
     }
     closedir(d);
-    if (!list)
+    return GF_OK;
+}
+
+/* Run directories (malloc'ed strings, sorted): dir itself when it is one,
+ * else those directly below it. */
+static gf_status find_runs(gf_ctx *ctx, const char *dir, char ***out, int *n_out)
+{
+    int n = 0, cap = 16;
+    char **list = malloc((size_t)cap * sizeof *list);
+    *out = NULL;
+    *n_out = 0;
+    if (!list || (is_run_dir(dir) && !append_copy(&list, &n, &cap, dir))) {
+        free(list);
         return GF_FAIL(ctx, GF_ERR_NOMEM, "post: out of memory");
+    }
+    if (n == 0) {
+        gf_status st = list_run_dirs(ctx, dir, &list, &n, &cap);
+        if (st != GF_OK) {
+            free(list);
+            return st;
+        }
+    }
     qsort(list, (size_t)n, sizeof *list, cmp_str);
     *out = list;
     *n_out = n;
@@ -289,32 +310,19 @@ static void post_run(const char *run_dir, const gf_stage_info *only, gf_post_row
     gf_lock_release(&lock);
 }
 
-static int write_all(int fd, const void *buf, size_t n)
-{
-    const char *p = buf;
-    while (n > 0) {
-        ssize_t w = write(fd, p, n);
-        if (w < 0 && errno == EINTR)
-            continue;
-        if (w <= 0)
-            return -1;
-        p += w;
-        n -= (size_t)w;
-    }
-    return 0;
-}
-
-static int read_all(int fd, void *buf, size_t n)
+/* Writes (writing != 0) or reads all n bytes of buf through fd, across
+ * short transfers and interrupted calls; -1 on failure or end of file. */
+static int transfer_all(int fd, void *buf, size_t n, int writing)
 {
     char *p = buf;
     while (n > 0) {
-        ssize_t r = read(fd, p, n);
-        if (r < 0 && errno == EINTR)
+        ssize_t done = writing ? write(fd, p, n) : read(fd, p, n);
+        if (done < 0 && errno == EINTR)
             continue;
-        if (r <= 0)
+        if (done <= 0)
             return -1;
-        p += r;
-        n -= (size_t)r;
+        p += done;
+        n -= (size_t)done;
     }
     return 0;
 }
@@ -347,7 +355,7 @@ static void post_parallel(char **runs, int n, const gf_stage_info *only, int n_j
                 int rc = 1;
                 if (row) {
                     post_run(runs[next + j], only, row);
-                    rc = write_all(pfd[1], row, sizeof *row) == 0 ? 0 : 1;
+                    rc = transfer_all(pfd[1], row, sizeof *row, 1) == 0 ? 0 : 1;
                 }
                 close(pfd[1]);
                 _exit(rc);
@@ -362,7 +370,7 @@ static void post_parallel(char **runs, int n, const gf_stage_info *only, int n_j
         }
         for (int j = 0; j < batch; ++j) {
             gf_post_row *row = &rows[next + j];
-            if (fds[j] < 0 || read_all(fds[j], row, sizeof *row) != 0) {
+            if (fds[j] < 0 || transfer_all(fds[j], row, sizeof *row, 0) != 0) {
                 /* no worker or it died: do the run here, serially */
                 post_run(runs[next + j], only, row);
             }
@@ -704,25 +712,12 @@ static void find_campaigns(const char *dir, int max_depth, char ***list, int *n,
             has_run = 1;
             continue;
         }
-        if (nn == nc) {
-            nc = nc ? 2 * nc : 8;
-            char **grown = realloc(names, (size_t)nc * sizeof *names);
-            if (!grown)
-                break;
-            names = grown;
-        }
-        names[nn++] = strdup(p);
+        if (!append_copy(&names, &nn, &nc, p))
+            break;
     }
     closedir(d);
     if (has_run) {
-        if (*n == *cap) {
-            *cap = *cap ? 2 * *cap : 8;
-            char **grown = realloc(*list, (size_t)*cap * sizeof **list);
-            if (grown)
-                *list = grown;
-        }
-        if (*n < *cap)
-            (*list)[(*n)++] = strdup(dir);
+        (void)append_copy(list, n, cap, dir); /* out of memory: this campaign is left out */
     } else {
         if (nn)
             qsort(names, (size_t)nn, sizeof *names, cmp_str);

@@ -18,30 +18,6 @@
 #include "core/gf_build_info.h"
 #include "gf_ncread.h"
 
-const gf_post_col gf_summary_identity_cols[] = {
-    {"run_id", 1, "", "run identifier"},
-    {"scene", 1, "", "scene"},
-    {"St", 0, "1", "Stokes number asked for by the campaign"},
-    {"r", 0, "1", "density ratio r = sqrt(5 rho_p / 3 rho_f) asked for by the campaign"},
-    {"a", 0, "1", "column aspect ratio H0/R0 asked for by the campaign"},
-    {"Phi_i", 0, "1", "initial packing fraction asked for by the campaign"},
-    {"status", 1, "",
-     "ok, failed (the run), corrupt (done, but its files fail their manifest), error (post-processing), "
-     "incomplete (no status file, or being written)"},
-    {"error", 1, "", "per-run messages"},
-    {"fluid_model", 1, "", "fluid tier that ran"},
-    {"method", 1, "", "dem (grains) or continuum (the mu(I) continuum, engine/continuum)"},
-    {"realised_St", 0, "1", "Stokes number realised by the physical values"},
-    {"realised_r", 0, "1", "density ratio realised by the physical values"},
-    {"phi_initial_measured", 0, "1", "achieved initial packing fraction: solid volume / container volume"},
-    {"phi_initial_local", 0, "1", "achieved initial packing fraction sampled over an interior box (what Phi_i asks)"},
-    {"R0_m", 0, "m", "initial column length R0"},
-    {"H0_m", 0, "m", "initial column height H0"},
-    {"stages", 1, "", "post-processing stages that produced results (name@version)"},
-    {"run_dir", 1, "", "run directory"},
-    {"notes", 1, "", "results left empty and why (a stage whose input the run did not write)"},
-    {NULL, 0, NULL, NULL}};
-
 /* Text of an identity column held in the row's fixed fields. */
 static const char *ident_text(const gf_post_row *row, const char *name)
 {
@@ -57,20 +33,12 @@ static const char *ident_text(const gf_post_row *row, const char *name)
     return t ? t : "";
 }
 
-/* Every column: identity then the stage table's, NULL-terminated list of pointers. */
+/* Every column (gf_summary_columns), as a list of pointers. */
 static int all_columns(const gf_post_col **cols, int cap)
 {
     int n = 0;
-    for (const gf_post_col *c = gf_summary_identity_cols; c->name && n < cap; ++c)
+    for (const gf_post_col *c = gf_summary_columns; c->name && n < cap; ++c)
         cols[n++] = c;
-    for (int s = 0; s < gf_stage_count; ++s)
-        for (const gf_post_col *c = gf_stage_table[s].cols; c && c->name && n < cap; ++c) {
-            int dup = 0;
-            for (int k = 0; k < n; ++k)
-                dup |= strcmp(cols[k]->name, c->name) == 0;
-            if (!dup)
-                cols[n++] = c;
-        }
     return n;
 }
 

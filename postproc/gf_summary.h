@@ -12,8 +12,9 @@
 #include "core/gf_status.h"
 #include "stages/gf_stage.h"
 
-/* Identity columns (filled by gf_post_campaign from the run files). */
-extern const gf_post_col gf_summary_identity_cols[];
+/* Every column, identity then the stages' in stage-table order, terminated by
+ * an entry with name NULL (gf_summary_columns.c). */
+extern const gf_post_col gf_summary_columns[];
 
 gf_status gf_summary_write(gf_ctx *ctx, const char *dir, const gf_post_row *rows, int n_rows);
 

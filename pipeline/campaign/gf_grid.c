@@ -87,10 +87,7 @@ gf_status gf_grid_read(gf_ctx *ctx, const gf_cfg_doc *doc, const gf_cfg_node *no
     static const char *const combines[] = {"product", "zip", NULL};
     for (int i = 0; i < node->n_items; ++i) {
         const gf_cfg_node *item = node->items[i];
-        int g = -1;
-        for (int j = 0; j < 4; ++j)
-            if (strcmp(item->key, gf_group_names[j]) == 0)
-                g = j;
+        const int g = gf_group_index(item->key);
         if (g >= 0) {
             GF_TRY(read_axis(ctx, doc, item, g, &grid->axes[g]));
         } else if (strcmp(item->key, "combine") == 0) {

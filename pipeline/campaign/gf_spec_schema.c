@@ -115,6 +115,14 @@ void gf_spec_field_format(const gf_spec_field *f, const gf_run_spec *spec, char 
 
 const char *const gf_group_names[4] = {"St", "r", "a", "Phi_i"};
 
+int gf_group_index(const char *name)
+{
+    for (int j = 0; j < 4; ++j)
+        if (strcmp(name, gf_group_names[j]) == 0)
+            return j;
+    return -1;
+}
+
 double *gf_spec_group(gf_run_spec *spec, int i)
 {
     switch (i) {
@@ -233,10 +241,7 @@ static gf_status read_groups(gf_ctx *ctx, const gf_cfg_doc *doc, const gf_cfg_no
     const char *keys[] = {"St", "r", "a", "Phi_i", NULL};
     for (int i = 0; i < map->n_items; ++i) {
         const gf_cfg_node *item = map->items[i];
-        int g = -1;
-        for (int j = 0; j < 4; ++j)
-            if (strcmp(item->key, gf_group_names[j]) == 0)
-                g = j;
+        const int g = gf_group_index(item->key);
         if (g < 0)
             return gf_cfg_fail_unknown_key(ctx, doc, item, "groups", keys);
         double v;

@@ -56,6 +56,8 @@ void gf_spec_field_format(const gf_spec_field *f, const gf_run_spec *spec, char 
 
 /* Names of the asked groups, in grid order: St, r, a, Phi_i. */
 extern const char *const gf_group_names[4];
+/* The index of the group named name in gf_group_names, -1 if none. */
+int gf_group_index(const char *name);
 /* Pointer to the asked group i (0..3) of spec. */
 double *gf_spec_group(gf_run_spec *spec, int i);
 /* Range check of an asked group value; message without location. */

@@ -72,6 +72,47 @@ int gf_cli_parse_count(const char *cmd, const char *opt, const char *text, int m
     return (int)v;
 }
 
+int gf_cli_shared_option(const gf_cli_shared *o, int argc, char **argv, int *i)
+{
+    const char *v;
+    int m;
+    if (!strcmp(argv[*i], "--help") || !strcmp(argv[*i], "-h")) {
+        fputs(o->help, stdout);
+        return GF_EXIT_OK;
+    }
+    if (o->out_dir && (m = gf_cli_opt_value(argc, argv, i, "-o", "--output", o->out_dir)))
+        return m < 0 ? gf_cli_usage_error(o->cmd, "-o needs a directory") : GF_CLI_NEXT;
+    if (o->sets && (m = gf_cli_opt_value(argc, argv, i, NULL, "--set", &v))) {
+        if (m < 0 || *o->n_sets == GF_CLI_MAX_SETS)
+            return gf_cli_usage_error(o->cmd, "--set needs KEY=VALUE (at most %d)", GF_CLI_MAX_SETS);
+        o->sets[(*o->n_sets)++] = v;
+        return GF_CLI_NEXT;
+    }
+    return GF_CLI_OTHER;
+}
+
+int gf_cli_operand(const char *cmd, const char *arg, const char **operand)
+{
+    if (arg[0] == '-' && arg[1])
+        return gf_cli_usage_error(cmd, "unknown option '%s'", arg);
+    if (*operand)
+        return gf_cli_usage_error(cmd, "unexpected argument '%s'", arg);
+    *operand = arg;
+    return GF_CLI_NEXT;
+}
+
+int gf_cli_load_campaign(gf_ctx *ctx, const char *cmd, const char *file, const char *what, const char **sets,
+                         int n_sets, gf_campaign **c)
+{
+    if (!file)
+        return gf_cli_usage_error(cmd, "missing %s", what);
+    if (gf_campaign_load_file(ctx, file, sets, n_sets, c) != GF_OK) {
+        gf_cli_print_error(ctx);
+        return GF_EXIT_USAGE;
+    }
+    return GF_EXIT_OK;
+}
+
 void gf_cli_print_error(const gf_ctx *ctx)
 {
     if (gf_comm_rank() == 0)

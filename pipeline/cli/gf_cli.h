@@ -39,6 +39,37 @@ int gf_cli_opt_value(int argc, char **argv, int *i, const char *short_name, cons
 int gf_cli_parse_count(const char *cmd, const char *opt, const char *text, int max);
 /* Prints "grainflow <cmd>: <msg>" and the usage hint; returns GF_EXIT_USAGE. */
 int gf_cli_usage_error(const char *cmd, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+/* The most --set KEY=VALUE overrides a command takes. */
+#define GF_CLI_MAX_SETS 64
+
+/* What gf_cli_shared_option and gf_cli_operand return when the command goes
+ * on with its next argument; gf_cli_shared_option's answer for an argument
+ * that is not one of the shared options. Any other value is the exit status
+ * the command returns at once. */
+enum { GF_CLI_NEXT = -1, GF_CLI_OTHER = -2 };
+
+/* The options several subcommands read alike: -h/--help prints help (exit
+ * GF_EXIT_OK); -o/--output DIR into *out_dir, --set KEY=VALUE appended to
+ * sets (at most GF_CLI_MAX_SETS), each only where the pointer is non-NULL. */
+typedef struct gf_cli_shared {
+    const char *cmd, *help;
+    const char **out_dir;
+    const char **sets;
+    int *n_sets;
+} gf_cli_shared;
+
+/* Reads argv[*i] when it is a shared option (advancing *i past its value):
+ * GF_CLI_NEXT, GF_CLI_OTHER, or the exit status (help; a missing value). */
+int gf_cli_shared_option(const gf_cli_shared *o, int argc, char **argv, int *i);
+/* The command's one operand (the file or directory) into *operand: an
+ * unknown option or a second operand is a usage error (GF_EXIT_USAGE), else
+ * GF_CLI_NEXT. */
+int gf_cli_operand(const char *cmd, const char *arg, const char **operand);
+/* The campaign of file (missing: the usage error "missing <what>") with the
+ * overrides sets, into *c; GF_EXIT_OK, else GF_EXIT_USAGE after the message. */
+int gf_cli_load_campaign(gf_ctx *ctx, const char *cmd, const char *file, const char *what, const char **sets,
+                         int n_sets, gf_campaign **c);
+
 /* Prints the context's message (one line) on stderr. */
 void gf_cli_print_error(const gf_ctx *ctx);
 /* Non-zero when stdout is a terminal. */

@@ -14,7 +14,6 @@
 #include "schedule/gf_run_exec.h"
 #include "schedule/gf_sched.h"
 
-#define MAX_SETS 64
 
 static const char help[] =
     "usage: grainflow bench FILE.yaml [-o DIR] [--set key.path=value ...]\n"
@@ -28,36 +27,21 @@ static const char help[] =
 
 int gf_cmd_bench(int argc, char **argv)
 {
-    const char *file = NULL, *out_dir = ".", *v, *sets[MAX_SETS];
+    const char *file = NULL, *out_dir = ".", *sets[GF_CLI_MAX_SETS];
     int n_sets = 0;
+    const gf_cli_shared shared = {"bench", help, &out_dir, sets, &n_sets};
     for (int i = 1; i < argc; ++i) {
-        int m;
-        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-            fputs(help, stdout);
-            return GF_EXIT_OK;
-        } else if ((m = gf_cli_opt_value(argc, argv, &i, "-o", "--output", &out_dir))) {
-            if (m < 0)
-                return gf_cli_usage_error("bench", "-o needs a directory");
-        } else if ((m = gf_cli_opt_value(argc, argv, &i, NULL, "--set", &v))) {
-            if (m < 0 || n_sets == MAX_SETS)
-                return gf_cli_usage_error("bench", "--set needs KEY=VALUE (at most %d)", MAX_SETS);
-            sets[n_sets++] = v;
-        } else if (argv[i][0] == '-' && argv[i][1]) {
-            return gf_cli_usage_error("bench", "unknown option '%s'", argv[i]);
-        } else if (!file) {
-            file = argv[i];
-        } else {
-            return gf_cli_usage_error("bench", "unexpected argument '%s'", argv[i]);
-        }
+        int r = gf_cli_shared_option(&shared, argc, argv, &i);
+        if (r == GF_CLI_OTHER)
+            r = gf_cli_operand("bench", argv[i], &file);
+        if (r != GF_CLI_NEXT)
+            return r;
     }
-    if (!file)
-        return gf_cli_usage_error("bench", "missing FILE.yaml");
     gf_ctx ctx = {.log_level = GF_LOG_WARN};
     gf_campaign *c = NULL;
-    if (gf_campaign_load_file(&ctx, file, sets, n_sets, &c) != GF_OK) {
-        gf_cli_print_error(&ctx);
-        return GF_EXIT_USAGE;
-    }
+    int code = gf_cli_load_campaign(&ctx, "bench", file, "FILE.yaml", sets, n_sets, &c);
+    if (code != GF_EXIT_OK)
+        return code;
     if (gf_ledger_mkdirs(&ctx, out_dir) != GF_OK) {
         gf_cli_print_error(&ctx);
         gf_campaign_destroy(&c);

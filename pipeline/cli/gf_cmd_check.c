@@ -20,7 +20,6 @@
 #include "schedule/gf_ledger.h"
 #include "schedule/gf_sched.h"
 
-#define MAX_SETS 64
 #define MAX_FILES 256
 
 static const char help[] =
@@ -247,20 +246,14 @@ static int check_file(const char *file, const char *out_dir, const char *const *
 
 int gf_cmd_check(int argc, char **argv)
 {
-    const char *files[MAX_FILES], *v, *sets[MAX_SETS], *out_dir = "runs";
+    const char *files[MAX_FILES], *sets[GF_CLI_MAX_SETS], *out_dir = "runs";
     int n_files = 0, n_sets = 0, brief = 0;
+    const gf_cli_shared shared = {"check", help, &out_dir, sets, &n_sets};
     for (int i = 1; i < argc; ++i) {
-        int m;
-        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-            fputs(help, stdout);
-            return GF_EXIT_OK;
-        } else if ((m = gf_cli_opt_value(argc, argv, &i, "-o", "--output", &out_dir))) {
-            if (m < 0)
-                return gf_cli_usage_error("check", "-o needs a directory");
-        } else if ((m = gf_cli_opt_value(argc, argv, &i, NULL, "--set", &v))) {
-            if (m < 0 || n_sets == MAX_SETS)
-                return gf_cli_usage_error("check", "--set needs KEY=VALUE (at most %d)", MAX_SETS);
-            sets[n_sets++] = v;
+        int r = gf_cli_shared_option(&shared, argc, argv, &i);
+        if (r != GF_CLI_OTHER) {
+            if (r != GF_CLI_NEXT)
+                return r;
         } else if (!strcmp(argv[i], "--brief")) {
             brief = 1;
         } else if (argv[i][0] == '-' && argv[i][1]) {

@@ -33,11 +33,12 @@ int gf_cmd_post(int argc, char **argv)
 {
     const char *dir = NULL, *stage = NULL, *v;
     int n_jobs = 1, figures = 1, quiet = 0;
+    const gf_cli_shared shared = {"post", help, NULL, NULL, NULL};
     for (int i = 1; i < argc; ++i) {
-        int m;
-        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-            fputs(help, stdout);
-            return GF_EXIT_OK;
+        int m, r = gf_cli_shared_option(&shared, argc, argv, &i);
+        if (r != GF_CLI_OTHER) {
+            if (r != GF_CLI_NEXT)
+                return r;
         } else if ((m = gf_cli_opt_value(argc, argv, &i, NULL, "--stage", &stage))) {
             if (m < 0)
                 return gf_cli_usage_error("post", "--stage needs a name");
@@ -48,12 +49,8 @@ int gf_cmd_post(int argc, char **argv)
             figures = 0;
         } else if (!strcmp(argv[i], "-q") || !strcmp(argv[i], "--quiet")) {
             quiet = 1;
-        } else if (argv[i][0] == '-' && argv[i][1]) {
-            return gf_cli_usage_error("post", "unknown option '%s'", argv[i]);
-        } else if (!dir) {
-            dir = argv[i];
-        } else {
-            return gf_cli_usage_error("post", "unexpected argument '%s'", argv[i]);
+        } else if ((r = gf_cli_operand("post", argv[i], &dir)) != GF_CLI_NEXT) {
+            return r;
         }
     }
     if (!dir)

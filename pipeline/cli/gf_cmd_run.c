@@ -12,7 +12,6 @@
 #include "schedule/gf_run_exec.h"
 #include "schedule/gf_sched.h"
 
-#define MAX_SETS 64
 
 static const char help[] =
     "usage: grainflow run SCENE.yaml [-o DIR] [--set key.path=value ...] [--index K | --only RUN_ID]\n"
@@ -88,20 +87,14 @@ static int pick_run(const char *file, const gf_campaign *c, int index, const cha
 
 int gf_cmd_run(int argc, char **argv)
 {
-    const char *file = NULL, *out_dir = "runs", *v, *sets[MAX_SETS], *only = NULL;
+    const char *file = NULL, *out_dir = "runs", *v, *sets[GF_CLI_MAX_SETS], *only = NULL;
     int n_sets = 0, quiet = 0, index = -1;
+    const gf_cli_shared shared = {"run", help, &out_dir, sets, &n_sets};
     for (int i = 1; i < argc; ++i) {
-        int m;
-        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-            fputs(help, stdout);
-            return GF_EXIT_OK;
-        } else if ((m = gf_cli_opt_value(argc, argv, &i, "-o", "--output", &out_dir))) {
-            if (m < 0)
-                return gf_cli_usage_error("run", "-o needs a directory");
-        } else if ((m = gf_cli_opt_value(argc, argv, &i, NULL, "--set", &v))) {
-            if (m < 0 || n_sets == MAX_SETS)
-                return gf_cli_usage_error("run", "--set needs KEY=VALUE (at most %d)", MAX_SETS);
-            sets[n_sets++] = v;
+        int m, r = gf_cli_shared_option(&shared, argc, argv, &i);
+        if (r != GF_CLI_OTHER) {
+            if (r != GF_CLI_NEXT)
+                return r;
         } else if ((m = gf_cli_opt_value(argc, argv, &i, NULL, "--only", &only))) {
             if (m < 0)
                 return gf_cli_usage_error("run", "--only needs a run id");
@@ -113,22 +106,15 @@ int gf_cmd_run(int argc, char **argv)
             index = (int)k;
         } else if (!strcmp(argv[i], "-q") || !strcmp(argv[i], "--quiet")) {
             quiet = 1;
-        } else if (argv[i][0] == '-' && argv[i][1]) {
-            return gf_cli_usage_error("run", "unknown option '%s'", argv[i]);
-        } else if (!file) {
-            file = argv[i];
-        } else {
-            return gf_cli_usage_error("run", "unexpected argument '%s'", argv[i]);
+        } else if ((r = gf_cli_operand("run", argv[i], &file)) != GF_CLI_NEXT) {
+            return r;
         }
     }
-    if (!file)
-        return gf_cli_usage_error("run", "missing SCENE.yaml");
     gf_ctx ctx = {.log_level = GF_LOG_WARN};
     gf_campaign *c = NULL;
-    if (gf_campaign_load_file(&ctx, file, sets, n_sets, &c) != GF_OK) {
-        gf_cli_print_error(&ctx);
-        return GF_EXIT_USAGE;
-    }
+    int loaded = gf_cli_load_campaign(&ctx, "run", file, "SCENE.yaml", sets, n_sets, &c);
+    if (loaded != GF_EXIT_OK)
+        return loaded;
     const int k = pick_run(file, c, index, only);
     if (k < 0) {
         gf_campaign_destroy(&c);

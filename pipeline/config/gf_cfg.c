@@ -20,15 +20,6 @@
 
 #define MAX_FILE_BYTES (16u << 20)
 
-static char *dup_str(const char *s)
-{
-    size_t n = strlen(s) + 1;
-    char *d = malloc(n);
-    if (d)
-        memcpy(d, s, n);
-    return d;
-}
-
 void gf_cfg_node_free(gf_cfg_node *node)
 {
     if (!node)
@@ -222,7 +213,7 @@ static gf_status on_event(builder *b, const yaml_event_t *ev, int *done)
                            column);
         gf_cfg_node *n = node_new(GF_CFG_SCALAR, line, column);
         if (n)
-            n->text = dup_str((const char *)ev->data.scalar.value);
+            n->text = strdup((const char *)ev->data.scalar.value);
         if (!n || !n->text) {
             gf_cfg_node_free(n);
             return GF_FAIL(b->ctx, GF_ERR_NOMEM, "%s: out of memory while parsing", b->doc->path);
@@ -274,7 +265,7 @@ gf_status gf_cfg_parse_string(gf_ctx *ctx, const char *name, const char *text, s
     gf_cfg_doc *doc = calloc(1, sizeof *doc);
     if (!doc)
         return GF_FAIL(ctx, GF_ERR_NOMEM, "config: out of memory");
-    doc->path = dup_str(name ? name : "<config>");
+    doc->path = strdup(name ? name : "<config>");
     doc->text = malloc(len + 1);
     if (!doc->path || !doc->text) {
         gf_cfg_destroy(&doc);
@@ -370,7 +361,7 @@ gf_cfg_node *gf_cfg_scalar_new(const char *text, const char *origin)
     gf_cfg_node *n = node_new(GF_CFG_SCALAR, 1, 1);
     if (!n)
         return NULL;
-    n->text = dup_str(text);
+    n->text = strdup(text);
     if (!n->text) {
         free(n);
         return NULL;
@@ -410,7 +401,7 @@ gf_status gf_cfg_map_set_path(gf_ctx *ctx, gf_cfg_node *map, const char *dotted_
             }
         if (!dot) {
             free(value->key);
-            value->key = dup_str(part);
+            value->key = strdup(part);
             if (index >= 0) {
                 value->key_line = child->key_line;
                 value->key_column = child->key_column;
@@ -429,7 +420,7 @@ gf_status gf_cfg_map_set_path(gf_ctx *ctx, gf_cfg_node *map, const char *dotted_
                 gf_cfg_node_free(value);
                 return GF_FAIL(ctx, GF_ERR_NOMEM, "config: out of memory");
             }
-            child->key = dup_str(part);
+            child->key = strdup(part);
             child->origin = value->origin;
         }
         cur = child;
@@ -622,8 +613,8 @@ gf_cfg_node *gf_cfg_clone(const gf_cfg_node *node)
     *c = *node;
     c->items = NULL;
     c->n_items = c->cap_items = 0;
-    c->key = node->key ? dup_str(node->key) : NULL;
-    c->text = node->text ? dup_str(node->text) : NULL;
+    c->key = node->key ? strdup(node->key) : NULL;
+    c->text = node->text ? strdup(node->text) : NULL;
     if ((node->key && !c->key) || (node->text && !c->text)) {
         gf_cfg_node_free(c);
         return NULL;

@@ -126,6 +126,27 @@ static int data_range(int n, const double *v, int positive_only, double *lo, dou
     return k;
 }
 
+/* The range of the values usable on an axis (data_range), or [lo_empty,
+ * hi_empty] when there is none. */
+static void data_range_or(int n, const double *v, int positive_only, double lo_empty, double hi_empty, double *lo,
+                          double *hi)
+{
+    if (data_range(n, v, positive_only, lo, hi) == 0) {
+        *lo = lo_empty;
+        *hi = hi_empty;
+    }
+}
+
+/* The figure's file at path, with the page's title over the frame and the
+ * frame's axes drawn. */
+static gf_status open_figure(gf_ctx *ctx, const char *path, const page *p, const gf_svg_frame *f, gf_svg **s)
+{
+    GF_TRY(gf_svg_open(ctx, path, p->width_px, p->height_px, s));
+    gf_svg_title(*s, f, p->title);
+    gf_svg_axes(*s, f);
+    return GF_OK;
+}
+
 /* AUTO: log when the positive data span at least 1.5 decades and nothing is <= 0. */
 static gf_svg_scale choose_scale(gf_fig_scale want, int n, const double *v)
 {
@@ -314,14 +335,8 @@ gf_status gf_fig_regime_diagram(gf_ctx *ctx, const char *path, const gf_fig_opts
     page p = page_of(opt, "Flow regimes in the (St, r) plane");
     gf_svg_frame f = frame_of(&p, (int)strlen("Courrech du Pont et al. 2003"));
     double slo, shi, rlo, rhi;
-    if (data_range(n_runs, stokes_St, 1, &slo, &shi) == 0) {
-        slo = 1.0;
-        shi = 1.0;
-    }
-    if (data_range(n_runs, density_ratio_r, 1, &rlo, &rhi) == 0) {
-        rlo = 4.0;
-        rhi = 4.0;
-    }
+    data_range_or(n_runs, stokes_St, 1, 1.0, 1.0, &slo, &shi);
+    data_range_or(n_runs, density_ratio_r, 1, 4.0, 4.0, &rlo, &rhi);
     pad_range(GF_SVG_LOG, &slo, &shi, 1, 1);
     pad_range(GF_SVG_LOG, &rlo, &rhi, 1, 1);
     /* always show both sets of boundaries: St from 0.1 to 100, r from 1 to 20 */
@@ -329,9 +344,7 @@ gf_status gf_fig_regime_diagram(gf_ctx *ctx, const char *path, const gf_fig_opts
     set_axis(&f.y, GF_SVG_LOG, fmin(rlo, 1.0), fmax(rhi, 20.0), "density ratio r = sqrt(5 rho_p / (3 rho_f))");
 
     gf_svg *s;
-    GF_TRY(gf_svg_open(ctx, path, p.width_px, p.height_px, &s));
-    gf_svg_title(s, &f, p.title);
-    gf_svg_axes(s, &f);
+    GF_TRY(open_figure(ctx, path, &p, &f, &s));
 
     const char *cdp = "#333333", *izd = "#b22222";
     draw_regime_boundaries(s, &f, 10.0, 2.5, cdp, "7,4");    /* Courrech du Pont et al. 2003 */
@@ -365,14 +378,8 @@ gf_status gf_fig_deposit_shape(gf_ctx *ctx, const char *path, const gf_fig_opts 
     gf_svg_scale xs = opt && opt->x_scale == GF_FIG_SCALE_LOG ? GF_SVG_LOG : GF_SVG_LINEAR;
     gf_svg_scale ys = opt && opt->y_scale == GF_FIG_SCALE_LOG ? GF_SVG_LOG : GF_SVG_LINEAR;
     double alo, ahi, plo, phi;
-    if (data_range(n_runs, aspect_ratio_a, xs == GF_SVG_LOG, &alo, &ahi) == 0) {
-        alo = 0.5;
-        ahi = 2.0;
-    }
-    if (data_range(n_runs, phi_initial, ys == GF_SVG_LOG, &plo, &phi) == 0) {
-        plo = 0.55;
-        phi = 0.6;
-    }
+    data_range_or(n_runs, aspect_ratio_a, xs == GF_SVG_LOG, 0.5, 2.0, &alo, &ahi);
+    data_range_or(n_runs, phi_initial, ys == GF_SVG_LOG, 0.55, 0.6, &plo, &phi);
     if (xs == GF_SVG_LINEAR)
         alo = fmin(alo, 0.0);   /* a starts at the origin: a = 0 is "no column" */
     pad_range(xs, &alo, &ahi, xs == GF_SVG_LOG, 1);
@@ -381,9 +388,7 @@ gf_status gf_fig_deposit_shape(gf_ctx *ctx, const char *path, const gf_fig_opts 
     set_axis(&f.y, ys, plo, phi, "initial packing fraction Phi_i");
 
     gf_svg *s;
-    GF_TRY(gf_svg_open(ctx, path, p.width_px, p.height_px, &s));
-    gf_svg_title(s, &f, p.title);
-    gf_svg_axes(s, &f);
+    GF_TRY(open_figure(ctx, path, &p, &f, &s));
     int present[GF_FIG_SHAPE_COUNT] = {0}, drawn_variant[max_variants] = {0};
     int n_skipped = 0;
     for (int i = 0; i < n_runs; ++i) {
@@ -459,14 +464,8 @@ gf_status gf_fig_runout(gf_ctx *ctx, const char *path, const gf_fig_opts *opt, i
     gf_svg_scale xs = choose_scale(opt ? opt->x_scale : GF_FIG_SCALE_AUTO, n_runs, aspect_ratio_a);
     gf_svg_scale ys = choose_scale(opt ? opt->y_scale : GF_FIG_SCALE_AUTO, n_runs, runout_norm);
     double alo, ahi, rlo, rhi;
-    if (data_range(n_runs, aspect_ratio_a, xs == GF_SVG_LOG, &alo, &ahi) == 0) {
-        alo = 0.5;
-        ahi = 10.0;
-    }
-    if (data_range(n_runs, runout_norm, ys == GF_SVG_LOG, &rlo, &rhi) == 0) {
-        rlo = 0.5;
-        rhi = 10.0;
-    }
+    data_range_or(n_runs, aspect_ratio_a, xs == GF_SVG_LOG, 0.5, 10.0, &alo, &ahi);
+    data_range_or(n_runs, runout_norm, ys == GF_SVG_LOG, 0.5, 10.0, &rlo, &rhi);
     if (xs == GF_SVG_LINEAR)
         alo = fmin(alo, 0.0);
     if (ys == GF_SVG_LINEAR)
@@ -477,9 +476,7 @@ gf_status gf_fig_runout(gf_ctx *ctx, const char *path, const gf_fig_opts *opt, i
     set_axis(&f.y, ys, rlo, rhi, "normalised runout (R_inf - R0) / R0");
 
     gf_svg *s;
-    GF_TRY(gf_svg_open(ctx, path, p.width_px, p.height_px, &s));
-    gf_svg_title(s, &f, p.title);
-    gf_svg_axes(s, &f);
+    GF_TRY(open_figure(ctx, path, &p, &f, &s));
     const char *lube = "#333333", *laj = "#b22222";
     /* Lube et al. 2005 give the change of regime as a range, a0 = 1.8-2.8: shade it (where the axis reaches it) */
     int transition_drawn = f.x.hi > 1.8 && f.x.lo < 2.8;
@@ -585,9 +582,7 @@ gf_status gf_fig_timeseries(gf_ctx *ctx, const char *path, const gf_fig_opts *op
     int n_finite = series_axes(opt, n_series, series, x_label, y_label, &f);
 
     gf_svg *s;
-    GF_TRY(gf_svg_open(ctx, path, p.width_px, p.height_px, &s));
-    gf_svg_title(s, &f, p.title);
-    gf_svg_axes(s, &f);
+    GF_TRY(open_figure(ctx, path, &p, &f, &s));
     /* a series with nothing drawn has no legend row; past legend_max_rows the
      * last row says how many more were drawn */
     gf_svg_legend_entry e[legend_max_rows];

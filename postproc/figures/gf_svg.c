@@ -162,15 +162,6 @@ double gf_svg_map_y(const gf_svg_frame *f, double y)
 
 /* ---------------------------------------------------------------- file */
 
-static char *dup_str(const char *s)
-{
-    size_t n = strlen(s) + 1;
-    char *d = malloc(n);
-    if (d)
-        memcpy(d, s, n);
-    return d;
-}
-
 gf_status gf_svg_open(gf_ctx *ctx, const char *path, double width_px, double height_px, gf_svg **out)
 {
     *out = NULL;
@@ -184,7 +175,7 @@ gf_status gf_svg_open(gf_ctx *ctx, const char *path, double width_px, double hei
     s->ctx = ctx;
     s->width_px = width_px;
     s->height_px = height_px;
-    s->path = dup_str(path);
+    s->path = strdup(path);
     s->tmp = malloc(strlen(path) + 5);
     if (!s->path || !s->tmp) {
         free(s->path);

@@ -116,32 +116,18 @@ static long accumulate(gf_ctx *ctx, gf_ncr *p, const gf_grains_info *g, double t
 static gf_status write_series(gf_ctx *ctx, const gf_stage_in *in, int nb, const double *xc, const double *vd,
                               const double *b, const double *R2, double d)
 {
-    gf_postnc w;
-    int dx, dz, vx, vz, vv, vb, vr;
     double zl[N_LEVELS];
     for (int h = 0; h < N_LEVELS; ++h)
         zl[h] = levels[h] * d;
-    GF_TRY(gf_postnc_create(ctx, in, "profiles", 1, &w));
-    gf_status st = gf_postnc_dim(ctx, &w, "x", (size_t)nb, &dx);
-    if (st == GF_OK) st = gf_postnc_dim(ctx, &w, "z_level", N_LEVELS, &dz);
-    if (st == GF_OK) st = gf_postnc_var(ctx, &w, "x", 1, &dx, "m", "bin centre across the orifice", NULL, &vx);
-    if (st == GF_OK) st = gf_postnc_var(ctx, &w, "z_level", 1, &dz, "m", "height above the orifice plane", NULL, &vz);
-    if (st == GF_OK)
-        st = gf_postnc_var(ctx, &w, "v_down", 2, (const int[2]){dz, dx}, "m s-1",
-                           "mean downward grain velocity in the orifice mid-plane", NULL, &vv);
-    if (st == GF_OK)
-        st = gf_postnc_var(ctx, &w, "b", 1, &dz, "m", "diffusion length of the Gaussian fit (width^2 = 2 b z)", NULL, &vb);
-    if (st == GF_OK) st = gf_postnc_var(ctx, &w, "gauss_R2", 1, &dz, "1", "R^2 of the Gaussian fit", NULL, &vr);
-    if (st == GF_OK) st = gf_postnc_enddef(ctx, &w);
-    if (st == GF_OK) st = gf_postnc_put(ctx, &w, vx, xc);
-    if (st == GF_OK) st = gf_postnc_put(ctx, &w, vz, zl);
-    if (st == GF_OK) st = gf_postnc_put(ctx, &w, vv, vd);
-    if (st == GF_OK) st = gf_postnc_put(ctx, &w, vb, b);
-    if (st == GF_OK) st = gf_postnc_put(ctx, &w, vr, R2);
-    if (st == GF_OK)
-        return gf_postnc_close(ctx, &w);
-    gf_postnc_abort(&w);
-    return st;
+    const gf_postnc_dimension dims[] = {{"x", (size_t)nb}, {"z_level", N_LEVELS}};
+    const gf_postnc_series vars[] = {
+        {"x", 1, {0}, "m", "bin centre across the orifice", NULL, xc},
+        {"z_level", 1, {1}, "m", "height above the orifice plane", NULL, zl},
+        {"v_down", 2, {1, 0}, "m s-1", "mean downward grain velocity in the orifice mid-plane", NULL, vd},
+        {"b", 1, {1}, "m", "diffusion length of the Gaussian fit (width^2 = 2 b z)", NULL, b},
+        {"gauss_R2", 1, {1}, "1", "R^2 of the Gaussian fit", NULL, R2},
+    };
+    return gf_postnc_write(ctx, in, "profiles", 1, dims, GF_POSTNC_COUNT(dims), vars, GF_POSTNC_COUNT(vars));
 }
 
 gf_status gf_silo_profiles(gf_ctx *ctx, const gf_stage_in *in, gf_stage_out *out)

@@ -90,8 +90,7 @@ typedef struct gf_stage_info {
     int version;
     gf_stage_fn *fn;
     const char *reads;      /* files and variables read */
-    const char *writes;     /* summary columns and/or post_<stage>.nc */
-    const gf_post_col *cols;   /* terminated by an entry with name NULL */
+    const char *writes;     /* summary columns (gf_summary_columns.c) and/or post_<stage>.nc */
 } gf_stage_info;
 
 /* The stage table (gf_stage_table.c), in execution order. */
@@ -102,7 +101,5 @@ const gf_stage_info *gf_stage_find(const char *name);
 
 gf_stage_fn gf_stage_flow_rate, gf_stage_regime, gf_stage_deposit, gf_stage_pore_pressure, gf_stage_profiles,
     gf_stage_energy, gf_stage_bounce;
-extern const gf_post_col gf_stage_flow_rate_cols[], gf_stage_regime_cols[], gf_stage_deposit_cols[],
-    gf_stage_pore_pressure_cols[], gf_stage_profiles_cols[], gf_stage_energy_cols[], gf_stage_bounce_cols[];
 
 #endif

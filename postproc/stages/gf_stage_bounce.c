@@ -28,20 +28,6 @@
 #include "stages/gf_bounce_measure.h"
 #include "stages/gf_stage_util.h"
 
-const gf_post_col gf_stage_bounce_cols[] = {
-    {"bounce_V_T", 0, "m s-1", "largest approach speed while the gap exceeds R (terminal velocity)"},
-    {"bounce_V_I", 0, "m s-1", "approach speed just before the first contact (impact velocity)"},
-    {"bounce_V_R", 0, "m s-1", "first maximum of the upward velocity after the first contact"},
-    {"bounce_e", 0, "1", "effective restitution -V_R/V_I"},
-    {"bounce_eps", 0, "1", "effective restitution -V_R/V_T (Izard 2014)"},
-    {"bounce_eps_over_eps_max", 0, "1", "-V_R/V_T over the dry restitution of the contact law"},
-    {"bounce_St", 0, "1", "impact Stokes number rho_p V_I D / (9 eta_f) (Gondret et al. 2002)"},
-    {"bounce_St_T", 0, "1", "Stokes number (rho_p + rho_f/2) V_T D / (9 eta_f) (Izard 2014 eq. 3.19)"},
-    {"bounce_t_impact_s", 0, "s", "time of the first contact"},
-    {"bounce_contact_s", 0, "s", "duration of the first contact (gap <= 0)"},
-    {"bounce_contact_over_tc", 0, "1", "duration of the first contact over the contact law's t_c"},
-    {NULL, 0, NULL, NULL}};
-
 typedef struct bounce_series {
     double *t, *v, *gap;
     size_t n;

@@ -27,24 +27,6 @@
 #include "stages/gf_post_stats.h"
 #include "stages/gf_stage_util.h"
 
-const gf_post_col gf_stage_deposit_cols[] = {
-    {"R_inf_m", 0, "m", "final runout from the back wall"},
-    {"H_inf_m", 0, "m", "final deposit height (maximum)"},
-    {"R_inf_over_R0", 0, "1", "final runout over the initial column length"},
-    {"runout_norm", 0, "1", "normalised runout (R_inf - R0)/R0"},
-    {"H_inf_over_R0", 0, "1", "final height over the initial column length"},
-    {"H_back_over_H0", 0, "1", "final height at the back wall (x < 2 D) over the initial column height"},
-    {"deposit_shape", 1, "", "deposit shape (triangle or trapezoid)"},
-    {"flank_angle_deg", 0, "degree", "slope angle of the collapsed flank"},
-    {"plateau_length_m", 0, "m", "length of the full-height plateau at the back"},
-    {"deposit_area_m2", 0, "m2", "cross-section of the heap under its surface, above the floor plane"},
-    {"deposit_area_over_column", 0, "1", "heap cross-section over R0 H0 (Phi_i / Phi_deposit)"},
-    {"Ufront_particles_max_m_s", 0, "m s-1", "maximum front speed from the grains' toe"},
-    {"Ufront_particles_max_err_m_s", 0, "m s-1", "uncertainty of Ufront_particles_max_m_s"},
-    {"t_front_max_speed_s", 0, "s", "time of the maximum front speed"},
-    {"t_rest_s", 0, "s", "time after which the front stays within D/2 of its final position"},
-    {NULL, 0, NULL, NULL}};
-
 /*
  * A run without grains (method: continuum, engine/continuum/gf_continuum_collapse.h)
  * has its heap only as the diagnostics' front_position and deposit_height: the
@@ -115,16 +97,10 @@ gf_status gf_stage_deposit(gf_ctx *ctx, const gf_stage_in *in, const gf_stage_op
     if (!gf_stage_has_file(in, "particles.nc") && heap_in_diagnostics(in))
         return deposit_from_diagnostics(ctx, in, out);
     gf_ncr p;
-    GF_TRY(gf_stage_open(ctx, in, "particles.nc", &p));
     gf_grains_info g;
-    gf_status st = gf_stage_grains(ctx, &p, 1, &g);
-    if (st != GF_OK) {
-        gf_ncr_close(&p);
-        return st;
-    }
-    double D = gf_ncr_att_double_or(&p, "grain_diameter_m", g.mean_diameter_m);
-    if (!(D > 0.0))
-        D = g.mean_diameter_m;
+    double D;
+    GF_TRY(gf_stage_open_grains(ctx, in, &p, &g, &D));
+    gf_status st = GF_OK;
     double R0, H0;
     gf_stage_column(&p, &R0, &H0);
     const size_t n = g.n_all, nt = g.n_time;
@@ -191,44 +167,25 @@ gf_status gf_stage_deposit(gf_ctx *ctx, const gf_stage_in *in, const gf_stage_op
         }
     }
     if (st == GF_OK && opts && opts->write_series) {
-        gf_postnc w;
-        int dim_t, dim_b, v_t, v_f, v_fn, v_xb, v_h;
-        st = gf_postnc_create(ctx, in, "deposit", 1, &w);
-        if (st == GF_OK) {
-            double *fnorm = malloc((fn ? fn : 1) * sizeof *fnorm), *xb = malloc((dep.n_bins + 1) * sizeof *xb);
-            for (size_t k = 0; fnorm && k < fn; ++k)
-                fnorm[k] = R0 > 0.0 ? (fx[k] - R0) / R0 : NAN;
-            for (size_t b = 0; xb && b < dep.n_bins; ++b)
-                xb[b] = (b + 0.5) * dep.bin_m;
-            if (!fnorm || !xb)
-                st = GF_FAIL(ctx, GF_ERR_NOMEM, "deposit: out of memory");
-            if (st == GF_OK) st = gf_postnc_dim(ctx, &w, "time", fn, &dim_t);
-            if (st == GF_OK) st = gf_postnc_dim(ctx, &w, "x_bin", dep.n_bins, &dim_b);
-            if (st == GF_OK)
-                st = gf_postnc_var(ctx, &w, "time", 1, &dim_t, "s since 2000-01-01 00:00:00", "time", "time", &v_t);
-            if (st == GF_OK)
-                st = gf_postnc_var(ctx, &w, "front_position", 1, &dim_t, "m", "front position from the back wall",
-                                   NULL, &v_f);
-            if (st == GF_OK)
-                st = gf_postnc_var(ctx, &w, "front_position_norm", 1, &dim_t, "1", "(x_front - R0)/R0", NULL, &v_fn);
-            if (st == GF_OK)
-                st = gf_postnc_var(ctx, &w, "x_bin", 1, &dim_b, "m", "bin centre from the back wall", NULL, &v_xb);
-            if (st == GF_OK)
-                st = gf_postnc_var(ctx, &w, "deposit_height", 1, &dim_b, "m", "final deposit surface height", NULL,
-                                   &v_h);
-            if (st == GF_OK) st = gf_postnc_enddef(ctx, &w);
-            if (st == GF_OK) st = gf_postnc_put(ctx, &w, v_t, ft);
-            if (st == GF_OK) st = gf_postnc_put(ctx, &w, v_f, fx);
-            if (st == GF_OK) st = gf_postnc_put(ctx, &w, v_fn, fnorm);
-            if (st == GF_OK) st = gf_postnc_put(ctx, &w, v_xb, xb);
-            if (st == GF_OK) st = gf_postnc_put(ctx, &w, v_h, dep.bin_height_m);
-            if (st == GF_OK)
-                st = gf_postnc_close(ctx, &w);
-            else
-                gf_postnc_abort(&w);
-            free(fnorm);
-            free(xb);
-        }
+        double *fnorm = malloc((fn ? fn : 1) * sizeof *fnorm), *xb = malloc((dep.n_bins + 1) * sizeof *xb);
+        for (size_t k = 0; fnorm && k < fn; ++k)
+            fnorm[k] = R0 > 0.0 ? (fx[k] - R0) / R0 : NAN;
+        for (size_t b = 0; xb && b < dep.n_bins; ++b)
+            xb[b] = (b + 0.5) * dep.bin_m;
+        const gf_postnc_dimension dims[] = {{"time", fn}, {"x_bin", dep.n_bins}};
+        const gf_postnc_series vars[] = {
+            {"time", 1, {0}, "s since 2000-01-01 00:00:00", "time", "time", ft},
+            {"front_position", 1, {0}, "m", "front position from the back wall", NULL, fx},
+            {"front_position_norm", 1, {0}, "1", "(x_front - R0)/R0", NULL, fnorm},
+            {"x_bin", 1, {1}, "m", "bin centre from the back wall", NULL, xb},
+            {"deposit_height", 1, {1}, "m", "final deposit surface height", NULL, dep.bin_height_m},
+        };
+        if (fnorm && xb)
+            st = gf_postnc_write(ctx, in, "deposit", 1, dims, GF_POSTNC_COUNT(dims), vars, GF_POSTNC_COUNT(vars));
+        else
+            st = GF_FAIL(ctx, GF_ERR_NOMEM, "deposit: out of memory");
+        free(fnorm);
+        free(xb);
     }
     gf_deposit_free(&dep);
     gf_stage_grains_free(&g);

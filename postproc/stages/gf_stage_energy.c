@@ -12,12 +12,6 @@
 
 #include "stages/gf_stage_util.h"
 
-const gf_post_col gf_stage_energy_cols[] = {
-    {"Ecx_max_over_mgD", 0, "1", "maximum horizontal kinetic energy per grain over m g D"},
-    {"t_Ecx_max_s", 0, "s", "time of the maximum horizontal kinetic energy"},
-    {"grain_mass_kg", 0, "kg", "mean mobile-grain mass m"},
-    {NULL, 0, NULL, NULL}};
-
 gf_status gf_stage_energy(gf_ctx *ctx, const gf_stage_in *in, const gf_stage_opts *opts, gf_stage_out *out)
 {
     if (!gf_stage_has_file(in, "diagnostics.nc"))
@@ -67,24 +61,12 @@ gf_status gf_stage_energy(gf_ctx *ctx, const gf_stage_in *in, const gf_stage_opt
             e[k] /= scale;
     }
     if (st == GF_OK && opts && opts->write_series) {
-        gf_postnc w;
-        int dt, vt, ve;
-        st = gf_postnc_create(ctx, in, "energy", 1, &w);
-        if (st == GF_OK) {
-            st = gf_postnc_dim(ctx, &w, "time", nt, &dt);
-            if (st == GF_OK)
-                st = gf_postnc_var(ctx, &w, "time", 1, &dt, "s since 2000-01-01 00:00:00", "time", "time", &vt);
-            if (st == GF_OK)
-                st = gf_postnc_var(ctx, &w, "ecx_over_mgD", 1, &dt, "1",
-                                   "horizontal kinetic energy per grain over m g D", NULL, &ve);
-            if (st == GF_OK) st = gf_postnc_enddef(ctx, &w);
-            if (st == GF_OK) st = gf_postnc_put(ctx, &w, vt, t);
-            if (st == GF_OK) st = gf_postnc_put(ctx, &w, ve, e);
-            if (st == GF_OK)
-                st = gf_postnc_close(ctx, &w);
-            else
-                gf_postnc_abort(&w);
-        }
+        const gf_postnc_dimension dims[] = {{"time", nt}};
+        const gf_postnc_series vars[] = {
+            {"time", 1, {0}, "s since 2000-01-01 00:00:00", "time", "time", t},
+            {"ecx_over_mgD", 1, {0}, "1", "horizontal kinetic energy per grain over m g D", NULL, e},
+        };
+        st = gf_postnc_write(ctx, in, "energy", 1, dims, GF_POSTNC_COUNT(dims), vars, GF_POSTNC_COUNT(vars));
     }
     free(t), free(e);
     return st;

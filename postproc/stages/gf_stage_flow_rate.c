@@ -24,33 +24,6 @@
 #include "stages/gf_silo_flow.h"
 #include "stages/gf_stage_util.h"
 
-const gf_post_col gf_stage_flow_rate_cols[] = {
-    {"Qg_mean", 0, "m3 s-1", "time-averaged grain flow rate over the steady window"},
-    {"Qg_std", 0, "m3 s-1", "standard deviation of the grain flow rate over the steady window"},
-    {"Qg_sem", 0, "m3 s-1", "standard error of the mean grain flow rate (block averaging)"},
-    {"Qg_drift_rel", 0, "1", "relative drift of the grain flow rate across the steady window"},
-    {"Qf_mean", 0, "m3 s-1", "time-averaged fluid flow rate over the steady window"},
-    {"t_steady_s", 0, "s", "start of the steady window (MSER-5)"},
-    {"t_end_s", 0, "s", "last time of the series"},
-    /* scene silo (stages/gf_silo_flow.h); the fits are the campaign's */
-    {"silo_D_over_d", 0, "1", "orifice hydraulic diameter 2 Ltx Lty / (Ltx + Lty) over the grain diameter"},
-    {"silo_H_over_d", 0, "1", "fill height over the grain diameter, mean over the steady window"},
-    {"silo_Q", 0, "s-1", "steady discharge rate, grains per second"},
-    {"silo_Q_sem", 0, "s-1", "standard error of the steady discharge rate (block averaging)"},
-    {"silo_Q_mass", 0, "kg s-1", "steady discharge rate, mass per second"},
-    {"silo_Q_nd", 0, "1", "steady discharge rate in grains per sqrt(d/g)"},
-    {"silo_phi_out", 0, "1", "packing fraction over the orifice, mean over the steady window"},
-    {"silo_t_steady_s", 0, "s", "start of the steady window of the discharge rate (MSER-5)"},
-    {"beverloo_k", 0, "1", "Beverloo k of the campaign's fit Q^(2/5) = a + b D"},
-    {"beverloo_C", 0, "1", "Beverloo C of the campaign's fit, with phi = 0.5 at the orifice"},
-    {"beverloo_R2", 0, "1", "coefficient of determination of the Beverloo line"},
-    {"saturation_Q0", 0, "s-1", "Q0 of the campaign's fit Q = Q0 (1 - exp(-H/H0))"},
-    {"saturation_H0_over_d", 0, "1", "H0 / d of the campaign's fit Q = Q0 (1 - exp(-H/H0))"},
-    {"saturation_R2", 0, "1", "coefficient of determination of the saturation fit"},
-    {"Q_phi_slope", 0, "1", "slope of the campaign's line Q sqrt(d/g) = a + b phi_out"},
-    {"Q_phi_R2", 0, "1", "coefficient of determination of the line Q against phi_out"},
-    {NULL, 0, NULL, NULL}};
-
 gf_status gf_stage_flow_rate(gf_ctx *ctx, const gf_stage_in *in, const gf_stage_opts *opts, gf_stage_out *out)
 {
     (void)opts;

@@ -21,17 +21,6 @@
 
 #include "stages/gf_stage_util.h"
 
-const gf_post_col gf_stage_pore_pressure_cols[] = {
-    {"Pb_station", 1, "", "gauge reported in the summary"},
-    {"Pb_x_m", 0, "m", "gauge position x"},
-    {"Pb_min_Pa", 0, "Pa", "minimum basal excess pore pressure"},
-    {"Pb_max_Pa", 0, "Pa", "maximum basal excess pore pressure"},
-    {"t_Pb_min_s", 0, "s", "time of the minimum"},
-    {"t_Pb_max_s", 0, "s", "time of the maximum"},
-    {"Pb_ext_over_drho_g_H0", 0, "1", "dominant extremum of the basal excess pore pressure over drho g H0"},
-    {"t_Pb_relax_s", 0, "s", "time after which |P_b| stays below 10 % of its extremum"},
-    {NULL, 0, NULL, NULL}};
-
 typedef struct trace_stats {
     double pmin, pmax, tmin, tmax, pext, trelax;
 } trace_stats;
@@ -125,8 +114,6 @@ gf_status gf_stage_pore_pressure(gf_ctx *ctx, const gf_stage_in *in, const gf_st
     }
     gf_ncr_close(&f);
     if (st == GF_OK && opts && opts->write_series) {
-        gf_postnc w;
-        int dt, ds, dims[2], v_t, v_x, v_p, v_min, v_max, v_tr;
         double *pn = malloc(ns * nt * sizeof *pn + 1), *a = malloc(3 * ns * sizeof *a + 1);
         if (!pn || !a)
             st = GF_FAIL(ctx, GF_ERR_NOMEM, "pore_pressure: out of memory");
@@ -137,37 +124,18 @@ gf_status gf_stage_pore_pressure(gf_ctx *ctx, const gf_stage_in *in, const gf_st
             a[ns + s] = ts[s].pmax;
             a[2 * ns + s] = ts[s].trelax;
         }
-        if (st == GF_OK) st = gf_postnc_create(ctx, in, "pore_pressure", 1, &w);
         if (st == GF_OK) {
-            st = gf_postnc_dim(ctx, &w, "station", ns, &ds);
-            if (st == GF_OK) st = gf_postnc_dim(ctx, &w, "time", nt, &dt);
-            dims[0] = ds, dims[1] = dt;
-            if (st == GF_OK)
-                st = gf_postnc_var(ctx, &w, "time", 1, &dt, "s since 2000-01-01 00:00:00", "time", "time", &v_t);
-            if (st == GF_OK) st = gf_postnc_var(ctx, &w, "x", 1, &ds, "m", "gauge position x", NULL, &v_x);
-            if (st == GF_OK)
-                st = gf_postnc_var(ctx, &w, "excess_pore_pressure_norm", 2, dims, "1",
-                                   "basal excess pore pressure over drho g H0", NULL, &v_p);
-            if (st == GF_OK)
-                st = gf_postnc_var(ctx, &w, "excess_pore_pressure_min", 1, &ds, "Pa", "minimum excess pore pressure",
-                                   NULL, &v_min);
-            if (st == GF_OK)
-                st = gf_postnc_var(ctx, &w, "excess_pore_pressure_max", 1, &ds, "Pa", "maximum excess pore pressure",
-                                   NULL, &v_max);
-            if (st == GF_OK)
-                st = gf_postnc_var(ctx, &w, "relaxation_time", 1, &ds, "s",
-                                   "time after which |P| stays below 10 % of its extremum", NULL, &v_tr);
-            if (st == GF_OK) st = gf_postnc_enddef(ctx, &w);
-            if (st == GF_OK) st = gf_postnc_put(ctx, &w, v_t, t);
-            if (st == GF_OK) st = gf_postnc_put(ctx, &w, v_x, xs);
-            if (st == GF_OK) st = gf_postnc_put(ctx, &w, v_p, pn);
-            if (st == GF_OK) st = gf_postnc_put(ctx, &w, v_min, a);
-            if (st == GF_OK) st = gf_postnc_put(ctx, &w, v_max, a + ns);
-            if (st == GF_OK) st = gf_postnc_put(ctx, &w, v_tr, a + 2 * ns);
-            if (st == GF_OK)
-                st = gf_postnc_close(ctx, &w);
-            else
-                gf_postnc_abort(&w);
+            const gf_postnc_dimension dims[] = {{"station", ns}, {"time", nt}};
+            const gf_postnc_series vars[] = {
+                {"time", 1, {1}, "s since 2000-01-01 00:00:00", "time", "time", t},
+                {"x", 1, {0}, "m", "gauge position x", NULL, xs},
+                {"excess_pore_pressure_norm", 2, {0, 1}, "1", "basal excess pore pressure over drho g H0", NULL, pn},
+                {"excess_pore_pressure_min", 1, {0}, "Pa", "minimum excess pore pressure", NULL, a},
+                {"excess_pore_pressure_max", 1, {0}, "Pa", "maximum excess pore pressure", NULL, a + ns},
+                {"relaxation_time", 1, {0}, "s", "time after which |P| stays below 10 % of its extremum", NULL,
+                 a + 2 * ns},
+            };
+            st = gf_postnc_write(ctx, in, "pore_pressure", 1, dims, GF_POSTNC_COUNT(dims), vars, GF_POSTNC_COUNT(vars));
         }
         free(pn);
         free(a);

@@ -31,21 +31,6 @@
 #include "stages/gf_silo_flow.h"
 #include "stages/gf_stage_util.h"
 
-const gf_post_col gf_stage_profiles_cols[] = {
-    {"Ug_max_m_s", 0, "m s-1", "largest slab-averaged grain velocity over the steady window"},
-    {"phi_g_max", 0, "1", "largest slab grain volume fraction over the steady window"},
-    {"h_g_m", 0, "m", "flowing-layer height: top of the slabs with phi_g >= phi_g_max/2"},
-    {"Uf_max_m_s", 0, "m s-1", "largest slab-averaged fluid velocity over the steady window"},
-    {"n_profile_frames", 0, "1", "frames averaged for the profiles"},
-    {"St_bar", 0, "1", "mean particle Stokes number rho_p <|u| D> / (9 eta_f) over the steady window"},
-    {"Re_bar", 0, "1", "mean particle Reynolds number St_bar / r"},
-    /* scene silo (stages/gf_silo_flow.h) */
-    {"silo_b_z1_over_d", 0, "1", "silo: diffusion length b / d of the Gaussian v_y(x) at z = d"},
-    {"silo_b_z5_over_d", 0, "1", "silo: diffusion length b / d of the Gaussian v_y(x) at z = 5 d"},
-    {"silo_gauss_R2_min", 0, "1", "silo: smallest R^2 of the Gaussian fits at z >= 3 d"},
-    {"silo_b_decreasing", 0, "1", "silo: 1 when b(z) decreases from z = d up, else 0"},
-    {NULL, 0, NULL, NULL}};
-
 #define NSLAB_MAX 4096
 
 /* Fluid slab averages from fields.nc over records with time >= t0. */
@@ -119,16 +104,10 @@ gf_status gf_stage_profiles(gf_ctx *ctx, const gf_stage_in *in, const gf_stage_o
         gf_ncr_close(&d);
     }
     gf_ncr p;
-    GF_TRY(gf_stage_open(ctx, in, "particles.nc", &p));
     gf_grains_info g;
-    gf_status st = gf_stage_grains(ctx, &p, 1, &g);
-    if (st != GF_OK) {
-        gf_ncr_close(&p);
-        return st;
-    }
-    double D = gf_ncr_att_double_or(&p, "grain_diameter_m", g.mean_diameter_m);
-    if (!(D > 0.0))
-        D = g.mean_diameter_m;
+    double D;
+    GF_TRY(gf_stage_open_grains(ctx, in, &p, &g, &D));
+    gf_status st = GF_OK;
     const double rho_p = gf_ncr_att_double_or(&p, "grain_density_kg_m3", NAN);
     const double eta = gf_ncr_att_double_or(&p, "fluid_viscosity_Pa_s", 0.0);
     gf_groups_input gi;
@@ -233,30 +212,14 @@ gf_status gf_stage_profiles(gf_ctx *ctx, const gf_stage_in *in, const gf_stage_o
                         eta > 0.0 && r_dens > 0.0 ? rho_p * (speed_d / (double)nframes) / (9.0 * eta) / r_dens : NAN);
     }
     if (st == GF_OK && opts && opts->write_series) {
-        gf_postnc w;
-        int dy, vy, vu, vp, vf;
-        st = gf_postnc_create(ctx, in, "profiles", 1, &w);
-        if (st == GF_OK) {
-            st = gf_postnc_dim(ctx, &w, "y_slab", ns, &dy);
-            if (st == GF_OK) st = gf_postnc_var(ctx, &w, "y_slab", 1, &dy, "m", "slab centre above the plane", NULL, &vy);
-            if (st == GF_OK)
-                st = gf_postnc_var(ctx, &w, "u_grain", 1, &dy, "m s-1", "grain-phase averaged downslope velocity",
-                                   NULL, &vu);
-            if (st == GF_OK)
-                st = gf_postnc_var(ctx, &w, "phi_grain", 1, &dy, "1", "grain volume fraction", NULL, &vp);
-            if (st == GF_OK)
-                st = gf_postnc_var(ctx, &w, "u_fluid", 1, &dy, "m s-1", "fluid-phase averaged downslope velocity",
-                                   NULL, &vf);
-            if (st == GF_OK) st = gf_postnc_enddef(ctx, &w);
-            if (st == GF_OK) st = gf_postnc_put(ctx, &w, vy, yc);
-            if (st == GF_OK) st = gf_postnc_put(ctx, &w, vu, ug);
-            if (st == GF_OK) st = gf_postnc_put(ctx, &w, vp, phi);
-            if (st == GF_OK) st = gf_postnc_put(ctx, &w, vf, uf);
-            if (st == GF_OK)
-                st = gf_postnc_close(ctx, &w);
-            else
-                gf_postnc_abort(&w);
-        }
+        const gf_postnc_dimension dims[] = {{"y_slab", ns}};
+        const gf_postnc_series vars[] = {
+            {"y_slab", 1, {0}, "m", "slab centre above the plane", NULL, yc},
+            {"u_grain", 1, {0}, "m s-1", "grain-phase averaged downslope velocity", NULL, ug},
+            {"phi_grain", 1, {0}, "1", "grain volume fraction", NULL, phi},
+            {"u_fluid", 1, {0}, "m s-1", "fluid-phase averaged downslope velocity", NULL, uf},
+        };
+        st = gf_postnc_write(ctx, in, "profiles", 1, dims, GF_POSTNC_COUNT(dims), vars, GF_POSTNC_COUNT(vars));
     }
     gf_stage_grains_free(&g);
     free(t), free(x), free(y), free(z), free(u), free(v), free(w), free(vol), free(mom), free(ug), free(phi), free(uf), free(yc);

@@ -47,28 +47,6 @@
 #include "stages/gf_regime.h"
 #include "stages/gf_stage_util.h"
 
-const gf_post_col gf_stage_regime_cols[] = {
-    {"regime", 1, "", "flow regime (viscous, inertial, free-fall, transitional)"},
-    {"regime_nearest", 1, "", "regime of the nearest reference time scale"},
-    {"regime_confidence", 0, "1", "distance in decades from the nearest to the next reference time scale"},
-    {"T_s", 0, "s", "flow time scale (avalanche: V_g/Q_g; collapse: time to rest)"},
-    {"T_over_Tv", 0, "1", "flow time over the viscous time T_v"},
-    {"T_over_Ti", 0, "1", "flow time over the inertial time T_i"},
-    {"T_over_Tff", 0, "1", "flow time over the free-fall time T_ff"},
-    {"Tv_s", 0, "s", "viscous time T_v"},
-    {"Ti_s", 0, "s", "inertial time T_i"},
-    {"Tff_s", 0, "s", "free-fall time T_ff"},
-    {"Tvisq_s", 0, "s", "collapse viscous time T_visq = eta/(drho g H0)"},
-    {"St_groups", 0, "1", "Stokes number from the physical values"},
-    {"r_groups", 0, "1", "density ratio r = sqrt(5 rho_p / 3 rho_f) from the physical values"},
-    {"Vg_m3", 0, "m3", "solid volume of the mobile grains"},
-    {"Ufront_max_m_s", 0, "m s-1", "maximum front speed resolved by front_position (bins of D)"},
-    {"Ufront_max_err_m_s", 0, "m s-1", "uncertainty of Ufront_max_m_s"},
-    {"Ufront_max_over_R0_per_Tvisq", 0, "1", "maximum front speed in units of R0/T_visq"},
-    {"t_rest_over_Tvisq", 0, "1", "time to rest in units of T_visq"},
-    {"t_rest_over_T0", 0, "1", "time to rest in units of T0 = sqrt(2 H0/g)"},
-    {NULL, 0, NULL, NULL}};
-
 static void put_labels(gf_post_row *row, double T, const gf_scales *sc, const gf_regime_result *res)
 {
     gf_post_row_set_text(row, "regime", gf_regime_name(res->label));

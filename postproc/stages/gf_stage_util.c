@@ -166,6 +166,20 @@ void gf_stage_grains_free(gf_grains_info *g)
     g->mobile = NULL;
 }
 
+gf_status gf_stage_open_grains(gf_ctx *ctx, const gf_stage_in *in, gf_ncr *p, gf_grains_info *g, double *D)
+{
+    GF_TRY(gf_stage_open(ctx, in, "particles.nc", p));
+    gf_status st = gf_stage_grains(ctx, p, 1, g);
+    if (st != GF_OK) {
+        gf_ncr_close(p);
+        return st;
+    }
+    *D = gf_ncr_att_double_or(p, "grain_diameter_m", g->mean_diameter_m);
+    if (!(*D > 0.0))
+        *D = g->mean_diameter_m;
+    return GF_OK;
+}
+
 #define NC_CHECK(call, what)                                                                              \
     do {                                                                                                  \
         int rc_ = (call);                                                                                 \
@@ -265,4 +279,31 @@ void gf_postnc_abort(gf_postnc *w)
         nc_close(w->ncid);
     w->ncid = -1;
     unlink(w->tmp);
+}
+
+gf_status gf_postnc_write(gf_ctx *ctx, const gf_stage_in *in, const char *stage, int version,
+                          const gf_postnc_dimension *dims, int n_dims, const gf_postnc_series *vars, int n_vars)
+{
+    int dimid[GF_POSTNC_MAX_DIMS], varid[GF_POSTNC_MAX_VARS];
+    if (n_dims > GF_POSTNC_MAX_DIMS || n_vars > GF_POSTNC_MAX_VARS)
+        return GF_FAIL(ctx, GF_ERR_ARG, "post_%s.nc: %d dimensions and %d variables (at most %d and %d)", stage,
+                       n_dims, n_vars, GF_POSTNC_MAX_DIMS, GF_POSTNC_MAX_VARS);
+    gf_postnc w;
+    GF_TRY(gf_postnc_create(ctx, in, stage, version, &w));
+    gf_status st = GF_OK;
+    for (int k = 0; st == GF_OK && k < n_dims; ++k)
+        st = gf_postnc_dim(ctx, &w, dims[k].name, dims[k].len, &dimid[k]);
+    for (int k = 0; st == GF_OK && k < n_vars; ++k) {
+        const gf_postnc_series *s = &vars[k];
+        const int ids[2] = {dimid[s->dims[0]], s->ndims > 1 ? dimid[s->dims[1]] : -1};
+        st = gf_postnc_var(ctx, &w, s->name, s->ndims, ids, s->units, s->long_name, s->standard_name, &varid[k]);
+    }
+    if (st == GF_OK)
+        st = gf_postnc_enddef(ctx, &w);
+    for (int k = 0; st == GF_OK && k < n_vars; ++k)
+        st = gf_postnc_put(ctx, &w, varid[k], vars[k].data);
+    if (st == GF_OK)
+        return gf_postnc_close(ctx, &w);
+    gf_postnc_abort(&w);
+    return st;
 }

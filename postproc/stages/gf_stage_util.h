@@ -55,6 +55,11 @@ typedef struct gf_grains_info {
 } gf_grains_info;
 gf_status gf_stage_grains(gf_ctx *ctx, const gf_ncr *particles, int keep_arrays, gf_grains_info *g);
 void gf_stage_grains_free(gf_grains_info *g);
+/* Opens <run>/particles.nc into *p (gf_stage_open) and reads its grains with
+ * their arrays (gf_stage_grains) into *g, and the grain diameter D: the
+ * grain_diameter_m attribute, else (absent or not > 0) the grains' mean.
+ * On failure nothing is left open. */
+gf_status gf_stage_open_grains(gf_ctx *ctx, const gf_stage_in *in, gf_ncr *p, gf_grains_info *g, double *D);
 
 /* ---- post_<stage>.nc writer ---- */
 typedef struct gf_postnc {
@@ -74,5 +79,30 @@ gf_status gf_postnc_put(gf_ctx *ctx, gf_postnc *w, int varid, const double *data
 /* Closes and renames into place; gf_postnc_abort removes the temporary file. */
 gf_status gf_postnc_close(gf_ctx *ctx, gf_postnc *w);
 void gf_postnc_abort(gf_postnc *w);
+
+/* The dimensions and variables of a whole post_<stage>.nc, for
+ * gf_postnc_write: a variable names its dimensions by their index in the
+ * file's list (at most GF_POSTNC_MAX_DIMS and GF_POSTNC_MAX_VARS). */
+#define GF_POSTNC_MAX_DIMS 4
+#define GF_POSTNC_MAX_VARS 16
+typedef struct gf_postnc_dimension {
+    const char *name;
+    size_t len;
+} gf_postnc_dimension;
+typedef struct gf_postnc_series {
+    const char *name;
+    int ndims;
+    int dims[2];
+    const char *units, *long_name, *standard_name;   /* standard_name NULL: none */
+    const double *data;   /* the values, in the order of the dimensions */
+} gf_postnc_series;
+
+/* Writes <run>/post_<stage>.nc: the dimensions, then each variable with its
+ * attributes (gf_postnc_var) and values, in list order; the file appears
+ * complete or not at all. */
+gf_status gf_postnc_write(gf_ctx *ctx, const gf_stage_in *in, const char *stage, int version,
+                          const gf_postnc_dimension *dims, int n_dims, const gf_postnc_series *vars, int n_vars);
+/* The number of entries of an array (dims, vars). */
+#define GF_POSTNC_COUNT(array) ((int)(sizeof(array) / sizeof((array)[0])))
 
 #endif

@@ -64,25 +64,26 @@ typedef struct chute_window {
     int n;
 } chute_window;
 
-static int parse(int argc, char **argv, chute_args *a)
-{
-    *a = (chute_args){.seed = 31, .angle_deg = 27.5, .bed_D = 12.0, .length_D = 6.0, .width_D = 6.0,
-                      .tc_nd = 3.1e-3, .eps = 0.5, .spin_nd = 200.0, .avg_nd = 50.0, .every_nd = 1.0};
-    const gf_bench_flag flags[] = {
-        {"--angle", GF_BENCH_REAL, &a->angle_deg}, {"--bed", GF_BENCH_REAL, &a->bed_D},
-        {"--length", GF_BENCH_REAL, &a->length_D}, {"--width", GF_BENCH_REAL, &a->width_D},
-        {"--tc", GF_BENCH_REAL, &a->tc_nd},        {"--eps", GF_BENCH_REAL, &a->eps},
-        {"--spin", GF_BENCH_REAL, &a->spin_nd},    {"--avg", GF_BENCH_REAL, &a->avg_nd},
-        {"--every", GF_BENCH_REAL, &a->every_nd},  {"--seed", GF_BENCH_LONG, &a->seed},
-        {"--window", GF_BENCH_INT, &a->window},    {"--lammps-data", GF_BENCH_PATH, &a->lammps},
-        {"--measure-dump", GF_BENCH_PATH, &a->dump},
-    };
-    return gf_bench_parse_flags(argc, argv, flags, sizeof flags / sizeof *flags) && a->seed > 0 && a->bed_D > 0.0 && a->length_D > 0.0 && a->width_D > 0.0 && a->tc_nd > 0.0 &&
-           a->spin_nd >= 0.0 && a->every_nd > 0.0 && a->avg_nd >= a->every_nd && a->window >= 0;
-}
+static const chute_args defaults = {.seed = 31, .angle_deg = 27.5, .bed_D = 12.0, .length_D = 6.0, .width_D = 6.0,
+                                    .tc_nd = 3.1e-3, .eps = 0.5, .spin_nd = 200.0, .avg_nd = 50.0, .every_nd = 1.0};
 
-static gf_status make_spec(gf_ctx *ctx, const chute_args *a, gf_run_spec *s)
+static const gf_bench_flag flags[] = {
+    GF_BENCH_FLAG("--angle", REAL, chute_args, angle_deg),   GF_BENCH_FLAG("--seed", LONG, chute_args, seed),
+    GF_BENCH_FLAG("--bed", REAL, chute_args, bed_D),         GF_BENCH_FLAG("--length", REAL, chute_args, length_D),
+    GF_BENCH_FLAG("--width", REAL, chute_args, width_D),     GF_BENCH_FLAG("--tc", REAL, chute_args, tc_nd),
+    GF_BENCH_FLAG("--eps", REAL, chute_args, eps),           GF_BENCH_FLAG("--spin", REAL, chute_args, spin_nd),
+    GF_BENCH_FLAG("--avg", REAL, chute_args, avg_nd),        GF_BENCH_FLAG("--every", REAL, chute_args, every_nd),
+    GF_BENCH_FLAG("--window", INT, chute_args, window),      GF_BENCH_FLAG("--lammps-data", PATH, chute_args, lammps),
+    GF_BENCH_FLAG("--measure-dump", PATH, chute_args, dump),
+};
+
+GF_BENCH_VALID(chute_args, a->seed > 0 && a->bed_D > 0.0 && a->length_D > 0.0 && a->width_D > 0.0 &&
+               a->tc_nd > 0.0 && a->spin_nd >= 0.0 && a->every_nd > 0.0 && a->avg_nd >= a->every_nd &&
+               a->window >= 0)
+
+static gf_status make_spec(gf_ctx *ctx, const void *args, gf_run_spec *s)
 {
+    const chute_args *a = args;
     gf_run_spec_defaults(s);
     snprintf(s->scene, sizeof s->scene, "avalanche");
     snprintf(s->fluid.model, sizeof s->fluid.model, "none");
@@ -122,19 +123,15 @@ static long spin_steps(gf_sim *sim, double spin_nd)
     return n;
 }
 
-/* The geometry and schedule the LAMMPS input needs besides the law. */
-static int append_chute(gf_sim *sim, const chute_args *a, const char *data_path)
+/* The geometry and schedule the LAMMPS input needs besides the law
+ * (gf_bench_params_fn). */
+static void append_chute(FILE *f, gf_sim *sim, const double lo[3], const double hi[3], const void *args)
 {
-    double lo[3], hi[3];
-    int per[3];
-    gf_sim_box(sim, lo, hi, per);
-    FILE *f = gf_bench_append_params(data_path);
-    if (!f)
-        return 0;
+    const chute_args *a = args;
     double th = a->angle_deg * M_PI / 180.0;
+    (void)lo;
     fprintf(f, "TOP=%.17g\nGX_UNIT=%.17g\nGY_UNIT=%.17g\nSPIN_STEPS=%ld\nSAMPLE_STEPS=%ld\nSAMPLES=%d\n", hi[1],
             sin(th), -cos(th), spin_steps(sim, a->spin_nd), steps_of(sim, a->every_nd), n_samples(a));
-    return fclose(f) == 0;
 }
 
 /* Adds one sample of the mobile grains p (domain dom) to the window. */
@@ -241,7 +238,7 @@ static int finish(chute_reader *r, double cpu_s)
 }
 
 /* grainflow's own run: spin-up, then one sample per --every. */
-static int run(gf_ctx *ctx, gf_sim *sim, const chute_args *a, const gf_measure_domain *dom)
+static int run_grainflow(gf_ctx *ctx, gf_sim *sim, const chute_args *a, const gf_measure_domain *dom)
 {
     chute_reader r = {.ctx = ctx, .who = "grainflow", .sim = sim, .a = a, .dom = dom};
     double c0 = gf_bench_cpu_time_s();
@@ -305,31 +302,25 @@ static int measure_dump(gf_ctx *ctx, gf_sim *sim, const chute_args *a, const gf_
     return finish(&rd, 0.0);
 }
 
-int main(int argc, char **argv)
+/* The LAMMPS run's snapshots measured (--measure-dump), or grainflow's own
+ * run after the export. */
+static int run(gf_ctx *ctx, gf_sim *sim, const void *args)
 {
-    chute_args a;
-    if (!parse(argc, argv, &a)) {
-        fprintf(stderr, "usage: gf-bench-avalanche [--angle DEG] [--seed S] [--bed H_over_D] [--length L_over_D] "
-                        "[--width W_over_D] [--tc TC_ND] [--eps E] [--spin T_ND] [--avg T_ND] [--every T_ND] "
-                        "[--window K] [--lammps-data PATH] [--measure-dump PATH]\n");
-        return 2;
-    }
-    gf_ctx ctx = {0};
-    gf_run_spec spec;
-    gf_sim *sim = NULL;
-    if (!gf_bench_start(&ctx, make_spec(&ctx, &a, &spec), &spec, "gf-bench-avalanche", &sim))
-        return 1;
+    const chute_args *a = args;
     gf_measure_domain dom;
     gf_sim_box(sim, dom.lo_m, dom.hi_m, dom.periodic);
-    int ok = 1;
-    if (a.dump)
-        ok = measure_dump(&ctx, sim, &a, &dom);
-    else {
-        if (a.lammps && !(gf_bench_write_lammps(sim, a.lammps) && append_chute(sim, &a, a.lammps)))
-            fprintf(stderr, "gf-bench-avalanche: cannot write %s\n", a.lammps), ok = 0;
-        if (ok && !run(&ctx, sim, &a, &dom))
-            fprintf(stderr, "gf-bench-avalanche: %s\n", ctx.last_msg), ok = 0;
-    }
-    gf_sim_destroy(&sim);
-    return ok ? 0 : 1;
+    if (a->dump)
+        return measure_dump(ctx, sim, a, &dom) ? 0 : 1;
+    if (a->lammps && !gf_bench_export_lammps(sim, a->lammps, append_chute, a, gf_bench_main_program.name))
+        return 1;
+    if (run_grainflow(ctx, sim, a, &dom))
+        return 0;
+    fprintf(stderr, "%s: %s\n", gf_bench_main_program.name, ctx->last_msg);
+    return 1;
 }
+
+const gf_bench_program gf_bench_main_program = {
+    "gf-bench-avalanche",
+    "[--angle DEG] [--seed S] [--bed H_over_D] [--length L_over_D] [--width W_over_D] [--tc TC_ND] [--eps E] "
+    "[--spin T_ND] [--avg T_ND] [--every T_ND] [--window K] [--lammps-data PATH] [--measure-dump PATH]",
+    sizeof(chute_args), &defaults, flags, sizeof flags / sizeof *flags, valid, make_spec, run};

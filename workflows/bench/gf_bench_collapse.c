@@ -41,20 +41,20 @@ typedef struct collapse_args {
     const char *lammps, *dump;
 } collapse_args;
 
-static int parse(int argc, char **argv, collapse_args *a)
-{
-    *a = (collapse_args){.seed = 1, .aspect = 1.0, .length_D = 16.0, .width_D = 3.0};
-    const gf_bench_flag flags[] = {
-        {"--seed", GF_BENCH_LONG, &a->seed},          {"--aspect", GF_BENCH_REAL, &a->aspect},
-        {"--length", GF_BENCH_REAL, &a->length_D},    {"--width", GF_BENCH_REAL, &a->width_D},
-        {"--end-time", GF_BENCH_REAL, &a->end_nd},    {"--lammps-data", GF_BENCH_PATH, &a->lammps},
-        {"--dump", GF_BENCH_PATH, &a->dump},
-    };
-    return gf_bench_parse_flags(argc, argv, flags, sizeof flags / sizeof *flags) && a->seed > 0 && a->aspect > 0.0 && a->length_D > 0.0 && a->width_D > 0.0;
-}
+static const collapse_args defaults = {.seed = 1, .aspect = 1.0, .length_D = 16.0, .width_D = 3.0};
 
-static gf_status make_spec(gf_ctx *ctx, const collapse_args *a, gf_run_spec *s)
+static const gf_bench_flag flags[] = {
+    GF_BENCH_FLAG("--seed", LONG, collapse_args, seed),       GF_BENCH_FLAG("--aspect", REAL, collapse_args, aspect),
+    GF_BENCH_FLAG("--length", REAL, collapse_args, length_D), GF_BENCH_FLAG("--width", REAL, collapse_args, width_D),
+    GF_BENCH_FLAG("--end-time", REAL, collapse_args, end_nd), GF_BENCH_FLAG("--dump", PATH, collapse_args, dump),
+    GF_BENCH_FLAG("--lammps-data", PATH, collapse_args, lammps),
+};
+
+GF_BENCH_VALID(collapse_args, a->seed > 0 && a->aspect > 0.0 && a->length_D > 0.0 && a->width_D > 0.0)
+
+static gf_status make_spec(gf_ctx *ctx, const void *args, gf_run_spec *s)
 {
+    const collapse_args *a = args;
     gf_run_spec_defaults(s); /* column_collapse with Izard's grains and contacts */
     s->seed = (uint64_t)a->seed;
     s->end_time_nd = a->end_nd; /* 0: the scene's end time */
@@ -63,32 +63,15 @@ static gf_status make_spec(gf_ctx *ctx, const collapse_args *a, gf_run_spec *s)
     return gf_run_spec_set_param(ctx, s, "width_over_D", a->width_D);
 }
 
-/* The geometry the LAMMPS input needs besides the law (column_collapse's walls). */
-static int append_geometry(gf_sim *sim, const collapse_args *a, const char *data_path)
+/* The geometry the LAMMPS input needs besides the law (column_collapse's
+ * walls; gf_bench_params_fn). */
+static void append_geometry(FILE *f, gf_sim *sim, const double lo[3], const double hi[3], const void *args)
 {
+    const collapse_args *a = args;
     const gf_run_spec *s = gf_sim_spec(sim);
-    double lo[3], hi[3];
-    int per[3];
-    gf_sim_box(sim, lo, hi, per);
-    FILE *f = gf_bench_append_params(data_path);
-    if (!f)
-        return 0;
     double D = s->grains.diameter_m;
     fprintf(f, "R0=%.17g\nH0=%.17g\nL=%.17g\nTOP=%.17g\nW=%.17g\nRHO=%.17g\n", a->length_D * D,
             a->aspect * a->length_D * D, hi[0], hi[1], hi[2] - lo[2], s->grains.density_kg_m3);
-    return fclose(f) == 0;
-}
-
-static int write_dump(gf_sim *sim, const char *path)
-{
-    const gf_particles *p = gf_sim_particles(sim);
-    FILE *f = fopen(path, "w");
-    if (!f)
-        return 0;
-    for (size_t i = 0; i < p->n_local; ++i)
-        fprintf(f, "%.17g %.17g %.17g %.17g %d\n", p->x_m[i], p->y_m[i], p->z_m[i], p->radius_m[i],
-                (p->flags[i] & GF_P_GLUED) ? 2 : 1);
-    return fclose(f) == 0;
 }
 
 /* Steps to rest or to the end time; *cpu_s: CPU time of gf_sim_advance alone. */
@@ -128,30 +111,25 @@ static int report(gf_sim *sim, const gf_scene_desc *d, const collapse_args *a, d
     return 1;
 }
 
-int main(int argc, char **argv)
+/* The export, the collapse to rest, its report and the dump. */
+static int run(gf_ctx *ctx, gf_sim *sim, const void *args)
 {
-    collapse_args a;
-    if (!parse(argc, argv, &a)) {
-        fprintf(stderr, "usage: gf-bench-collapse [--seed S] [--aspect A] [--length R0_over_D] [--width W_over_D] "
-                        "[--end-time T_nd] [--lammps-data PATH] [--dump PATH]\n");
-        return 2;
-    }
-    gf_ctx ctx = {0};
-    gf_run_spec spec;
-    gf_sim *sim = NULL;
+    const collapse_args *a = args;
+    const char *program = gf_bench_main_program.name;
     const gf_scene_desc *d = gf_scene_find("column_collapse");
-    if (!gf_bench_start(&ctx, make_spec(&ctx, &a, &spec), &spec, "gf-bench-collapse", &sim))
-        return 1;
-    int ok = 1;
-    if (a.lammps && !(gf_bench_write_lammps(sim, a.lammps) && append_geometry(sim, &a, a.lammps)))
-        fprintf(stderr, "gf-bench-collapse: cannot write %s\n", a.lammps), ok = 0;
+    int ok = !a->lammps || gf_bench_export_lammps(sim, a->lammps, append_geometry, a, program);
     double cpu = 0.0;
     if (ok && run_to_rest(sim, d, &cpu) != GF_OK)
-        fprintf(stderr, "gf-bench-collapse: %s\n", ctx.last_msg), ok = 0;
-    if (ok && !report(sim, d, &a, cpu))
-        fprintf(stderr, "gf-bench-collapse: diagnostics failed: %s\n", ctx.last_msg), ok = 0;
-    if (ok && a.dump && !write_dump(sim, a.dump))
-        fprintf(stderr, "gf-bench-collapse: cannot write %s\n", a.dump), ok = 0;
-    gf_sim_destroy(&sim);
+        fprintf(stderr, "%s: %s\n", program, ctx->last_msg), ok = 0;
+    if (ok && !report(sim, d, a, cpu))
+        fprintf(stderr, "%s: diagnostics failed: %s\n", program, ctx->last_msg), ok = 0;
+    if (ok && a->dump && !gf_bench_write_dump(sim, a->dump, 1))
+        fprintf(stderr, "%s: cannot write %s\n", program, a->dump), ok = 0;
     return ok ? 0 : 1;
 }
+
+const gf_bench_program gf_bench_main_program = {
+    "gf-bench-collapse",
+    "[--seed S] [--aspect A] [--length R0_over_D] [--width W_over_D] [--end-time T_nd] [--lammps-data PATH] "
+    "[--dump PATH]",
+    sizeof(collapse_args), &defaults, flags, sizeof flags / sizeof *flags, valid, make_spec, run};

@@ -42,6 +42,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "gf_bench_args.h"
 #include "gf_bench_clock.h"
 #include "gf_lammps_data.h"
 #include "gf_sim.h"
@@ -115,18 +116,6 @@ static unsigned long long state_hash(gf_sim *sim)
     return h;
 }
 
-/* One line "x y z radius" per grain (SI). */
-static int write_dump(gf_sim *sim, const char *path)
-{
-    const gf_particles *p = gf_sim_particles(sim);
-    FILE *f = fopen(path, "w");
-    if (!f)
-        return 0;
-    for (size_t i = 0; i < p->n_local; ++i)
-        fprintf(f, "%.17g %.17g %.17g %.17g\n", p->x_m[i], p->y_m[i], p->z_m[i], p->radius_m[i]);
-    return fclose(f) == 0;
-}
-
 /* Builds and settles the bed of n grains, and checkpoints it to ck. */
 static int settle_bed(gf_ctx *ctx, const bench_args *a, long n, const char *ck)
 {
@@ -153,13 +142,27 @@ static int settle_bed(gf_ctx *ctx, const bench_args *a, long n, const char *ck)
     return st == GF_OK;
 }
 
+/* The flags besides --n, --threads (each may repeat) and --scene (a name);
+ * the usage line is main's. */
+static const gf_bench_flag flags[] = {
+    GF_BENCH_FLAG("--steps", LONG, bench_args, steps),
+    GF_BENCH_FLAG("--settle", REAL, bench_args, settle_nd),
+    GF_BENCH_FLAG("--friction", REAL, bench_args, friction),
+    GF_BENCH_FLAG("--lammps-data", PATH, bench_args, lammps),
+    GF_BENCH_FLAG("--dump", PATH, bench_args, dump),
+    GF_BENCH_FLAG("--bed", PATH, bench_args, bed),
+    GF_BENCH_FLAG("--sort-every", INT, bench_args, sort_every),
+    GF_BENCH_FLAG("--near-skin", REAL, bench_args, near_skin),
+    GF_BENCH_FLAG("--sort-bed", PATH, bench_args, sort_bed),
+};
+
 static int parse(int argc, char **argv, bench_args *a)
 {
     memset(a, 0, sizeof *a);
     a->steps = 2000;
     a->settle_nd = 4.0;
     a->friction = 0.5;
-    for (int i = 1; i < argc; ++i) {
+    for (int i = 1; i < argc; i += 2) {
         const char *v = i + 1 < argc ? argv[i + 1] : NULL;
         if (!v)
             return 0;
@@ -167,29 +170,10 @@ static int parse(int argc, char **argv, bench_args *a)
             a->n[a->n_n++] = atol(v);
         else if (!strcmp(argv[i], "--threads") && a->n_threads < 8)
             a->threads[a->n_threads++] = atoi(v);
-        else if (!strcmp(argv[i], "--steps"))
-            a->steps = atol(v);
-        else if (!strcmp(argv[i], "--settle"))
-            a->settle_nd = atof(v);
-        else if (!strcmp(argv[i], "--friction"))
-            a->friction = atof(v);
-        else if (!strcmp(argv[i], "--lammps-data"))
-            a->lammps = v;
-        else if (!strcmp(argv[i], "--dump"))
-            a->dump = v;
-        else if (!strcmp(argv[i], "--bed"))
-            a->bed = v;
-        else if (!strcmp(argv[i], "--sort-every"))
-            a->sort_every = atoi(v);
-        else if (!strcmp(argv[i], "--near-skin"))
-            a->near_skin = atof(v);
-        else if (!strcmp(argv[i], "--sort-bed"))
-            a->sort_bed = v;
         else if (!strcmp(argv[i], "--scene") && (!strcmp(v, "column_collapse") || !strcmp(v, "settled_bed")))
             a->collapse = !strcmp(v, "column_collapse");
-        else
+        else if (!gf_bench_set_flag(flags, sizeof flags / sizeof *flags, a, argv[i], v))
             return 0;
-        ++i;
     }
     if (!a->n_n)
         a->n[a->n_n++] = 10000;
@@ -238,10 +222,9 @@ int main(int argc, char **argv)
                 gf_sim_destroy(&sim);
                 break;
             }
-            if (q == 0 && a.lammps && k == a.n_n - 1 && !gf_bench_write_lammps(sim, a.lammps)) {
-                fprintf(stderr, "gf-bench-dem: cannot write %s\n", a.lammps);
+            const int export_bed = q == 0 && a.lammps && k == a.n_n - 1; /* the last N's bed */
+            if (export_bed && !gf_bench_export_lammps(sim, a.lammps, NULL, NULL, "gf-bench-dem"))
                 return 1;
-            }
             const gf_timers *t = gf_sim_timers(sim);
             double e0[GF_TIMER_COUNT];
             memcpy(e0, t->elapsed_s, sizeof e0);
@@ -266,7 +249,7 @@ int main(int argc, char **argv)
                    100 * tn / wall, 100 * tf / wall, 100 * ti / wall, 100 * (wall - tn - tf - ti) / wall,
                    ls.builds, ls.near_builds, (double)ls.pairs / ng, (double)ls.near_pairs / ng, state_hash(sim));
             fflush(stdout);
-            if (q == 0 && a.dump && !write_dump(sim, a.dump)) {
+            if (q == 0 && a.dump && !gf_bench_write_dump(sim, a.dump, 0)) {
                 fprintf(stderr, "gf-bench-dem: cannot write %s\n", a.dump);
                 return 1;
             }

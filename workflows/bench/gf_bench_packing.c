@@ -20,18 +20,25 @@
 #include "gf_bench_clock.h"
 #include "particles/gf_packing.h"
 
+typedef struct packing_args {
+    long n, seed;
+    double mu, phi;
+} packing_args;
+
+static const gf_bench_flag flags[] = {
+    GF_BENCH_FLAG("--grains", LONG, packing_args, n),
+    GF_BENCH_FLAG("--mu", REAL, packing_args, mu),
+    GF_BENCH_FLAG("--phi", REAL, packing_args, phi),
+    GF_BENCH_FLAG("--seed", LONG, packing_args, seed),
+};
+
 int main(int argc, char **argv)
 {
-    long n = 500, seed = 1;
-    double mu = 0.2, phi = NAN;
-    const gf_bench_flag flags[] = {
-        {"--grains", GF_BENCH_LONG, &n}, {"--mu", GF_BENCH_REAL, &mu},
-        {"--phi", GF_BENCH_REAL, &phi},  {"--seed", GF_BENCH_LONG, &seed},
-    };
-    if (!gf_bench_parse_flags(argc, argv, flags, sizeof flags / sizeof *flags) || n < 50) {
-        fprintf(stderr, "usage: gf-bench-packing [--grains N >= 50] [--mu MU] [--phi PHI] [--seed S]\n");
-        return 2;
-    }
+    packing_args a = {.n = 500, .seed = 1, .mu = 0.2, .phi = NAN};
+    if (!gf_bench_parse_flags(argc, argv, flags, sizeof flags / sizeof *flags, &a) || a.n < 50)
+        return gf_bench_usage("gf-bench-packing", "[--grains N >= 50] [--mu MU] [--phi PHI] [--seed S]");
+    const long n = a.n, seed = a.seed;
+    const double mu = a.mu, phi = a.phi;
     gf_ctx ctx = {.log_level = GF_LOG_WARN};
     const double D = 7.6e-3, p = 0.05;
     /* N grains at Phi ~ 0.6 fill L^3 = N V / 0.6 */

@@ -37,19 +37,20 @@ typedef struct silo_args {
     const char *lammps;
 } silo_args;
 
-static int parse(int argc, char **argv, silo_args *a)
-{
-    *a = (silo_args){.orifice = 6.0, .fill = 25.4, .width = 25.0, .transient = 5.0, .window = 20.0};
-    const gf_bench_flag flags[] = {
-        {"--orifice", GF_BENCH_REAL, &a->orifice},     {"--fill", GF_BENCH_REAL, &a->fill},
-        {"--width", GF_BENCH_REAL, &a->width},         {"--transient", GF_BENCH_REAL, &a->transient},
-        {"--window", GF_BENCH_REAL, &a->window},       {"--lammps-data", GF_BENCH_PATH, &a->lammps},
-    };
-    return gf_bench_parse_flags(argc, argv, flags, sizeof flags / sizeof *flags) && a->orifice >= 2.0 && a->fill > 0.0 && a->width > a->orifice && a->transient >= 0.0 && a->window > 0.0;
-}
+static const silo_args defaults = {.orifice = 6.0, .fill = 25.4, .width = 25.0, .transient = 5.0, .window = 20.0};
 
-static gf_status make_spec(gf_ctx *ctx, const silo_args *a, gf_run_spec *s)
+static const gf_bench_flag flags[] = {
+    GF_BENCH_FLAG("--orifice", REAL, silo_args, orifice), GF_BENCH_FLAG("--fill", REAL, silo_args, fill),
+    GF_BENCH_FLAG("--width", REAL, silo_args, width),     GF_BENCH_FLAG("--transient", REAL, silo_args, transient),
+    GF_BENCH_FLAG("--window", REAL, silo_args, window),   GF_BENCH_FLAG("--lammps-data", PATH, silo_args, lammps),
+};
+
+GF_BENCH_VALID(silo_args, a->orifice >= 2.0 && a->fill > 0.0 && a->width > a->orifice && a->transient >= 0.0 &&
+               a->window > 0.0)
+
+static gf_status make_spec(gf_ctx *ctx, const void *args, gf_run_spec *s)
 {
+    const silo_args *a = args;
     gf_silo_thesis_spec(s);
     GF_TRY(gf_run_spec_set_param(ctx, s, "width_x_over_d", a->width));
     GF_TRY(gf_run_spec_set_param(ctx, s, "width_z_over_d", a->width));
@@ -59,18 +60,14 @@ static gf_status make_spec(gf_ctx *ctx, const silo_args *a, gf_run_spec *s)
     return gf_run_spec_set_param(ctx, s, "settle_time_nd", 10.0);
 }
 
-static int append_geometry(gf_sim *sim, const silo_args *a, const char *data_path)
+/* The silo's geometry for the LAMMPS input (gf_bench_params_fn). */
+static void append_geometry(FILE *f, gf_sim *sim, const double lo[3], const double hi[3], const void *args)
 {
+    const silo_args *a = args;
     const double d = gf_sim_spec(sim)->grains.diameter_m, L = a->width * d, o = a->orifice * d;
-    double lo[3], hi[3];
-    int per[3];
-    gf_sim_box(sim, lo, hi, per);
-    FILE *f = gf_bench_append_params(data_path);
-    if (!f)
-        return 0;
+    (void)lo;
     fprintf(f, "LXB=%.17g\nLZB=%.17g\nHB=%.17g\nOX0=%.17g\nOX1=%.17g\nOZ0=%.17g\nOZ1=%.17g\nEXIT_Y=%.17g\n", L, L,
             hi[1], 0.5 * (L - o), 0.5 * (L + o), 0.5 * (L - o), 0.5 * (L + o), -d);
-    return fclose(f) == 0;
 }
 
 /* Discharges for t_nd sqrt(d/g) with the scene's upkeep; adds the CPU time. */
@@ -88,47 +85,39 @@ static gf_status discharge(gf_sim *sim, const gf_scene_desc *desc, double t_nd, 
     return GF_OK;
 }
 
-int main(int argc, char **argv)
+/* The export, the transient, then the window's count; one line. */
+static int run(gf_ctx *ctx, gf_sim *sim, const void *args)
 {
-    silo_args a;
-    if (!parse(argc, argv, &a)) {
-        fprintf(stderr, "usage: gf-bench-silo [--orifice D_over_d] [--fill H_over_d] [--width L_over_d] "
-                        "[--transient T_nd] [--window T_nd] [--lammps-data PATH]\n");
-        return 2;
-    }
-    gf_ctx ctx = {0};
-    gf_run_spec spec;
-    gf_sim *sim = NULL;
+    const silo_args *a = args;
+    if (a->lammps && !gf_bench_export_lammps(sim, a->lammps, append_geometry, a, gf_bench_main_program.name))
+        return 1;
     const gf_scene_desc *desc = gf_scene_find("silo");
-    if (!gf_bench_start(&ctx, make_spec(&ctx, &a, &spec), &spec, "gf-bench-silo", &sim))
-        return 1;
-    if (a.lammps && !(gf_bench_write_lammps(sim, a.lammps) && append_geometry(sim, &a, a.lammps))) {
-        fprintf(stderr, "gf-bench-silo: cannot write %s\n", a.lammps);
-        gf_sim_destroy(&sim);
-        return 1;
-    }
     double cpu = 0.0, v[8], out0, t0;
     long s0 = gf_sim_step_count(sim);
-    gf_status st = discharge(sim, desc, a.transient, &cpu);
+    gf_status st = discharge(sim, desc, a->transient, &cpu);
     if (st == GF_OK)
         st = desc->diagnose(sim, v);
     out0 = v[0], t0 = gf_sim_time_s(sim);
     if (st == GF_OK)
-        st = discharge(sim, desc, a.window, &cpu);
+        st = discharge(sim, desc, a->window, &cpu);
     if (st == GF_OK)
         st = desc->diagnose(sim, v);
     if (st != GF_OK) {
-        fprintf(stderr, "gf-bench-silo: %s\n", ctx.last_msg);
-        gf_sim_destroy(&sim);
+        fprintf(stderr, "%s: %s\n", gf_bench_main_program.name, ctx->last_msg);
         return 1;
     }
-    const double tg = sqrt(spec.grains.diameter_m / spec.gravity_m_s2), T = gf_sim_time_s(sim) - t0;
+    const gf_run_spec *spec = gf_sim_spec(sim);
+    const double tg = sqrt(spec->grains.diameter_m / spec->gravity_m_s2), T = gf_sim_time_s(sim) - t0;
     const size_t n = gf_sim_particles(sim)->n_local;
     const long steps = gf_sim_step_count(sim) - s0;
     printf("silo D = %.3g d, %zu grains: %.0f grains left in %.3f sqrt(d/g), Q = %.6g grains/s = %.5g sqrt(g/d); "
            "%ld steps in %.2f s CPU = %.4f us per grain-step\n",
-           a.orifice, n, v[0] - out0, T / tg, (v[0] - out0) / T, (v[0] - out0) / T * tg, steps, cpu,
+           a->orifice, n, v[0] - out0, T / tg, (v[0] - out0) / T, (v[0] - out0) / T * tg, steps, cpu,
            1e6 * cpu / ((double)n * (double)steps));
-    gf_sim_destroy(&sim);
     return 0;
 }
+
+const gf_bench_program gf_bench_main_program = {
+    "gf-bench-silo",
+    "[--orifice D_over_d] [--fill H_over_d] [--width L_over_d] [--transient T_nd] [--window T_nd] [--lammps-data PATH]",
+    sizeof(silo_args), &defaults, flags, sizeof flags / sizeof *flags, valid, make_spec, run};

@@ -38,6 +38,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "gf_bench_clock.h"
 #include "gf_sim.h"
 #include "scenes/gf_scene.h"
 
@@ -48,13 +49,6 @@ typedef struct result {
     double *x; /* final positions (x, y, z per grain), for the bitwise comparison */
     size_t n;
 } result;
-
-static double cpu_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
 
 static double load1(void)
 {
@@ -98,7 +92,7 @@ static void frictionless_spec(gf_run_spec *s, const char *scene, double D, doubl
 static int create_timed(gf_ctx *ctx, const gf_run_spec *s, int on, gf_sim **sim, double *c0)
 {
     gf_sim_options o = {.n_threads = 1, .tuning.keep_all_work = !on};
-    *c0 = cpu_s();
+    *c0 = gf_bench_cpu_time_s();
     return gf_sim_create(ctx, s, &o, sim) == GF_OK;
 }
 static int run_gas(int on, result *r)
@@ -120,7 +114,7 @@ static int run_gas(int on, result *r)
             return fail(&ctx);
         de = fmax(de, fabs(gf_particles_kinetic_energy(gf_sim_particles(sim)) / e0 - 1.0));
     }
-    r->cpu_s = cpu_s() - c0;
+    r->cpu_s = gf_bench_cpu_time_s() - c0;
     r->obs[0] = de;
     keep_positions(sim, r);
     gf_sim_destroy(&sim);
@@ -138,7 +132,7 @@ static int run_bed(int on, result *r)
     double c0;
     if (!create_timed(&ctx, &s, on, &sim, &c0) || gf_sim_advance(sim, 5000) != GF_OK)
         return fail(&ctx);
-    r->cpu_s = cpu_s() - c0;
+    r->cpu_s = gf_bench_cpu_time_s() - c0;
     const gf_particles *p = gf_sim_particles(sim);
     double y = 0.0;
     for (size_t i = 0; i < p->n_local; ++i)
@@ -198,7 +192,7 @@ static int run_collapse(collapse_kind kind, int on, unsigned seed, result *r)
     }
     const gf_scene_desc *d = gf_scene_find("column_collapse");
     gf_sim *sim = NULL;
-    double c0 = cpu_s(), ov_max = 0.0;
+    double c0 = gf_bench_cpu_time_s(), ov_max = 0.0;
     if (gf_sim_create(&ctx, &s, &o, &sim) != GF_OK)
         return fail(&ctx);
     if (kind == COLLAPSE_OUTPUT) {
@@ -214,7 +208,7 @@ static int run_collapse(collapse_kind kind, int on, unsigned seed, result *r)
             ov_max = fmax(ov_max, ov);
         }
     }
-    r->cpu_s = cpu_s() - c0;
+    r->cpu_s = gf_bench_cpu_time_s() - c0;
     const double D = s.grains.diameter_m, R0 = 8.0 * D;
     double v[8];
     if (d->diagnose(sim, v) != GF_OK)

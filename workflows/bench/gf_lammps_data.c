@@ -76,13 +76,6 @@ static int write_atoms(gf_sim *sim, const char *path)
     return fclose(f) == 0;
 }
 
-FILE *gf_bench_append_params(const char *path)
-{
-    char pp[600];
-    snprintf(pp, sizeof pp, "%s.params", path);
-    return fopen(pp, "a");
-}
-
 int gf_bench_write_lammps(gf_sim *sim, const char *path)
 {
     if (!write_atoms(sim, path))
@@ -113,5 +106,40 @@ int gf_bench_write_lammps(gf_sim *sim, const char *path)
     fprintf(f, "LX=%.17g\nLZ=%.17g\nD=%.17g\n", hi[0] - lo[0], hi[2] - lo[2], s->grains.diameter_m);
     fprintf(f, "MUW=%.17g\nZETA=%.17g\nTSUJI=%.17g\nN_GLUED=%zu\n", cp.mu_wall, cp.zeta,
             gf_bench_tsuji_input(cp.zeta), n_glued);
+    return fclose(f) == 0;
+}
+
+int gf_bench_export_lammps(gf_sim *sim, const char *path, gf_bench_params_fn *append, const void *args,
+                           const char *program)
+{
+    int ok = gf_bench_write_lammps(sim, path);
+    if (ok && append) {
+        char pp[600];
+        double lo[3], hi[3];
+        int per[3];
+        gf_sim_box(sim, lo, hi, per);
+        snprintf(pp, sizeof pp, "%s.params", path);
+        FILE *f = fopen(pp, "a");
+        if (f)
+            append(f, sim, lo, hi, args);
+        ok = f && fclose(f) == 0;
+    }
+    if (!ok)
+        fprintf(stderr, "%s: cannot write %s\n", program, path);
+    return ok;
+}
+
+int gf_bench_write_dump(gf_sim *sim, const char *path, int with_type)
+{
+    const gf_particles *p = gf_sim_particles(sim);
+    FILE *f = fopen(path, "w");
+    if (!f)
+        return 0;
+    for (size_t i = 0; i < p->n_local; ++i) {
+        fprintf(f, "%.17g %.17g %.17g %.17g", p->x_m[i], p->y_m[i], p->z_m[i], p->radius_m[i]);
+        if (with_type)
+            fprintf(f, " %d", (p->flags[i] & GF_P_GLUED) ? 2 : 1);
+        fputc('\n', f);
+    }
     return fclose(f) == 0;
 }

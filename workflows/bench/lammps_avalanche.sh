@@ -29,21 +29,15 @@
 # NICE=, PIN=CPU: how both codes run (workflows/bench/lammps_common.sh).
 set -eu
 SCRIPT=lammps_avalanche
-. "$(dirname "$0")/lammps_common.sh" # NICE, PINNED, LMP
+. "$(dirname "$0")/lammps_common.sh" # ROOT, NICE, PINNED, LMP
 ANGLES=${1:-27.5}
-ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${2:-$ROOT/build}
 SEED=${3:-31}
 CHUTE_ARGS=${CHUTE_ARGS-}
-BENCH=$BUILD/workflows/bench/gf-bench-avalanche
-[ -x "$BENCH" ] || { echo "lammps_avalanche: build gf-bench-avalanche first ($BENCH)" >&2; exit 1; }
-WORK=$(mktemp -d /tmp/gf_lmp_avalanche_XXXXXX)
-trap 'rm -rf "$WORK"' EXIT
+lammps_bench "$BUILD" gf-bench-avalanche # BENCH, WORK
 
 lammps_input() { # data file $1, snapshots to $2
-    lammps_head "p f p" "$1"
-    lammps_glued_pairs
-    cat <<EOS
+    lammps_glued_input "p f p" "$1" <<EOS
 fix             ywalls mobile wall/gran $WALL yplane 0.0 $TOP
 fix             base glued freeze
 fix             grav mobile gravity $G vector $GX_UNIT $GY_UNIT 0
@@ -62,7 +56,7 @@ for ANGLE in $ANGLES; do
     echo "== chute flow, $ANGLE deg, packing seed $SEED${CHUTE_ARGS:+, $CHUTE_ARGS}"
     OMP_NUM_THREADS=1 $PINNED $NICE "$BENCH" --angle "$ANGLE" --seed "$SEED" $CHUTE_ARGS --lammps-data "$WORK/c.data" |
         tee "$WORK/gf.out"
-    . "$WORK/c.data.params"
+    lammps_params "$WORK/c.data.params"
     lammps_input "$WORK/c.data" "$WORK/snap.dump" > "$WORK/in.run"
     OMP_NUM_THREADS=1 /usr/bin/time -f "%U %S" -o "$WORK/time.out" $PINNED $NICE "$LMP" -in "$WORK/in.run" \
         -log "$WORK/log.run" -screen none

@@ -49,24 +49,18 @@
 # nice, both pinned to cpu0).
 set -eu
 SCRIPT=lammps_collapse
-. "$(dirname "$0")/lammps_common.sh" # NICE, PINNED, LMP
+. "$(dirname "$0")/lammps_common.sh" # ROOT, NICE, PINNED, LMP
 LMP_REST=${LMP_REST-1}
 REST_ENERGY=1e-4 # the scene's rest_energy: kinetic energy per mobile grain / (m g D)
 SEEDS=${1:-3}
-ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${2:-$ROOT/build}
 ASPECT=${3:-1}
 LENGTH=${4:-16}
-BENCH=$BUILD/workflows/bench/gf-bench-collapse
-[ -x "$BENCH" ] || { echo "lammps_collapse: build gf-bench-collapse first ($BENCH)" >&2; exit 1; }
-WORK=$(mktemp -d /tmp/gf_lmp_collapse_XXXXXX)
-trap 'rm -rf "$WORK"' EXIT
+lammps_bench "$BUILD" gf-bench-collapse # BENCH, WORK
 
 # LAMMPS input: data file $1, $2 steps, final grains to $3 ("x y z radius type")
 lammps_input() {
-    lammps_head "f f p" "$1"
-    lammps_glued_pairs
-    cat <<EOS
+    lammps_glued_input "f f p" "$1" <<EOS
 fix             xwalls mobile wall/gran $WALL xplane 0.0 $L
 fix             ywalls mobile wall/gran $WALL yplane 0.0 $TOP
 fix             base glued freeze
@@ -93,10 +87,6 @@ variable        rest_step equal step
 print           "REST_STEP \${rest_step} KE_PER_GRAIN_MGD \${ke_mgd}"
 write_dump      all custom $4 x y z radius type modify sort id
 EOS
-}
-lmp_cpu() { # CPU seconds (user + system) of one LAMMPS run of input $1, log $2
-    OMP_NUM_THREADS=1 /usr/bin/time -f "%U %S" -o "$WORK/time.out" $PINNED $NICE "$LMP" -in "$1" -log "$2" -screen none
-    awk '{ printf "%.3f", $1 + $2 }' "$WORK/time.out"
 }
 # front/R0, height/R0 (the scene's definitions, see above) and farthest grain/R0
 # of a file of "x y z radius type" lines (LAMMPS dump headers skipped)
@@ -127,13 +117,13 @@ s=1
 while [ "$s" -le "$SEEDS" ]; do
     OMP_NUM_THREADS=1 $PINNED $NICE "$BENCH" --seed "$s" --aspect "$ASPECT" --length "$LENGTH" --width 3 \
         --lammps-data "$WORK/c.data" --dump "$WORK/gf.txt" | tee "$WORK/gf.out"
-    . "$WORK/c.data.params"
+    lammps_params "$WORK/c.data.params"
     STEPS=$(sed -n 's/.* grains (.*), \([0-9]*\) steps to t.*/\1/p' "$WORK/gf.out")
     GF_CPU=$(sed -n 's/.* sqrt(D\/g), \([0-9.]*\) s CPU.*/\1/p' "$WORK/gf.out")
     lammps_input "$WORK/c.data" "$STEPS" "$WORK/lmp.dump" > "$WORK/in.run"
     lammps_input "$WORK/c.data" 0 "$WORK/lmp0.dump" > "$WORK/in.setup"
-    CPU_SETUP=$(lmp_cpu "$WORK/in.setup" "$WORK/log.setup")
-    CPU_ALL=$(lmp_cpu "$WORK/in.run" "$WORK/log.run")
+    CPU_SETUP=$(lammps_cpu "$WORK/in.setup" "$WORK/log.setup")
+    CPU_ALL=$(lammps_cpu "$WORK/in.run" "$WORK/log.run")
     LMP_CPU=$(awk -v a="$CPU_ALL" -v b="$CPU_SETUP" 'BEGIN { printf "%.3f", a - b }')
     LMP_KE=$(sed -n 's/^KE_PER_GRAIN_MGD \([0-9.eE+-]*\).*/\1/p' "$WORK/log.run")
     REST="- - - - -"

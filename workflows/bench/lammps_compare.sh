@@ -38,17 +38,13 @@
 # needs: apt-get install -y lammps  (binary `lmp`)
 set -eu
 SCRIPT=lammps_compare
-. "$(dirname "$0")/lammps_common.sh" # NICE, PINNED, LMP
+. "$(dirname "$0")/lammps_common.sh" # ROOT, NICE, PINNED, LMP
 N=${1:-10000}
 STEPS=${2:-3000}
-ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${3:-$ROOT/build-dem}
 N_SETTLE=${4:-2000}
 SETTLE_STEPS=${5:-20000}
-BENCH=$BUILD/workflows/bench/gf-bench-dem
-[ -x "$BENCH" ] || { echo "lammps_compare: build gf-bench-dem first ($BENCH)" >&2; exit 1; }
-WORK=$(mktemp -d /tmp/gf_lammps_XXXXXX)
-trap 'rm -rf "$WORK"' EXIT
+lammps_bench "$BUILD" gf-bench-dem # BENCH, WORK
 
 echo "== grainflow: settled bed, N = $N, $STEPS steps, 1 thread"
 OMP_NUM_THREADS=1 $PINNED $NICE "$BENCH" --n "$N" --steps "$STEPS" --threads 1 --lammps-data "$WORK/bed.data" \
@@ -75,13 +71,9 @@ EOS
 }
 lammps_input "$WORK/bed.data" "$STEPS" "$WORK/lmp_bed.dump" > "$WORK/in.bed"
 lammps_input "$WORK/bed.data" 0 "$WORK/lmp_setup.dump" > "$WORK/in.setup"
-lmp_cpu() { # CPU seconds (user + system) of one LAMMPS run of input $1
-    OMP_NUM_THREADS=1 /usr/bin/time -f "%U %S" -o "$WORK/time.out" $PINNED $NICE "$LMP" -in "$1" -log "$2" -screen none
-    awk '{ printf "%.3f", $1 + $2 }' "$WORK/time.out"
-}
 echo "== LAMMPS ($LMP): same bed, same law, 1 core"
-CPU_SETUP=$(lmp_cpu "$WORK/in.setup" "$WORK/log.setup")
-CPU_ALL=$(lmp_cpu "$WORK/in.bed" "$WORK/log.lammps")
+CPU_SETUP=$(lammps_cpu "$WORK/in.setup" "$WORK/log.setup")
+CPU_ALL=$(lammps_cpu "$WORK/in.bed" "$WORK/log.lammps")
 grep -E "Loop time|CPU use|Pair  |Neigh |Modify|Comm  " "$WORK/log.lammps" || true
 LOOP=$(sed -n 's/^Loop time of \([0-9.e+-]*\) on.*/\1/p' "$WORK/log.lammps")
 CPU=$(sed -n 's/^\([0-9.]*\)% CPU use.*/\1/p' "$WORK/log.lammps")
@@ -112,8 +104,8 @@ settle_observables() {
     . "$WORK/stack.data.params"
     lammps_input "$WORK/stack.data" "$SETTLE_STEPS" "$WORK/lmp_settled.dump" > "$WORK/in.settle"
     lammps_input "$WORK/stack.data" 0 "$WORK/lmp_stack0.dump" > "$WORK/in.settle0"
-    CPU_SETUP=$(lmp_cpu "$WORK/in.settle0" "$WORK/log.settle0")
-    CPU_ALL=$(lmp_cpu "$WORK/in.settle" "$WORK/log.settle")
+    CPU_SETUP=$(lammps_cpu "$WORK/in.settle0" "$WORK/log.settle0")
+    CPU_ALL=$(lammps_cpu "$WORK/in.settle" "$WORK/log.settle")
     grep -E "Loop time|CPU use" "$WORK/log.settle" || true
     LMP_SETTLE_RATE=$(awk -v n="$N_SETTLE" -v s="$SETTLE_STEPS" -v a="$CPU_ALL" -v b="$CPU_SETUP" 'BEGIN { printf "%.4e", n * s / (a - b) }')
     awk -v a="$GF_SETTLE_RATE" -v b="$LMP_SETTLE_RATE" 'BEGIN {

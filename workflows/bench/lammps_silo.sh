@@ -26,24 +26,18 @@
 # the same input with `run 0`.
 set -eu
 SCRIPT=lammps_silo
-. "$(dirname "$0")/lammps_common.sh" # NICE, PINNED, LMP
+. "$(dirname "$0")/lammps_common.sh" # ROOT, NICE, PINNED, LMP
 ORIFICES=${1:-4 6 8}
-ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${2:-$ROOT/build}
 WIDTH=${3:-25}
 FILL=${4:-25.4}
 TRANSIENT=${5:-5}
 WINDOW=${6:-20}
-BENCH=$BUILD/workflows/bench/gf-bench-silo
-[ -x "$BENCH" ] || { echo "lammps_silo: build gf-bench-silo first ($BENCH)" >&2; exit 1; }
-WORK=$(mktemp -d /tmp/gf_lmp_silo_XXXXXX)
-trap 'rm -rf "$WORK"' EXIT
+lammps_bench "$BUILD" gf-bench-silo # BENCH, WORK
 
 # LAMMPS input: data $1, $2 transient steps, $3 window steps
 lammps_input() {
-    lammps_head "f f f" "$1"
-    lammps_glued_pairs
-    cat <<EOS
+    lammps_glued_input "f f f" "$1" <<EOS
 region          b1 block 0 $OX0 -$D 0 0 $LZB side out units box
 region          b2 block $OX1 $LXB -$D 0 0 $LZB side out units box
 region          b3 block $OX0 $OX1 -$D 0 0 $OZ0 side out units box
@@ -70,16 +64,12 @@ run             $3
 print           "N_END \${n}"
 EOS
 }
-lmp_cpu() { # CPU seconds (user + system) of one LAMMPS run of input $1, log $2
-    OMP_NUM_THREADS=1 /usr/bin/time -f "%U %S" -o "$WORK/time.out" $PINNED $NICE "$LMP" -in "$1" -log "$2" -screen none
-    awk '{ printf "%.3f", $1 + $2 }' "$WORK/time.out"
-}
 
 echo "== silo ${WIDTH} d x ${WIDTH} d, fill ${FILL} d, orifices $ORIFICES d; window ${WINDOW} sqrt(d/g) after ${TRANSIENT}; LAMMPS law: ${LMP_LAW:-granular}"
 for o in $ORIFICES; do
     OMP_NUM_THREADS=1 $PINNED $NICE "$BENCH" --orifice "$o" --width "$WIDTH" --fill "$FILL" --transient "$TRANSIENT" \
         --window "$WINDOW" --lammps-data "$WORK/s.data" | tee "$WORK/gf.out"
-    . "$WORK/s.data.params"
+    lammps_params "$WORK/s.data.params"
     GF_Q=$(sed -n 's/.*Q = \([0-9.e+]*\) grains\/s.*/\1/p' "$WORK/gf.out")
     GF_CPU=$(sed -n 's/.* steps in \([0-9.]*\) s CPU.*/\1/p' "$WORK/gf.out")
     GF_STEPS=$(sed -n 's/.*; \([0-9]*\) steps in.*/\1/p' "$WORK/gf.out")
@@ -88,8 +78,8 @@ for o in $ORIFICES; do
     TR_STEPS=$1 WIN_STEPS=$2
     lammps_input "$WORK/s.data" "$TR_STEPS" "$WIN_STEPS" > "$WORK/in.run"
     lammps_input "$WORK/s.data" 0 0 > "$WORK/in.setup"
-    CPU_SETUP=$(lmp_cpu "$WORK/in.setup" "$WORK/log.setup")
-    CPU_ALL=$(lmp_cpu "$WORK/in.run" "$WORK/log.run")
+    CPU_SETUP=$(lammps_cpu "$WORK/in.setup" "$WORK/log.setup")
+    CPU_ALL=$(lammps_cpu "$WORK/in.run" "$WORK/log.run")
     N0=$(sed -n 's/^N_START \([0-9]*\).*/\1/p' "$WORK/log.run")
     N1=$(sed -n 's/^N_END \([0-9]*\).*/\1/p' "$WORK/log.run")
     awk -v o="$o" -v n0="$N0" -v n1="$N1" -v w="$WIN_STEPS" -v dt="$DT" -v d="$D" -v g="$G" -v gq="$GF_Q" \

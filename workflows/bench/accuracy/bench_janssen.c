@@ -35,6 +35,7 @@
 #include <time.h>
 
 #include "bench_accuracy.h"
+#include "gf_bench_clock.h"
 #include "gf_sim.h"
 #include "scenes/gf_measure.h"
 #include "scenes/gf_scene.h"
@@ -51,13 +52,6 @@ const double bench_janssen_tc[] = {2e-2, 1e-2, 5e-3};
 typedef struct jan_run {
     double plateau_nd, fpk_fit, sigma_inf_nd, cpu_s;
 } jan_run;
-
-static double cpu_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 int bench_janssen_available(const char **why)
 {
@@ -143,14 +137,14 @@ static gf_status janssen_run(gf_ctx *ctx, const bench_knobs *k, unsigned seed, j
     GF_TRY(janssen_spec(ctx, k, seed, &spec));
     const gf_scene_desc *d = gf_scene_find("janssen");
     gf_sim *sim = NULL;
-    double t0 = cpu_s();
+    double t0 = gf_bench_cpu_time_s();
     GF_TRY(gf_sim_create(ctx, &spec, &(gf_sim_options){.n_threads = 1}, &sim));
     double tg = sqrt(spec.grains.diameter_m / spec.gravity_m_s2);
     long chunk = (long)ceil(tg / gf_sim_dt_s(sim));
     gf_status st = GF_OK;
     while (st == GF_OK && gf_sim_time_s(sim) < JAN_T_MAX_ND * tg && !d->done(sim))
         st = gf_sim_advance(sim, chunk);
-    r->cpu_s = cpu_s() - t0;
+    r->cpu_s = gf_bench_cpu_time_s() - t0;
     if (st == GF_OK)
         st = janssen_measure_state(ctx, sim, r);
     gf_sim_destroy(&sim);

@@ -27,6 +27,7 @@
 #include <time.h>
 
 #include "bench_accuracy.h"
+#include "gf_bench_clock.h"
 #include "coupling/gf_coupling_tier.h"
 #include "gf_sim.h"
 #include "scenes/gf_scene.h"
@@ -43,13 +44,6 @@
 
 const double bench_resolved_cells[] = {1.0 / 8, 1.0 / 12, 1.0 / 16};
 const double bench_resolved_retract[] = {0.0, 0.3};
-
-static double cpu_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 int bench_resolved_available(const char **why)
 {
@@ -114,10 +108,10 @@ gf_status bench_resolved_measure(gf_ctx *ctx, const bench_knobs *k, int full, be
     double t[RES_MAX_SAMPLES], F[RES_MAX_SAMPLES];
     int n = 0;
     gf_sim *sim = NULL;
-    double t0 = cpu_s();
+    double t0 = gf_bench_cpu_time_s();
     GF_TRY(gf_sim_create(ctx, &spec, &(gf_sim_options){.n_threads = 1}, &sim));
     gf_status st = sample_force(sim, spec.gravity_m_s2, t, F, &n);
-    double cost = cpu_s() - t0;
+    double cost = gf_bench_cpu_time_s() - t0;
     gf_sim_destroy(&sim);
     if (st == GF_ERR_NUMERIC)
         return GF_FAIL(ctx, st, "resolved_early_acceleration: non-finite force at D/dx %g", 1.0 / k->cell_over_D);

@@ -33,6 +33,7 @@
 #include <time.h>
 
 #include "bench_accuracy.h"
+#include "gf_bench_clock.h"
 #include "gf_sim.h"
 #include "scenes/gf_scene.h"
 
@@ -42,13 +43,6 @@
 #define SPHERE_RE_T 0.01
 
 const double bench_sphere_cells[] = {4.0, 3.0, 2.5, 2.0};
-
-static double cpu_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 int bench_sphere_available(const char **why)
 {
@@ -111,12 +105,12 @@ gf_status bench_sphere_measure(gf_ctx *ctx, const bench_knobs *k, int full, benc
     double t_end = SPHERE_T_END * D * D / nu;
     const gf_scene_desc *d = gf_scene_find("settling");
     gf_sim *sim = NULL;
-    double t0 = cpu_s();
+    double t0 = gf_bench_cpu_time_s();
     GF_TRY(gf_sim_create(ctx, &spec, &(gf_sim_options){.n_threads = 1}, &sim));
     gf_status st = ratio_at(sim, d, 0.8 * t_end, &u80);
     if (st == GF_OK)
         st = ratio_at(sim, d, t_end, &u);
-    double cost = cpu_s() - t0;
+    double cost = gf_bench_cpu_time_s() - t0;
     gf_sim_destroy(&sim);
     GF_TRY(st);
     double ref = hasimoto_ratio(SPHERE_BOX_OVER_D);

@@ -29,6 +29,7 @@
 #include <time.h>
 
 #include "bench_accuracy.h"
+#include "gf_bench_clock.h"
 #include "gf_sim.h"
 
 #define TIERS_BOX_OVER_D 6.0
@@ -39,13 +40,6 @@
 
 const double bench_tiers_cells[] = {3.0, 2.0, 1.5, 1.0 / 8};
 const double bench_tiers_unresolved_cells[] = {3.0, 2.0, 1.5};
-
-static double cpu_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 /* Schiller-Naumann terminal Reynolds number: 24 Re (1 + 0.15 Re^0.687) = (4/3) Ar, by bisection in log Re. */
 static double schiller_naumann_Re(double Ar)
@@ -104,10 +98,10 @@ static gf_status measure_with(gf_ctx *ctx, const bench_knobs *k, const char *dra
     const double D = spec.grains.diameter_m, g = spec.gravity_m_s2;
     double u = NAN, t_u = NAN;
     gf_sim *sim = NULL;
-    double t0 = cpu_s();
+    double t0 = gf_bench_cpu_time_s();
     GF_TRY(gf_sim_create(ctx, &spec, &(gf_sim_options){.n_threads = 1}, &sim));
     gf_status st = fastest_fall(sim, D, g, &u, &t_u);
-    double cost = cpu_s() - t0;
+    double cost = gf_bench_cpu_time_s() - t0;
     gf_sim_destroy(&sim);
     if (st == GF_ERR_NUMERIC)
         return GF_FAIL(ctx, st, "settling_terminal_tiers: non-finite velocity (%s tier)", spec.fluid.model);
