@@ -88,6 +88,7 @@
 #include "coupling/gf_coupling.h"
 #include "gf_sim.h"
 #include "scenes/gf_scene.h"
+#include "gf_test_energy.h" /* the tests' minimum-image spring energy, one definition */
 
 /* CPU time of the process, s: the cost of a one-thread run, insensitive to
  * the other processes sharing the machine (its wall time on an idle one). */
@@ -200,32 +201,6 @@ static gf_status measure_duration(gf_ctx *ctx, const bench_knobs *k, int full, b
 
 /* ---------------------------------------------------------------- elastic gas */
 
-/* Elastic energy (1/2) k_n delta^2 of every overlapping pair (minimum image):
- * equal grains, one k_n (gf_contact.h, gamma_n = 0 at eps = 1). */
-static double spring_energy(gf_sim *sim)
-{
-    gf_particles *p = gf_sim_particles(sim);
-    const gf_run_spec *s = gf_sim_spec(sim);
-    double lo[3], hi[3], e = 0.0;
-    int per[3];
-    gf_sim_box(sim, lo, hi, per);
-    double D = s->grains.diameter_m, m = s->grains.density_kg_m3 * M_PI * D * D * D / 6.0;
-    double tc = gf_run_spec_t_contact_s(s), kn = 0.5 * m * M_PI * M_PI / (tc * tc);
-    for (size_t i = 0; i < p->n_local; ++i)
-        for (size_t j = i + 1; j < p->n_local; ++j) {
-            double d[3] = {p->x_m[i] - p->x_m[j], p->y_m[i] - p->y_m[j], p->z_m[i] - p->z_m[j]}, r2 = 0.0;
-            for (int a = 0; a < 3; ++a) {
-                double L = hi[a] - lo[a];
-                d[a] -= L * round(d[a] / L);
-                r2 += d[a] * d[a];
-            }
-            double ov = p->radius_m[i] + p->radius_m[j] - sqrt(r2);
-            if (ov > 0.0)
-                e += 0.5 * kn * ov * ov;
-        }
-    return e;
-}
-
 static gf_status measure_gas(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out)
 {
     gf_run_spec spec = base_spec("elastic_gas", k);
@@ -239,7 +214,7 @@ static gf_status measure_gas(gf_ctx *ctx, const bench_knobs *k, int full, bench_
     GF_TRY(make_sim(ctx, &spec, &sim));
     wall += bench_cpu_s() - t0;
     gf_particles *p = gf_sim_particles(sim);
-    double e0 = gf_particles_kinetic_energy(p) + spring_energy(sim), worst = 0.0;
+    double e0 = gf_particles_kinetic_energy(p) + gf_test_spring_energy(sim), worst = 0.0;
     double t_total = (full ? 20.0 : 4.0) * sqrt(spec.grains.diameter_m / spec.gravity_m_s2);
     long n_total = (long)ceil(t_total / gf_sim_dt_s(sim)), done = 0;
     gf_status st = GF_OK;
@@ -250,7 +225,7 @@ static gf_status measure_gas(gf_ctx *ctx, const bench_knobs *k, int full, bench_
         wall += bench_cpu_s() - t0;
         done = target;
         if (st == GF_OK)
-            worst = fmax(worst, fabs((gf_particles_kinetic_energy(p) + spring_energy(sim)) / e0 - 1.0));
+            worst = fmax(worst, fabs((gf_particles_kinetic_energy(p) + gf_test_spring_energy(sim)) / e0 - 1.0));
     }
     gf_sim_destroy(&sim);
     GF_TRY(st);
