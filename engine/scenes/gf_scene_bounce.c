@@ -10,9 +10,19 @@
  * same scene is the settling-sphere validation of Izard 2014 §2.2.3 (slip walls
  * everywhere, the sphere 5 radii below the top).
  *
+ * Oblique bounce (Joseph & Hunt, J. Fluid Mech. 510, 2004; Izard 2014 §3.4):
+ * gravity turned by impact_angle_deg in the (x, y) plane, g = |g| (sin xi,
+ * -cos xi, 0), so that the sphere released from rest falls along it and
+ * strikes the wall at xi_in = xi; release_x_over_D moves the release point
+ * upstream and span_z_over_D sets the box's extent across (the thesis' box is
+ * 10 D x 10 D x 4 D, the sphere released at (2 D, 8 D, 2 D)). The defaults
+ * (0°, centred, a square box) are the normal bounce.
+ *
  * Diagnostics: the sphere's vertical velocity, its gap to the wall over D, and
  * the vertical fluid force on it over its buoyant weight (the forces of the
- * last DEM step less gravity: hydrodynamic, lubrication and contact).
+ * last DEM step less gravity: hydrodynamic, lubrication and contact); for the
+ * oblique bounce its velocity along x and its spin about z (the contact
+ * point's velocity along the wall is v_x + R w_z).
  */
 #include <math.h>
 
@@ -24,23 +34,43 @@ static const gf_param_info bounce_params[] = {
     {"height_over_D", "1", 20.0, 2.0, 1000.0, "box height / D"},
     {"release_depth_over_D", "1", 4.0, 0.5, 1000.0, "depth of the sphere's centre below the top / D"},
     {"bottom_no_slip", "1", 1.0, 0.0, 1.0, "1: the wall the sphere falls on is no-slip for the fluid, 0: free-slip"},
+    {"impact_angle_deg", "degree", 0.0, 0.0, 80.0, "gravity's angle to the wall normal, in the (x, y) plane: the impact angle"},
+    {"release_x_over_D", "1", 0.0, 0.0, 1000.0, "release abscissa of the sphere's centre / D; 0: centred"},
+    {"span_z_over_D", "1", 0.0, 0.0, 1000.0, "box extent along z / D; 0: box_over_D"},
 };
 
 static const gf_var_info bounce_diag[] = {
     {"sphere_velocity_y", "m s-1", "vertical velocity of the sphere", NULL},
     {"gap_over_D", "1", "gap between the sphere and the bottom wall / D", NULL},
     {"force_y_over_buoyant_weight", "1", "vertical non-gravity force on the sphere / ((rho_p - rho_f) V g)", NULL},
+    {"sphere_velocity_x", "m s-1", "velocity of the sphere along the wall (x)", NULL},
+    {"sphere_spin_z", "rad s-1", "angular velocity of the sphere about z", NULL},
 };
 
-static gf_status bounce_build(gf_sim *sim, const gf_run_spec *spec)
+/* The release point and the box's far corner, from the scene's parameters. */
+static void bounce_geometry(const gf_run_spec *spec, double release[3], double hi[3])
 {
     double D = spec->grains.diameter_m;
     double L = gf_run_spec_param(spec, "box_over_D", 8.0) * D, H = gf_run_spec_param(spec, "height_over_D", 20.0) * D;
-    double depth = gf_run_spec_param(spec, "release_depth_over_D", 4.0) * D;
-    if (depth > H - D)
-        return GF_FAIL(gf_sim_ctx(sim), GF_ERR_CONFIG, "bounce: release_depth_over_D = %g does not fit a box %g D high",
-                       depth / D, H / D);
-    double lo[3] = {0, 0, 0}, hi[3] = {L, H, L}, grav[3] = {0, -spec->gravity_m_s2, 0};
+    double span = gf_run_spec_param(spec, "span_z_over_D", 0.0) * D, x0 = gf_run_spec_param(spec, "release_x_over_D", 0.0) * D;
+    if (span <= 0.0)
+        span = L;
+    hi[0] = L, hi[1] = H, hi[2] = span;
+    release[0] = x0 > 0.0 ? x0 : 0.5 * L;
+    release[1] = H - gf_run_spec_param(spec, "release_depth_over_D", 4.0) * D;
+    release[2] = 0.5 * span;
+}
+
+static gf_status bounce_build(gf_sim *sim, const gf_run_spec *spec)
+{
+    double D = spec->grains.diameter_m, lo[3] = {0, 0, 0}, hi[3], c[3];
+    bounce_geometry(spec, c, hi);
+    if (c[1] < D || c[0] < 0.5 * D || c[0] > hi[0] - 0.5 * D || hi[2] < D)
+        return GF_FAIL(gf_sim_ctx(sim), GF_ERR_CONFIG,
+                       "bounce: the sphere released at (%g, %g) D does not fit a box %g x %g x %g D", c[0] / D, c[1] / D,
+                       hi[0] / D, hi[1] / D, hi[2] / D);
+    double xi = gf_run_spec_param(spec, "impact_angle_deg", 0.0) * M_PI / 180.0, g = spec->gravity_m_s2;
+    double grav[3] = {xi > 0.0 ? g * sin(xi) : 0.0, -g * cos(xi), 0};   /* xi = 0: exactly (0, -g, 0) */
     int periodic[3] = {0, 0, 0};
     GF_TRY(gf_sim_set_box(sim, lo, hi, periodic));
     GF_TRY(gf_sim_set_gravity(sim, grav));
@@ -51,7 +81,7 @@ static gf_status bounce_build(gf_sim *sim, const gf_run_spec *spec)
             GF_TRY(gf_sim_set_fluid_bc(sim, a, side, GF_BC_FREE_SLIP));
     if (gf_run_spec_param(spec, "bottom_no_slip", 1.0) > 0.5)
         GF_TRY(gf_sim_set_fluid_bc(sim, 1, 0, GF_BC_NO_SLIP));
-    return gf_particles_add(gf_sim_ctx(sim), gf_sim_particles(sim), 0.5 * L, H - depth, 0.5 * L, 0.5 * D,
+    return gf_particles_add(gf_sim_ctx(sim), gf_sim_particles(sim), c[0], c[1], c[2], 0.5 * D,
                             spec->grains.density_kg_m3, 0, NULL);
 }
 
@@ -65,6 +95,8 @@ static gf_status bounce_diagnose(gf_sim *sim, double *v)
     v[1] = (p->y_m[0] - R) / D;
     double w = (m - rho_f * vol) * g;
     v[2] = w > 0.0 ? p->fy_N[0] / w : NAN;
+    v[3] = p->vx_m_s[0];
+    v[4] = p->wz_rad_s[0];
     return GF_OK;
 }
 

@@ -40,6 +40,11 @@ const gf_post_col gf_stage_bounce_cols[] = {
     {"bounce_t_impact_s", 0, "s", "time of the first contact"},
     {"bounce_contact_s", 0, "s", "duration of the first contact (gap <= 0)"},
     {"bounce_contact_over_tc", 0, "1", "duration of the first contact over the contact law's t_c"},
+    {"bounce_psi_in", 0, "1", "contact-point tangential over normal impact velocity, tan xi_in (Joseph & Hunt 2004)"},
+    {"bounce_psi_out", 0, "1", "contact-point tangential rebound over normal impact velocity, e tan xi_out"},
+    {"bounce_beta", 0, "1", "tangential restitution -Psi_out/Psi_in (Joseph & Hunt 2004)"},
+    {"bounce_mu_f", 0, "1", "effective friction 2 (1 + beta) Psi_in / (7 (1 + e)) (Joseph & Hunt 2004)"},
+    {"bounce_xi_out_deg", 0, "degree", "contact-point rebound angle to the wall normal"},
     {NULL, 0, NULL, NULL}};
 
 typedef struct bounce_series {
@@ -94,6 +99,38 @@ static gf_status report(gf_ctx *ctx, const gf_bounce *b, const double *att, gf_p
     return GF_OK;
 }
 
+/* The oblique numbers (gf_bounce_measure_oblique) when the diagnostics carry
+ * the tangential motion; runs written before it have none and get no such row. */
+static gf_status report_oblique(gf_ctx *ctx, const gf_stage_in *in, const gf_bounce *b, double R, size_t n,
+                                gf_post_row *row)
+{
+    if (!gf_stage_has_var(in, "diagnostics.nc", "sphere_velocity_x") ||
+        !gf_stage_has_var(in, "diagnostics.nc", "sphere_spin_z"))
+        return GF_OK;
+    gf_ncr f;
+    GF_TRY(gf_stage_open(ctx, in, "diagnostics.nc", &f));
+    double *vx = NULL, *wz = NULL;
+    size_t nx = 0, nw = 0;
+    gf_status st = gf_ncr_var_1d(ctx, &f, "sphere_velocity_x", &vx, &nx);
+    if (st == GF_OK) st = gf_ncr_var_1d(ctx, &f, "sphere_spin_z", &wz, &nw);
+    gf_ncr_close(&f);
+    if (st == GF_OK && (nx != n || nw != n))
+        st = GF_FAIL(ctx, GF_ERR_IO, "diagnostics.nc: sphere_velocity_x has %zu samples, sphere_spin_z %zu, time %zu",
+                     nx, nw, n);
+    if (st == GF_OK) {
+        gf_bounce_oblique o;
+        gf_bounce_measure_oblique(b, vx, wz, R, &o);
+        set_if(row, "bounce_psi_in", o.psi_in);
+        set_if(row, "bounce_psi_out", o.psi_out);
+        set_if(row, "bounce_beta", o.beta);
+        set_if(row, "bounce_mu_f", o.mu_f);
+        set_if(row, "bounce_xi_out_deg", o.xi_out_deg);
+    }
+    free(vx);
+    free(wz);
+    return st;
+}
+
 gf_status gf_stage_bounce(gf_ctx *ctx, const gf_stage_in *in, const gf_stage_opts *opts, gf_stage_out *out)
 {
     (void)opts;
@@ -117,6 +154,10 @@ gf_status gf_stage_bounce(gf_ctx *ctx, const gf_stage_in *in, const gf_stage_opt
         gf_bounce b;
         gf_bounce_measure(s.t, s.v, s.gap, s.n, 0.5 * att[0], &b);
         st = report(ctx, &b, att, out->row, s.n);
+        if (b.rebounded) {
+            gf_status so = report_oblique(ctx, in, &b, 0.5 * att[0], s.n, out->row);
+            st = so != GF_OK ? so : st;
+        }
     }
     free(s.t);
     free(s.v);
