@@ -22,8 +22,10 @@ void gf_bounce_measure(const double *t, const double *v, const double *gap, size
         ++k1;
     double vt = 0.0;
     for (size_t k = 0; k < k1; ++k)
-        if (gap[k] > R && -v[k] > vt)
+        if (gap[k] > R && -v[k] > vt) {
             vt = -v[k];
+            b->k_terminal = k;
+        }
     if (k1 > 0)
         b->V_T = vt;
     if (k1 == n || k1 == 0)
@@ -59,19 +61,24 @@ void gf_bounce_measure(const double *t, const double *v, const double *gap, size
     b->eps = b->V_T > 0.0 ? b->V_R / b->V_T : NAN;
 }
 
-void gf_bounce_measure_oblique(const gf_bounce *b, const double *vx, const double *wz, double R, gf_bounce_oblique *o)
+void gf_bounce_measure_oblique(const gf_bounce *b, const double *vx, const double *wz, double R,
+                               gf_bounce_reference ref, gf_bounce_oblique *o)
 {
-    *o = (gf_bounce_oblique){.psi_in = NAN, .psi_out = NAN, .beta = NAN, .mu_f = NAN, .xi_in_deg = NAN,
+    *o = (gf_bounce_oblique){.e = NAN, .psi_in = NAN, .psi_out = NAN, .beta = NAN, .mu_f = NAN, .xi_in_deg = NAN,
                              .xi_out_deg = NAN};
-    if (!b->touched || !b->rebounded || !(b->V_I > 0.0))
+    int at_impact = ref == GF_BOUNCE_AT_IMPACT;
+    double v_in = at_impact ? b->V_I : b->V_T;
+    size_t k_in = at_impact ? b->k_impact : b->k_terminal;
+    if (!b->touched || !b->rebounded || !(v_in > 0.0))
         return;
     const double deg = 180.0 / M_PI;
-    o->psi_in = (vx[b->k_impact] + R * wz[b->k_impact]) / b->V_I;
-    o->psi_out = (vx[b->k_rebound] + R * wz[b->k_rebound]) / b->V_I;
+    o->e = b->V_R / v_in;
+    o->psi_in = (vx[k_in] + R * wz[k_in]) / v_in;
+    o->psi_out = (vx[b->k_rebound] + R * wz[b->k_rebound]) / v_in;
     o->xi_in_deg = atan(o->psi_in) * deg;
-    o->xi_out_deg = atan2(o->psi_out, b->e) * deg;
+    o->xi_out_deg = atan2(o->psi_out, o->e) * deg;
     if (o->psi_in != 0.0) {
         o->beta = -o->psi_out / o->psi_in;
-        o->mu_f = 2.0 * (1.0 + o->beta) * o->psi_in / (7.0 * (1.0 + b->e));
+        o->mu_f = 2.0 * (1.0 + o->beta) * o->psi_in / (7.0 * (1.0 + o->e));
     }
 }

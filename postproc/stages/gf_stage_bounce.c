@@ -40,11 +40,16 @@ const gf_post_col gf_stage_bounce_cols[] = {
     {"bounce_t_impact_s", 0, "s", "time of the first contact"},
     {"bounce_contact_s", 0, "s", "duration of the first contact (gap <= 0)"},
     {"bounce_contact_over_tc", 0, "1", "duration of the first contact over the contact law's t_c"},
-    {"bounce_psi_in", 0, "1", "contact-point tangential over normal impact velocity, tan xi_in (Joseph & Hunt 2004)"},
-    {"bounce_psi_out", 0, "1", "contact-point tangential rebound over normal impact velocity, e tan xi_out"},
-    {"bounce_beta", 0, "1", "tangential restitution -Psi_out/Psi_in (Joseph & Hunt 2004)"},
-    {"bounce_mu_f", 0, "1", "effective friction 2 (1 + beta) Psi_in / (7 (1 + e)) (Joseph & Hunt 2004)"},
-    {"bounce_xi_out_deg", 0, "degree", "contact-point rebound angle to the wall normal"},
+    {"bounce_psi_in", 0, "1", "contact-point tangential over normal velocity at impact, tan xi_in (Joseph & Hunt 2004)"},
+    {"bounce_psi_out", 0, "1", "contact-point tangential velocity at rebound over V_I, e tan xi_out"},
+    {"bounce_beta", 0, "1", "tangential restitution -Psi_out/Psi_in, at impact (Joseph & Hunt 2004)"},
+    {"bounce_mu_f", 0, "1", "effective friction 2 (1 + beta) Psi_in / (7 (1 + e)), at impact (Joseph & Hunt 2004)"},
+    {"bounce_xi_out_deg", 0, "degree", "contact-point rebound angle to the wall normal, atan(Psi_out / e)"},
+    {"bounce_psi_in_T", 0, "1", "Psi_in on approach (the V_T sample; Izard 2014 §3.4)"},
+    {"bounce_psi_out_T", 0, "1", "contact-point tangential velocity at rebound over V_T, eps tan xi_out"},
+    {"bounce_beta_T", 0, "1", "tangential restitution -Psi_out_T/Psi_in_T (Izard 2014 §3.4)"},
+    {"bounce_mu_f_T", 0, "1", "effective friction 2 (1 + beta_T) Psi_in_T / (7 (1 + eps)) (Izard 2014 §3.4)"},
+    {"bounce_xi_out_deg_T", 0, "degree", "contact-point rebound angle to the wall normal, atan(Psi_out_T / eps)"},
     {NULL, 0, NULL, NULL}};
 
 typedef struct bounce_series {
@@ -117,14 +122,15 @@ static gf_status report_oblique(gf_ctx *ctx, const gf_stage_in *in, const gf_bou
     if (st == GF_OK && (nx != n || nw != n))
         st = GF_FAIL(ctx, GF_ERR_IO, "diagnostics.nc: sphere_velocity_x has %zu samples, sphere_spin_z %zu, time %zu",
                      nx, nw, n);
-    if (st == GF_OK) {
+    static const char *const names[2][5] = {
+        {"bounce_psi_in", "bounce_psi_out", "bounce_beta", "bounce_mu_f", "bounce_xi_out_deg"},
+        {"bounce_psi_in_T", "bounce_psi_out_T", "bounce_beta_T", "bounce_mu_f_T", "bounce_xi_out_deg_T"}};
+    for (int r = 0; r < 2 && st == GF_OK; ++r) {
         gf_bounce_oblique o;
-        gf_bounce_measure_oblique(b, vx, wz, R, &o);
-        set_if(row, "bounce_psi_in", o.psi_in);
-        set_if(row, "bounce_psi_out", o.psi_out);
-        set_if(row, "bounce_beta", o.beta);
-        set_if(row, "bounce_mu_f", o.mu_f);
-        set_if(row, "bounce_xi_out_deg", o.xi_out_deg);
+        gf_bounce_measure_oblique(b, vx, wz, R, r ? GF_BOUNCE_AT_APPROACH : GF_BOUNCE_AT_IMPACT, &o);
+        const double x[5] = {o.psi_in, o.psi_out, o.beta, o.mu_f, o.xi_out_deg};
+        for (int c = 0; c < 5; ++c)
+            set_if(row, names[r][c], x[c]);
     }
     free(vx);
     free(wz);
