@@ -12,7 +12,6 @@ extern const gf_scene_desc gf_scene_bounce;
 extern const gf_scene_desc gf_scene_column_collapse;
 extern const gf_scene_desc gf_scene_elastic_gas;
 extern const gf_scene_desc gf_scene_friction_clamp;
-extern const gf_scene_desc gf_scene_head_on;
 extern const gf_scene_desc gf_scene_janssen;
 extern const gf_scene_desc gf_scene_packing_preparation;
 extern const gf_scene_desc gf_scene_settled_bed;
@@ -27,7 +26,6 @@ static const gf_scene_desc *const gf_scene_table[] = {
     &gf_scene_column_collapse,
     &gf_scene_elastic_gas,
     &gf_scene_friction_clamp,
-    &gf_scene_head_on,
     &gf_scene_janssen,
     &gf_scene_packing_preparation,
     &gf_scene_settled_bed,

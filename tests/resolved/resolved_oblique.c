@@ -37,39 +37,29 @@
 
 #include "gf_sim.h"
 #include "gf_test.h"
-#include "bounce_trace.h"
+#include "bounce_harness.h"
 #include "stages/gf_bounce_measure.h"
 
 enum { TR_T, TR_VY, TR_GAP, TR_VX, TR_WZ, TR_N };
 
 typedef struct options {
-    int dry, threads, n_angles;
-    double dx, eta_e, angles[8];
+    int dry, n_angles;
+    double dx, eta_e, threads, angles[8];
 } options;
 
 static void parse(int argc, char **argv, options *o)
 {
     *o = (options){.dry = 1, .dx = 10, .eta_e = 1e-4, .n_angles = 4, .angles = {10, 20, 30, 40}};
-    for (int i = 1; i < argc; ++i) {
-        const char *v = strchr(argv[i], '=');
-        if (!v)
-            continue;
-        size_t k = (size_t)(v++ - argv[i]);
-        if (!strncmp(argv[i], "check", k))
-            o->dry = strcmp(v, "sweep") != 0;
-        else if (!strncmp(argv[i], "dx", k))
-            o->dx = atof(v);
-        else if (!strncmp(argv[i], "eta_e", k))
-            o->eta_e = atof(v);
-        else if (!strncmp(argv[i], "threads", k))
-            o->threads = atoi(v);
-        else if (!strncmp(argv[i], "angles", k))
-            for (o->n_angles = 0; o->n_angles < 8 && *v; ++o->n_angles) {
-                char *end;
-                o->angles[o->n_angles] = strtod(v, &end);
-                v = *end ? end + 1 : end;
-            }
-    }
+    const harness_arg table[] = {{"dx", &o->dx}, {"eta_e", &o->eta_e}, {"threads", &o->threads}};
+    harness_parse(argc, argv, table, 3);
+    const char *check = harness_text(argc, argv, "check"), *v = harness_text(argc, argv, "angles");
+    o->dry = !check || strcmp(check, "sweep") != 0;
+    if (v)
+        for (o->n_angles = 0; o->n_angles < 8 && *v; ++o->n_angles) {
+            char *end;
+            o->angles[o->n_angles] = strtod(v, &end);
+            v = *end ? end + 1 : end;
+        }
 }
 
 /* Izard 2014 §3.4: the thesis' box, sphere and fluid; the fluid off when dry. */
@@ -111,7 +101,7 @@ static void drop(const options *o, double angle_deg, bounce_result *r)
 {
     gf_ctx ctx = {0};
     gf_run_spec spec = oblique_spec(&ctx, o, angle_deg);
-    gf_sim_options opt = {.n_threads = o->threads};
+    gf_sim_options opt = {.n_threads = (int)o->threads};
     gf_sim *sim = NULL;
     double c0 = (double)clock() / CLOCKS_PER_SEC;
     *r = (bounce_result){.cpu_s = NAN};
