@@ -7,8 +7,12 @@
 #ifndef BOUNCE_HARNESS_H
 #define BOUNCE_HARNESS_H
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "gf_run_spec.h"
+#include "gf_test.h"
 
 typedef struct harness_arg {
     const char *key;
@@ -67,6 +71,30 @@ static inline void bounce_trace_free(bounce_trace *s)
     for (int c = 0; c < s->n_cols; ++c)
         free(s->col[c]);
     *s = (bounce_trace){0};
+}
+
+/* The resolved tier with the thesis' lubrication (Izard 2014 §3.1.2.2): Brenner's
+ * force with roughness eta_e/R, cut-off R/2, off while the surfaces overlap (the
+ * contact law alone acts there, as in resolved_bounce_st60). */
+static inline void harness_resolved_fluid(gf_run_spec *spec, double rho_kg_m3, double eta_Pa_s, double eta_e_over_R,
+                                          double d_over_dx)
+{
+    snprintf(spec->fluid.model, sizeof spec->fluid.model, "resolved");
+    spec->fluid.density_kg_m3 = rho_kg_m3;
+    spec->fluid.viscosity_Pa_s = eta_Pa_s;
+    spec->fluid.lubrication = 1;
+    spec->fluid.roughness_over_R = eta_e_over_R;
+    spec->fluid.lub_cutoff_over_R = 0.5;
+    spec->fluid.lub_overlap_off = 1;
+    spec->fluid.d_over_dx = d_over_dx;
+}
+
+/* Sets n scene parameters of spec. */
+static inline void harness_scene_params(gf_ctx *ctx, gf_run_spec *spec, const char *const *keys, const double *values,
+                                        int n)
+{
+    for (int k = 0; k < n; ++k)
+        GF_CHECK_OK(gf_run_spec_set_param(ctx, spec, keys[k], values[k]), ctx);
 }
 
 #endif /* BOUNCE_HARNESS_H */

@@ -64,21 +64,13 @@ static gf_run_spec head_on_spec(gf_ctx *ctx, const options *o)
     spec.contact.restitution = 0.97;
     spec.contact.t_contact_nd = 2.36e-4 * (D / U_o) / sqrt(D / g);   /* t_c U_o / D = 2.36e-4 */
     spec.contact.friction = spec.contact.wall_friction = 0.25;
-    snprintf(spec.fluid.model, sizeof spec.fluid.model, "resolved");
-    spec.fluid.density_kg_m3 = 1000.0;
-    spec.fluid.viscosity_Pa_s = o->eta;
-    spec.fluid.lubrication = 1;
-    spec.fluid.roughness_over_R = 2e-4;
-    spec.fluid.lub_cutoff_over_R = 0.5;
-    spec.fluid.lub_overlap_off = 1;
-    spec.fluid.d_over_dx = o->dx;
+    harness_resolved_fluid(&spec, 1000.0, o->eta, 2e-4, o->dx);
     spec.end_time_nd = 20.0;
     /* the line of centres along y: sphere 1 2 D below the top, the target gap D below it */
     const char *keys[] = {"launch_speed_nd", "target_gap_over_D", "box_over_D", "height_over_D", "release_depth_over_D",
                           "bottom_no_slip"};
     const double values[] = {U_o / sqrt(g * D), o->gap, o->box, o->length, 2.0, 0.0};
-    for (int k = 0; k < 6; ++k)
-        GF_CHECK_OK(gf_run_spec_set_param(ctx, &spec, keys[k], values[k]), ctx);
+    harness_scene_params(ctx, &spec, keys, values, 6);
     return spec;
 }
 

@@ -72,20 +72,14 @@ static gf_run_spec oblique_spec(gf_ctx *ctx, const options *o, double angle_deg)
     spec.contact.restitution = 0.95;
     spec.contact.t_contact_nd = 4.4e-3;
     spec.contact.friction = spec.contact.wall_friction = 0.106;
-    snprintf(spec.fluid.model, sizeof spec.fluid.model, "%s", o->dry ? "none" : "resolved");
-    spec.fluid.density_kg_m3 = 1000.0;
-    spec.fluid.viscosity_Pa_s = 0.1;
-    spec.fluid.lubrication = 1;
-    spec.fluid.roughness_over_R = o->eta_e;
-    spec.fluid.lub_cutoff_over_R = 0.5;
-    spec.fluid.lub_overlap_off = 1;
-    spec.fluid.d_over_dx = o->dx;
+    harness_resolved_fluid(&spec, 1000.0, 0.1, o->eta_e, o->dx);
+    if (o->dry)
+        snprintf(spec.fluid.model, sizeof spec.fluid.model, "none");
     spec.end_time_nd = 12.0;
     const char *keys[] = {"box_over_D", "height_over_D", "span_z_over_D", "release_x_over_D", "release_depth_over_D",
                           "impact_angle_deg"};
     const double values[] = {10.0, 10.0, 4.0, 2.0, 2.0, angle_deg};
-    for (int k = 0; k < 6; ++k)
-        GF_CHECK_OK(gf_run_spec_set_param(ctx, &spec, keys[k], values[k]), ctx);
+    harness_scene_params(ctx, &spec, keys, values, 6);
     return spec;
 }
 
