@@ -126,7 +126,7 @@ int main(int argc, char **argv)
     const double Re_rel = rho * D * U_i / o.eta, St_B = ratio / 9.0 * Re_rel;
     double target = b.touched ? s.col[HO_U2][b.k_impact] / s.col[HO_U1][b.k_impact] : NAN;
     printf("head-on: D/dx %g, box %g x %g D, gap %g D, eta %g Pa s: U_i1 - U_i2 = %.4f m/s at a gap of R (Re_rel %.1f, "
-           "St_B %.1f), %.4f m/s at contact (U_2/U_1 %.3f), V_R %.4f m/s: eps_B = %.4f, e = V_R/V_I = %.4f, "
+           "St_B %.1f), %.4f m/s at contact (U_2/U_1 %.3f), V_R %.4f m/s: eps_B = %.5f, e = V_R/V_I = %.4f, "
            "contact %.3g t_c; cpu %.0f s\n",
            o.dx, o.length, o.box, o.gap, o.eta, U_i, Re_rel, St_B, b.V_I, target, b.V_R, eps_B, b.e,
            b.contact_s / gf_run_spec_t_contact_s(&spec), (double)clock() / CLOCKS_PER_SEC - c0);
