@@ -12,8 +12,9 @@
  *
  * Oblique bounce (Joseph & Hunt, J. Fluid Mech. 510, 2004; Izard 2014 §3.4):
  * gravity turned by impact_angle_deg in the (x, y) plane, g = |g| (sin xi,
- * -cos xi, 0), so that the sphere released from rest falls along it and
- * strikes the wall at xi_in = xi; release_x_over_D moves the release point
+ * -cos xi, 0), so that the sphere released from rest falls along it, at xi
+ * to the wall's normal (in a fluid the film slows the normal motion before the
+ * contact, so the angle at impact is larger); release_x_over_D moves the release point
  * upstream and span_z_over_D sets the box's extent across (the thesis' box is
  * 10 D x 10 D x 4 D, the sphere released at (2 D, 8 D, 2 D)). The defaults
  * (0°, centred, a square box) are the normal bounce.
@@ -44,7 +45,7 @@ static const gf_param_info bounce_params[] = {
     {"height_over_D", "1", 20.0, 2.0, 1000.0, "box height / D"},
     {"release_depth_over_D", "1", 4.0, 0.5, 1000.0, "depth of the sphere's centre below the top / D"},
     {"bottom_no_slip", "1", 1.0, 0.0, 1.0, "1: the wall the sphere falls on is no-slip for the fluid, 0: free-slip"},
-    {"impact_angle_deg", "degree", 0.0, 0.0, 80.0, "gravity's angle to the wall normal, in the (x, y) plane: the impact angle"},
+    {"impact_angle_deg", "degree", 0.0, 0.0, 80.0, "gravity's angle to the wall normal, in the (x, y) plane: the angle of the fall"},
     {"release_x_over_D", "1", 0.0, 0.0, 1000.0, "release abscissa of the sphere's centre / D; 0: centred"},
     {"span_z_over_D", "1", 0.0, 0.0, 1000.0, "box extent along z / D; 0: box_over_D"},
     {"target_gap_over_D", "1", 0.0, 0.0, 1000.0, "0: the wall; > 0: a sphere at rest this gap below instead, no gravity"},
