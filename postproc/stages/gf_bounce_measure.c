@@ -77,7 +77,7 @@ void gf_bounce_measure_oblique(const gf_bounce *b, const double *vx, const doubl
     o->psi_out = (vx[b->k_rebound] + R * wz[b->k_rebound]) / v_in;
     o->xi_in_deg = atan(o->psi_in) * deg;
     o->xi_out_deg = atan2(o->psi_out, o->e) * deg;
-    if (o->psi_in != 0.0) {
+    if (fabs(o->psi_in) >= GF_BOUNCE_PSI_MIN) {
         o->beta = -o->psi_out / o->psi_in;
         o->mu_f = 2.0 * (1.0 + o->beta) * o->psi_in / (7.0 * (1.0 + o->e));
     }

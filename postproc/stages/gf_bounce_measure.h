@@ -52,11 +52,15 @@ typedef struct gf_bounce {
     size_t k_rebound;       /* sample of V_R (valid when rebounded) */
 } gf_bounce;
 
+/* beta and mu_f are ratios to Psi_in: below this (0.06 degree) the impact is
+ * normal and they are left NaN (a normal bounce's roundoff is no angle). */
+#define GF_BOUNCE_PSI_MIN 1e-3
+
 typedef enum gf_bounce_reference { GF_BOUNCE_AT_IMPACT, GF_BOUNCE_AT_APPROACH } gf_bounce_reference;
 
 typedef struct gf_bounce_oblique {
     double e;                             /* the normal restitution used: V_R/V_I or V_R/V_T */
-    double psi_in, psi_out, beta, mu_f;   /* NaN when not determined */
+    double psi_in, psi_out, beta, mu_f;   /* NaN when not determined (beta, mu_f: also when |Psi_in| < GF_BOUNCE_PSI_MIN) */
     double xi_in_deg, xi_out_deg;         /* atan(Psi_in), atan(Psi_out / e): contact-point angles to the normal */
 } gf_bounce_oblique;
 
