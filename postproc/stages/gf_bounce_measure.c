@@ -22,13 +22,16 @@ void gf_bounce_measure(const double *t, const double *v, const double *gap, size
         ++k1;
     double vt = 0.0;
     for (size_t k = 0; k < k1; ++k)
-        if (gap[k] > R && -v[k] > vt)
+        if (gap[k] > R && -v[k] > vt) {
             vt = -v[k];
+            b->k_terminal = k;
+        }
     if (k1 > 0)
         b->V_T = vt;
     if (k1 == n || k1 == 0)
         return;   /* never touched, or in contact from the first sample: no approach to measure */
     b->touched = 1;
+    b->k_impact = k1 - 1;
     b->V_I = -v[k1 - 1];
     b->t_in_s = zero_crossing(t, gap, k1 - 1, k1);
     size_t k2 = k1;
@@ -49,10 +52,33 @@ void gf_bounce_measure(const double *t, const double *v, const double *gap, size
         while (j + 1 < n && v[j + 1] > v[j])
             ++j;
         b->rebounded = 1;
+        b->k_rebound = j;
         b->V_R = v[j];
     } else {
         b->V_R = 0.0;
     }
     b->e = b->V_I > 0.0 ? b->V_R / b->V_I : NAN;
     b->eps = b->V_T > 0.0 ? b->V_R / b->V_T : NAN;
+}
+
+void gf_bounce_measure_oblique(const gf_bounce *b, const double *vx, const double *wz, double R,
+                               gf_bounce_reference ref, gf_bounce_oblique *o)
+{
+    *o = (gf_bounce_oblique){.e = NAN, .psi_in = NAN, .psi_out = NAN, .beta = NAN, .mu_f = NAN, .xi_in_deg = NAN,
+                             .xi_out_deg = NAN};
+    int at_impact = ref == GF_BOUNCE_AT_IMPACT;
+    double v_in = at_impact ? b->V_I : b->V_T;
+    size_t k_in = at_impact ? b->k_impact : b->k_terminal;
+    if (!b->touched || !b->rebounded || !(v_in > 0.0))
+        return;
+    const double deg = 180.0 / M_PI;
+    o->e = b->V_R / v_in;
+    o->psi_in = (vx[k_in] + R * wz[k_in]) / v_in;
+    o->psi_out = (vx[b->k_rebound] + R * wz[b->k_rebound]) / v_in;
+    o->xi_in_deg = atan(o->psi_in) * deg;
+    o->xi_out_deg = atan2(o->psi_out, o->e) * deg;
+    if (fabs(o->psi_in) >= GF_BOUNCE_PSI_MIN) {
+        o->beta = -o->psi_out / o->psi_in;
+        o->mu_f = 2.0 * (1.0 + o->beta) * o->psi_in / (7.0 * (1.0 + o->e));
+    }
 }

@@ -16,6 +16,23 @@
  *   contact time   end minus start of the first contact.
  * Velocities are positive upward (away from the wall); the speeds V_T, V_I
  * and V_R are reported positive.
+ *
+ * Oblique bounce, at the contact point (Joseph & Hunt, J. Fluid Mech. 510,
+ * 2004, §2; Izard 2014 §3.4): with v_c = v_x + R w_z the velocity of the
+ * sphere's lowest point along the wall (x the direction of the approach) and
+ * V_in, e the normal reference speed and restitution,
+ *   Psi_in  = v_c / V_in before the bounce (= tan xi_in),
+ *   Psi_out = v_c / V_in at the rebound sample, the one of V_R (= e tan xi_out),
+ *   beta    = -Psi_out / Psi_in, the tangential (rotational) restitution,
+ *   mu_f    = 2 (1 + beta) Psi_in / (7 (1 + e)), the effective friction: for a
+ *             solid sphere (I = 2/5 m R^2) the tangential over the normal
+ *             impulse between the two samples, so mu_f = mu_c for a dry contact
+ *             that slides throughout.
+ * Two references, as for e and eps: at impact (the V_I sample, V_in = V_I,
+ * e = V_R/V_I: Joseph & Hunt's velocities just before and after the contact)
+ * and on approach (the V_T sample, V_in = V_T, e = eps = V_R/V_T: Izard's
+ * reference, before the film slows the normal motion; there xi_in is the
+ * angle of the fall, the angle of gravity in the `bounce` scene).
  */
 #ifndef GF_BOUNCE_MEASURE_H
 #define GF_BOUNCE_MEASURE_H
@@ -30,10 +47,33 @@ typedef struct gf_bounce {
     double e, eps;          /* V_R/V_I, V_R/V_T */
     double t_in_s, t_out_s, contact_s;   /* NaN when not determined */
     size_t n_in_contact;    /* samples of the first contact (gap <= 0) */
+    size_t k_terminal;      /* sample of V_T (valid when V_T > 0) */
+    size_t k_impact;        /* sample of V_I (valid when touched) */
+    size_t k_rebound;       /* sample of V_R (valid when rebounded) */
 } gf_bounce;
+
+/* beta and mu_f are ratios to Psi_in: below this (0.06 degree) the impact is
+ * normal and they are left NaN (a normal bounce's roundoff is no angle). */
+#define GF_BOUNCE_PSI_MIN 1e-3
+
+typedef enum gf_bounce_reference { GF_BOUNCE_AT_IMPACT, GF_BOUNCE_AT_APPROACH } gf_bounce_reference;
+
+typedef struct gf_bounce_oblique {
+    double e;                             /* the normal restitution used: V_R/V_I or V_R/V_T */
+    double psi_in, psi_out, beta, mu_f;   /* NaN when not determined (beta, mu_f: also when |Psi_in| < GF_BOUNCE_PSI_MIN) */
+    double xi_in_deg, xi_out_deg;         /* atan(Psi_in), atan(Psi_out / e): contact-point angles to the normal */
+} gf_bounce_oblique;
 
 /* t (s), v (m s-1, positive away from the wall), gap (m, surface to wall) at n
  * samples in increasing time; R the sphere's radius (m). */
 void gf_bounce_measure(const double *t, const double *v, const double *gap, size_t n, double R, gf_bounce *b);
+
+/* The oblique numbers of bounce b (measured by gf_bounce_measure on the same
+ * samples) from the velocity along the wall vx (m s-1) and the spin about the
+ * wall-parallel axis normal to x, wz (rad s-1, positive when it moves the
+ * lowest point towards +x), with the reference ref. All NaN unless b touched
+ * and rebounded. */
+void gf_bounce_measure_oblique(const gf_bounce *b, const double *vx, const double *wz, double R,
+                               gf_bounce_reference ref, gf_bounce_oblique *o);
 
 #endif

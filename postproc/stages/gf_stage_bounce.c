@@ -80,6 +80,39 @@ static gf_status report(gf_ctx *ctx, const gf_bounce *b, const double *att, gf_p
     return GF_OK;
 }
 
+/* The oblique numbers (gf_bounce_measure_oblique) when the diagnostics carry
+ * the tangential motion; runs written before it have none and get no such row. */
+static gf_status report_oblique(gf_ctx *ctx, const gf_stage_in *in, const gf_bounce *b, double R, size_t n,
+                                gf_post_row *row)
+{
+    if (!gf_stage_has_var(in, "diagnostics.nc", "sphere_velocity_x") ||
+        !gf_stage_has_var(in, "diagnostics.nc", "sphere_spin_z"))
+        return GF_OK;
+    gf_ncr f;
+    GF_TRY(gf_stage_open(ctx, in, "diagnostics.nc", &f));
+    double *vx = NULL, *wz = NULL;
+    size_t nx = 0, nw = 0;
+    gf_status st = gf_ncr_var_1d(ctx, &f, "sphere_velocity_x", &vx, &nx);
+    if (st == GF_OK) st = gf_ncr_var_1d(ctx, &f, "sphere_spin_z", &wz, &nw);
+    gf_ncr_close(&f);
+    if (st == GF_OK && (nx != n || nw != n))
+        st = GF_FAIL(ctx, GF_ERR_IO, "diagnostics.nc: sphere_velocity_x has %zu samples, sphere_spin_z %zu, time %zu",
+                     nx, nw, n);
+    static const char *const names[2][5] = {
+        {"bounce_psi_in", "bounce_psi_out", "bounce_beta", "bounce_mu_f", "bounce_xi_out_deg"},
+        {"bounce_psi_in_T", "bounce_psi_out_T", "bounce_beta_T", "bounce_mu_f_T", "bounce_xi_out_deg_T"}};
+    for (int r = 0; r < 2 && st == GF_OK; ++r) {
+        gf_bounce_oblique o;
+        gf_bounce_measure_oblique(b, vx, wz, R, r ? GF_BOUNCE_AT_APPROACH : GF_BOUNCE_AT_IMPACT, &o);
+        const double x[5] = {o.psi_in, o.psi_out, o.beta, o.mu_f, o.xi_out_deg};
+        for (int c = 0; c < 5; ++c)
+            set_if(row, names[r][c], x[c]);
+    }
+    free(vx);
+    free(wz);
+    return st;
+}
+
 gf_status gf_stage_bounce(gf_ctx *ctx, const gf_stage_in *in, const gf_stage_opts *opts, gf_stage_out *out)
 {
     (void)opts;
@@ -103,6 +136,10 @@ gf_status gf_stage_bounce(gf_ctx *ctx, const gf_stage_in *in, const gf_stage_opt
         gf_bounce b;
         gf_bounce_measure(s.t, s.v, s.gap, s.n, 0.5 * att[0], &b);
         st = report(ctx, &b, att, out->row, s.n);
+        if (b.rebounded) {
+            gf_status so = report_oblique(ctx, in, &b, 0.5 * att[0], s.n, out->row);
+            st = so != GF_OK ? so : st;
+        }
     }
     free(s.t);
     free(s.v);
