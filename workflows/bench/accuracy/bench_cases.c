@@ -537,6 +537,11 @@ static gf_status measure_settling(gf_ctx *ctx, const bench_knobs *k, int full, b
 
 /* ---------------------------------------------------------------- table */
 
+/* The settling sphere's terminal velocity, measured by both tiers against one reference. */
+#define SETTLING_TERMINAL_REFERENCE \
+    "Schiller & Naumann 1933 with C_D Re^2 = (4/3) Ar: 1.244 (Izard 2014 eq. (2.35))", "|u_T/u_SN - 1| (1)", 0.03
+#define SETTLING_TERMINAL_AUX "time of the largest speed, sqrt(D/g) (1)"
+
 static const bench_case cases[] = {
     {"restitution", "restitution of a normal collision, clipped law, eps_max 0.5 (1)",
      "closed form of the clipped oscillator, 0.550 (Schaefer et al. 1996)", "worst |e/e_closed - 1| over onset phases (1)",
@@ -574,13 +579,13 @@ static const bench_case cases[] = {
      BENCH_KNOB_CELL | BENCH_KNOB_RETRACT, 0, bench_resolved_available, bench_resolved_measure, NULL,
      bench_resolved_cells, 0, 3, NULL, NULL, 0, 2, 1, bench_resolved_retract, 2},
     {"settling_terminal_tiers", "terminal velocity u_T/sqrt(gD), the same sphere in a 6 D x 16 D box, both tiers (1)",
-     "Schiller & Naumann 1933 with C_D Re^2 = (4/3) Ar: 1.244 (Izard 2014 eq. (2.35))", "|u_T/u_SN - 1| (1)", 0.03,
+     SETTLING_TERMINAL_REFERENCE,
      BENCH_KNOB_CELL, 0, bench_resolved_available, bench_tiers_measure, NULL, bench_tiers_cells, 0, 4,
-     "time of the largest speed, sqrt(D/g) (1)", NULL, 0, 0, 2, NULL, 0},
+     SETTLING_TERMINAL_AUX, NULL, 0, 0, 2, NULL, 0},
     {"settling_terminal_tenneti", "terminal velocity u_T/sqrt(gD), the same, unresolved tier, closure tenneti (1)",
-     "Schiller & Naumann 1933 with C_D Re^2 = (4/3) Ar: 1.244 (Izard 2014 eq. (2.35))", "|u_T/u_SN - 1| (1)", 0.03,
+     SETTLING_TERMINAL_REFERENCE,
      BENCH_KNOB_CELL, 0, bench_resolved_available, bench_tiers_measure_tenneti, NULL, bench_tiers_unresolved_cells, 0,
-     3, "time of the largest speed, sqrt(D/g) (1)", NULL, 0, 0, 2, NULL, 0},
+     3, SETTLING_TERMINAL_AUX, NULL, 0, 0, 2, NULL, 0},
 };
 
 const bench_case *bench_cases(int *n)
