@@ -25,7 +25,7 @@
 
 static const gf_param_info settling_params[] = {
     {"mode", "1", 1.0, 0.0, 1.0, "0: single sphere; 1: homogeneous suspension"},
-    {"box_over_D", "1", 16.0, 4.0, 1000.0, "periodic cube edge / D (the suspension rounds it to whole lattice cells)"},
+    {"box_over_D", "1", 16.0, 2.0, 1000.0, "periodic cube edge / D (the suspension rounds it to whole lattice cells)"},
     {"phi_suspension", "1", 0.2, 0.001, 0.5, "solid fraction of the suspension (mode 1)"},
 };
 
