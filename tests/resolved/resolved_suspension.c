@@ -22,9 +22,11 @@
  *     forcing-radius retraction; the ratio of the two boxes, where that grid
  *     error largely cancels, within 3 %.
  *
- * check=hindered (`slow`): the hindered settling of the random (jittered
- * lattice) suspension at phi = 0.05, 0.1, 0.2, Ar = 20 (isolated Re_T 1.0 by
- * Schiller-Naumann), rho_p/rho = 2, D/dx = 8, against Richardson & Zaki
+ * check=hindered (`slow`): the hindered settling of a random suspension (the
+ * scene's arrangement 1; random=0 the jittered lattice) at phi = 0.05, 0.1,
+ * 0.2 in cubes of 7, 6, 5 D (33, 41, 48 grains), Ar = 20 (isolated Re_T 0.97
+ * by Schiller-Naumann), rho_p/rho = 2, D/dx = 8, U averaged over the second
+ * half of 20 sqrt(D/g), against Richardson & Zaki
  * (Trans. Inst. Chem. Eng. 32, 1954) with n(Re_T) = 4.4 Re_T^-0.03 and U_T
  * the isolated sphere's Schiller-Naumann velocity; the same suspensions in
  * the fast tier (unresolved, di_felice and mean_slip, cells of L/3); prints
@@ -36,15 +38,14 @@
 #include <string.h>
 #include <time.h>
 
-#include "coupling/gf_coupling.h"
-#include "coupling/gf_coupling_diag.h"
 #include "gf_sim.h"
 #include "gf_test.h"
 #include "gf_test_args.h"
-#include "gf_test_drag.h"
+#include "gf_test_suspension.h"
 
-static const double D = 0.01, RHO = 1000.0, RATIO = 2.0, G = 9.81;
+static const double D = GF_TEST_SUSP_D_M, RHO = GF_TEST_SUSP_RHO, RATIO = GF_TEST_SUSP_RATIO, G = GF_TEST_SUSP_G;
 static double D_OVER_DX = 8.0, RETRACT = 0.0;
+static int RANDOM = 0; /* the scene's arrangement: 0 jittered lattice, 1 random (check=hindered's default) */
 
 typedef struct run_case {
     const char *model, *drag; /* fluid.model, fluid.drag (unresolved) */
@@ -62,78 +63,42 @@ typedef struct run_result {
     size_t n_grains;
 } run_result;
 
-static double viscosity(double ar) { return sqrt(RHO * (RATIO - 1.0) * RHO * G * D * D * D / ar); }
-
 static gf_status make_sim(gf_ctx *ctx, const run_case *rc, gf_sim **sim)
 {
+    const gf_test_suspension su = {.model = rc->model, .drag = rc->drag, .mode = rc->mode, .arrangement = RANDOM,
+                                   .box = rc->box, .phi = rc->phi, .ar = rc->ar, .d_over_dx = D_OVER_DX,
+                                   .retract = RETRACT};
     gf_run_spec spec;
-    gf_run_spec_defaults(&spec);
-    snprintf(spec.scene, sizeof spec.scene, "settling");
-    spec.grains = (gf_grains_spec){.diameter_m = D, .polydispersity = 0.0, .density_kg_m3 = RATIO * RHO};
-    snprintf(spec.fluid.model, sizeof spec.fluid.model, "%s", rc->model);
-    if (rc->drag)
-        snprintf(spec.fluid.drag, sizeof spec.fluid.drag, "%s", rc->drag);
-    spec.fluid.density_kg_m3 = RHO;
-    spec.fluid.viscosity_Pa_s = viscosity(rc->ar);
-    spec.fluid.d_over_dx = D_OVER_DX;
-    spec.fluid.ibm_retraction_dx = RETRACT;
-    spec.fluid.cfl = 0.3;
-    spec.contact.t_contact_nd = 0.05;
-    spec.end_time_nd = rc->t_end;
-    GF_TRY(gf_run_spec_set_param(ctx, &spec, "mode", rc->mode));
-    GF_TRY(gf_run_spec_set_param(ctx, &spec, "box_over_D", rc->box));
-    GF_TRY(gf_run_spec_set_param(ctx, &spec, "phi_suspension", rc->phi));
-    if (strcmp(rc->model, "unresolved") == 0) { /* three cells a side: the suspension's box, L = n a */
-        double a = D * cbrt(M_PI / (6.0 * rc->phi)), L = rc->mode ? lround(rc->box * D / a) * a : rc->box * D;
-        spec.fluid.cell_over_D = L / D / 3.0;
-    }
+    GF_TRY(gf_test_suspension_spec(ctx, &su, rc->t_end, &spec));
     gf_sim_options opt = {.n_threads = 1};
     return gf_sim_create(ctx, &spec, &opt, sim);
-}
-
-/* Box mean of the vertical velocity (the volume flux j) and the fluid's momentum rho int_box v, y up. */
-static void box_flux(gf_sim *sim, const gf_particles *p, double V_box, double phi, double *j, double *p_fluid)
-{
-    const gf_coupling *c = gf_sim_coupling(sim);
-    const gf_var_info *vars;
-    const double *const *f;
-    int n[3];
-    double lo[3], h[3];
-    int nv = gf_coupling_fields(c, n, lo, h, &vars, &f);
-    double vp = 0.0;
-    for (size_t i = 0; i < p->n_local; ++i)
-        vp += p->vy_m_s[i] / (double)p->n_local;
-    if (strcmp(gf_coupling_model(c), "resolved") != 0) { /* the fast tier: j from the mean interstitial velocity */
-        double uf[3];
-        gf_coupling_mean_fluid_velocity(c, uf);
-        *j = phi * vp + (1.0 - phi) * uf[1];
-        *p_fluid = NAN;
-        return;
-    }
-    double s = 0.0;
-    size_t nc = (size_t)n[0] * n[1] * n[2];
-    for (int v = 0; v < nv; ++v)
-        if (strcmp(vars[v].name, "v_fluid") == 0)
-            for (size_t q = 0; q < nc; ++q)
-                s += f[v][q];
-    *j = s / (double)nc;
-    *p_fluid = RHO * *j * V_box;
 }
 
 /* Advances to the end of a fluid step's DEM substeps, where the grains have taken the whole impulse the fluid
  * step gave the fluid: one DEM step at a time until the flux changes (a fluid step began), then the rest of
  * its substeps. */
-static gf_status to_cycle_end(gf_sim *sim, const gf_particles *p, double V_box, double phi)
+static gf_status to_cycle_end(gf_sim *sim, double phi)
 {
-    double j0, j, pf;
-    box_flux(sim, p, V_box, phi, &j0, &pf);
+    double vp, j0, j;
+    gf_test_suspension_flux(sim, phi, &vp, &j0);
     for (int s = 0; s < 1000; ++s) {
         GF_TRY(gf_sim_advance(sim, 1));
-        box_flux(sim, p, V_box, phi, &j, &pf);
+        gf_test_suspension_flux(sim, phi, &vp, &j);
         if (j != j0)
             return gf_sim_advance(sim, gf_sim_fluid_substeps(sim) - 1);
     }
     return GF_OK;
+}
+
+/* sum_i (m_i - rho V_i) v_i, the grains' momentum with the fluid inside them counted as rigid, y up. */
+static double grain_excess_momentum(const gf_particles *p)
+{
+    double s = 0.0;
+    for (size_t i = 0; i < p->n_local; ++i) {
+        double R = p->radius_m[i];
+        s += (p->mass_kg[i] - RHO * 4.0 / 3.0 * M_PI * R * R * R) * p->vy_m_s[i];
+    }
+    return s;
 }
 
 static gf_status run(const run_case *rc, run_result *out)
@@ -147,36 +112,26 @@ static gf_status run(const run_case *rc, run_result *out)
         return st;
     }
     const gf_particles *p = gf_sim_particles(sim);
-    double lo[3], hi[3], excess = 0.0, vs = 0.0;
+    double lo[3], hi[3], excess;
     int per[3];
     gf_sim_box(sim, lo, hi, per);
-    double V_box = (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]);
-    for (size_t i = 0; i < p->n_local; ++i) {
-        double V = M_PI / 6.0 * 8.0 * p->radius_m[i] * p->radius_m[i] * p->radius_m[i];
-        vs += V;
-        excess += p->mass_kg[i] - RHO * V;
-    }
-    const double tg = sqrt(D / G);
+    const double V_box = (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]), tg = sqrt(D / G);
+    const int resolved = strcmp(rc->model, "resolved") == 0;
     long chunk = (long)ceil(0.1 * tg / gf_sim_dt_s(sim));
     double sU = 0.0, t1 = -1.0, P1 = 0.0;
     int nU = 0;
-    *out = (run_result){.phi = vs / V_box, .n_grains = p->n_local};
+    *out = (run_result){.phi = gf_test_suspension_phi(sim, &excess), .n_grains = p->n_local};
     while (st == GF_OK && gf_sim_time_s(sim) < rc->t_end * tg) {
         st = gf_sim_advance(sim, chunk);
-        double j, pf, vp = 0.0, pg = 0.0;
-        if (st == GF_OK)
-            st = to_cycle_end(sim, p, V_box, out->phi);
-        box_flux(sim, p, V_box, out->phi, &j, &pf);
-        for (size_t i = 0; i < p->n_local; ++i) {
-            double V = M_PI / 6.0 * 8.0 * p->radius_m[i] * p->radius_m[i] * p->radius_m[i];
-            vp += p->vy_m_s[i] / (double)p->n_local;
-            pg += (p->mass_kg[i] - RHO * V) * p->vy_m_s[i];
-        }
-        double t = gf_sim_time_s(sim);
-        if (isfinite(pf) && t1 < 0.0)
-            t1 = t, P1 = pf + pg, out->p_offset = P1 / (excess * G * gf_sim_dt_s(sim));
-        else if (isfinite(pf))
-            out->p_max = fmax(out->p_max, fabs(pf + pg - P1) / (excess * G * (t - t1)));
+        if (st == GF_OK && resolved)
+            st = to_cycle_end(sim, out->phi);
+        double vp, j, t = gf_sim_time_s(sim);
+        gf_test_suspension_flux(sim, out->phi, &vp, &j);
+        double P = RHO * j * V_box + grain_excess_momentum(p); /* the mixture's momentum (resolved) */
+        if (resolved && t1 < 0.0)
+            t1 = t, P1 = P, out->p_offset = P1 / (excess * G * gf_sim_dt_s(sim));
+        else if (resolved)
+            out->p_max = fmax(out->p_max, fabs(P - P1) / (excess * G * (t - t1)));
         if (t >= rc->t_avg * tg)
             sU += j - vp, nU++;
         if (!isfinite(vp))
@@ -209,14 +164,14 @@ static void check_periodic(double box0, double box1)
     GF_CHECK(r.p_max < 1e-3);
     const double boxes[2] = {box0, box1};
     double ratio[2];
-    double us = (RATIO - 1.0) * RHO * G * D * D / (18.0 * viscosity(3.6));
+    double us = (RATIO - 1.0) * RHO * G * D * D / (18.0 * gf_test_suspension_viscosity(3.6));
     for (int b = 0; b < 2; ++b) {
         const run_case one = {"resolved", NULL, 0, boxes[b], 0.2, 3.6, 5.0, 4.0};
         GF_CHECK(run(&one, &r) == GF_OK);
         ratio[b] = r.U / us;
         printf("one grain, %.1f D periodic cube (phi %.4f): U/U_Stokes %.4f, Hasimoto %.4f (%+.1f %%), Re %.3f, "
                "max |P - P(t1)| %.1e, %.1f CPU-s\n", boxes[b], r.phi, ratio[b], hasimoto(r.phi),
-               100.0 * (ratio[b] / hasimoto(r.phi) - 1.0), RHO * r.U * D / viscosity(3.6), r.p_max, r.cpu_s);
+               100.0 * (ratio[b] / hasimoto(r.phi) - 1.0), RHO * r.U * D / gf_test_suspension_viscosity(3.6), r.p_max, r.cpu_s);
         GF_CHECK_REL(ratio[b], hasimoto(r.phi), 0.12);
         GF_CHECK(r.p_max < 1e-3);
     }
@@ -227,39 +182,61 @@ static void check_periodic(double box0, double box1)
     GF_CHECK_REL(ratio[0] / ratio[1], want, 0.03);
 }
 
-static void check_hindered(double t_end)
+/* phi_one > 0: that one suspension in a box_one box, resolved_only: the resolved tier alone. */
+/* phi_one > 0: that one suspension in a box_one box, resolved_only: the resolved tier alone. Fits
+ * U/U_T = k (1 - phi)^n to each tier's points (least squares in logs). */
+static void check_hindered(double t_end, double phi_one, double box_one, int resolved_only)
 {
-    const double ar = 20.0, mu = viscosity(ar);
-    double re_t = gf_test_schiller_naumann_Re(ar), ut = re_t * mu / (RHO * D), n = 4.4 * pow(re_t, -0.03);
+    const double ar = 20.0;
+    double re_t, n;
+    double ut = gf_test_suspension_terminal(ar, &re_t, &n);
     printf("hindered settling: Ar %.0f, rho_p/rho %.0f, U_T %.4g m/s (Schiller-Naumann), Re_T %.3f, RZ n %.3f\n",
            ar, RATIO, ut, re_t, n);
     printf("| tier | closure | phi | grains | U/U_T | RZ (1-phi)^n | error vs RZ | CPU-s |\n");
-    const double phis[3] = {0.05, 0.1, 0.2}, boxes[3] = {6.6, 5.2, 4.1};
+    double phis[3] = {0.05, 0.1, 0.2}, boxes[3] = {7.0, 6.0, 5.0};
+    int nq = 3, nm = resolved_only ? 1 : 3;
+    if (phi_one > 0.0)
+        phis[0] = phi_one, boxes[0] = box_one, nq = 1;
     const char *const models[3][2] = {{"resolved", NULL}, {"unresolved", "di_felice"}, {"unresolved", "mean_slip"}};
-    for (int q = 0; q < 3; ++q)
-        for (int m = 0; m < 3; ++m) {
+    for (int m = 0; m < nm; ++m) {
+        double sx = 0, sy = 0, sxx = 0, sxy = 0;
+        for (int q = 0; q < nq; ++q) {
             const run_case rc = {models[m][0], models[m][1], 1, boxes[q], phis[q], ar, t_end, 0.5 * t_end};
             run_result r;
             GF_CHECK(run(&rc, &r) == GF_OK);
-            double rz = pow(1.0 - r.phi, n);
-            printf("| %s | %s | %.4f | %zu | %.4f | %.4f | %+.1f %% | %.1f |\n", models[m][0],
+            double rz = pow(1.0 - r.phi, n), x = log(1.0 - r.phi), y = log(r.U / ut);
+            printf("| %s | %s | %.4f | %zu | %.4f | %.4f | %+.1f %% | %.3g |\n", models[m][0],
                    models[m][1] ? models[m][1] : "IBM, D/dx 8", r.phi, r.n_grains, r.U / ut, rz,
                    100.0 * (r.U / ut / rz - 1.0), r.cpu_s);
             GF_CHECK(isfinite(r.U) && r.U > 0.0);
+            sx += x, sy += y, sxx += x * x, sxy += x * y;
         }
+        if (nq > 1) {
+            double fit_n = (nq * sxy - sx * sy) / (nq * sxx - sx * sx), k = exp((sy - fit_n * sx) / nq);
+            printf("  %s %s: U/U_T = %.3f (1 - phi)^%.2f\n", models[m][0], models[m][1] ? models[m][1] : "", k,
+                   fit_n);
+        }
+    }
 }
 
 int main(int argc, char **argv)
 {
     char check[16] = "periodic";
-    double t_end = 20.0, box0 = 3.0, box1 = 4.0;
+    double t_end = 20.0, box0 = 3.0, box1 = 4.0, phi_one = 0.0, box_one = 0.0;
+    int resolved_only = 0;
+    RANDOM = -1;
     const gf_test_arg keys[] = {{.key = "check", .text = check, .text_size = sizeof check},
                                 {.key = "end", .number = &t_end}, {.key = "dx", .number = &D_OVER_DX},
                                 {.key = "retract", .number = &RETRACT}, {.key = "box0", .number = &box0},
-                                {.key = "box1", .number = &box1}};
+                                {.key = "box1", .number = &box1}, {.key = "phi", .number = &phi_one},
+                                {.key = "box", .number = &box_one}, {.key = "resolved_only", .integer = &resolved_only},
+                                {.key = "random", .integer = &RANDOM}};
     gf_test_parse_args(argc, argv, keys, sizeof keys / sizeof keys[0]);
-    if (strcmp(check, "hindered") == 0)
-        check_hindered(t_end);
+    int hindered = strcmp(check, "hindered") == 0;
+    if (RANDOM < 0)
+        RANDOM = hindered;
+    if (hindered)
+        check_hindered(t_end, phi_one, box_one, resolved_only);
     else
         check_periodic(box0, box1);
     return gf_test_finish();
