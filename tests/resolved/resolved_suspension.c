@@ -205,9 +205,13 @@ static void check_hindered(double t_end, double phi_one, double box_one, int res
             run_result r;
             GF_CHECK(run(&rc, &r) == GF_OK);
             double rz = pow(1.0 - r.phi, n), x = log(1.0 - r.phi), y = log(r.U / ut);
-            printf("| %s | %s | %.4f | %zu | %.4f | %.4f | %+.1f %% | %.3g |\n", models[m][0],
-                   models[m][1] ? models[m][1] : "IBM, D/dx 8", r.phi, r.n_grains, r.U / ut, rz,
-                   100.0 * (r.U / ut / rz - 1.0), r.cpu_s);
+            char closure[32];
+            if (models[m][1])
+                snprintf(closure, sizeof closure, "%s", models[m][1]);
+            else
+                snprintf(closure, sizeof closure, "IBM, D/dx %g", D_OVER_DX);
+            printf("| %s | %s | %.4f | %zu | %.4f | %.4f | %+.1f %% | %.3g |\n", models[m][0], closure, r.phi,
+                   r.n_grains, r.U / ut, rz, 100.0 * (r.U / ut / rz - 1.0), r.cpu_s);
             GF_CHECK(isfinite(r.U) && r.U > 0.0);
             sx += x, sy += y, sxx += x * x, sxy += x * y;
         }
