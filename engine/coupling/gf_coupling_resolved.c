@@ -27,9 +27,30 @@
  *   - viscous: nu dt/dx^2 <= 1, the predictor's explicit viscous term (the
  *     one the forcing sees) spreads at most a cell per step; the thesis'
  *     settling run sits at 0.98 (dt sqrt(g/D) = 0.04, D/dx = 20, Ar = 800).
- * The gravity axis should be closed by walls: with a periodic gravity axis the
- * grains' excess weight accelerates the whole fluid (no mean-pressure
- * balance yet; the unresolved tier has one).
+ *
+ * A periodic axis along which gravity acts has no bottom to carry the grains'
+ * excess weight: without more, the weight would accelerate the whole fluid.
+ * The tier then adds the mean pressure gradient of a settling tank, a uniform
+ * body force per unit volume on the fluid at every velocity face (inside the
+ * grains too), on the periodic axes d,
+ *   G_d = -(sum_i (m_i - rho V_i) / V_box) g_d,
+ * and 0 while any grain is glued (the glued grains and the walls carry the
+ * weight: the avalanche keeps its tank), as for periodic sedimentation in
+ * Uhlmann (2005) and Uhlmann & Doychev (J. Fluid Mech. 752, 2014);
+ * the unresolved tier applies the same G (Capecelatro & Desjardins 2013).
+ * G leaves the grain's force formula as it is. With the full stress sigma
+ * (pressure p = p' + P, P linear, -grad P + rho g = G) the grain obeys
+ *   m dU/dt = oint sigma.n + m g = oint sigma'.n + V (G - rho g) + m g,
+ * and the fluid inside it, which the fluid step carries with G and f,
+ *   rho V dU/dt = oint sigma'.n + G V + rho int f_i    (rigid inner fluid);
+ * subtracting, (m - rho V) dU/dt = -rho int f_i + (m - rho V) g: G V, the
+ * mean gradient's push on the grain, is paid by the forcing integral (the
+ * forcing removes G from the inner fluid), and F_i above is unchanged. Summed
+ * over the box (periodic: the advection, viscous and pressure terms have no
+ * net integral up to the non-conservative advection's truncation), the mixture
+ * momentum rho int_box u + sum_i (m_i - rho V_i) U_i then stays constant
+ * (tests/resolved/resolved_suspension.c: to 2e-4 of the weight impulse).
+ * G is recomputed from the grains at every fluid step: no state of its own.
  */
 #include <math.h>
 #include <stdio.h>
@@ -319,6 +340,25 @@ static void output_fields(gf_resolved *c)
     memcpy(c->fields[RF_P], f->p_Pa, g->n_cells * sizeof(double));
 }
 
+/* G/rho on the periodic axes (m/s^2), 0 with glued grains or no excess weight; see the header. */
+static void mean_pressure_gradient(const gf_resolved *c, const gf_particles *p, double b_m_s2[3])
+{
+    const gf_grid *g = &c->fluid->grid;
+    double rho = c->fluid->rho_kg_m3, excess = 0.0, vbox = 1.0;
+    int glued = 0;
+    for (size_t i = 0; i < p->n_local; ++i) {
+        double R = p->radius_m[i];
+        excess += p->mass_kg[i] - rho * (4.0 / 3.0 * M_PI * R * R * R);
+        glued |= (p->flags[i] & GF_P_GLUED) != 0;
+    }
+    for (int d = 0; d < 3; ++d)
+        vbox *= g->h_m[d] * g->n[d];
+    for (int d = 0; d < 3; ++d) {
+        double G = g->periodic[d] && !glued ? -excess / vbox * c->setup.gravity_m_s2[d] : 0.0;
+        b_m_s2[d] = G / rho;
+    }
+}
+
 static gf_status resolved_fluid_step(gf_coupling *cc, const gf_particles *p, double dt_s)
 {
     gf_resolved *c = R_(cc);
@@ -331,6 +371,9 @@ static gf_status resolved_fluid_step(gf_coupling *cc, const gf_particles *p, dou
     const double *const A[3] = {c->A[0], c->A[1], c->A[2]};
     const double *const A_old[3] = {c->A_old[0], c->A_old[1], c->A_old[2]};
     gf_fluid_ns2_rates(f, A, c->first_step ? A : A_old, c->r);
+    double b[3];
+    mean_pressure_gradient(c, p, b);
+    gf_fluid_ns2_add_acceleration(f, b, c->r);
     const double *const r[3] = {c->r[0], c->r[1], c->r[2]};
     gf_fluid_ns2_predict(f, r, dt_s, c->u_pred);
     const double *const up[3] = {c->u_pred[0], c->u_pred[1], c->u_pred[2]};

@@ -106,6 +106,21 @@ void gf_fluid_ns2_rates(const gf_fluid *f, const double *const A[3], const doubl
     }
 }
 
+void gf_fluid_ns2_add_acceleration(const gf_fluid *f, const double b_m_s2[3], double *const r[3])
+{
+    const gf_grid *g = &f->grid;
+    const int nt = step_threads(f);
+    for (int a = 0; a < 3; ++a) {
+        if (b_m_s2[a] == 0.0)
+            continue;
+        const double b = b_m_s2[a];
+#pragma omp parallel for num_threads(nt) if (nt > 1) schedule(static)
+        GF_GRID_FOR_FREE_FACES(g, a, fi, i, j, k)
+        r[a][fi] += b;
+        gf_grid_sync_periodic(g, a, r[a]);
+    }
+}
+
 void gf_fluid_ns2_predict(const gf_fluid *f, const double *const r[3], double dt_s, double *const u_pred[3])
 {
     const gf_grid *g = &f->grid;

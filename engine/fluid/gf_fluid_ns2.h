@@ -31,6 +31,9 @@
 void gf_fluid_ns2_advection(const gf_fluid *f, double *const A[3]);
 /* r = 3/2 A - 1/2 A_old + nu L u - grad p / rho at free faces; A_old may be A (Euler start). */
 void gf_fluid_ns2_rates(const gf_fluid *f, const double *const A[3], const double *const A_old[3], double *const r[3]);
+/* r += b_a at every free face of each component a with b_a != 0: a uniform body acceleration (m/s^2), at the
+ * faces inside the grains too (the resolved tier's mean pressure gradient over rho on a periodic gravity axis). */
+void gf_fluid_ns2_add_acceleration(const gf_fluid *f, const double b_m_s2[3], double *const r[3]);
 /* u~ = u + dt r. */
 void gf_fluid_ns2_predict(const gf_fluid *f, const double *const r[3], double dt_s, double *const u_pred[3]);
 /* Crank-Nicolson increment with the forcing: f->work = u*; force may be NULL. */

@@ -6,7 +6,10 @@
  *    Izard 2014 §2.2.3 uses rho_p/rho_f = 4, Ar = 800, Re_t = 20.3).
  *  mode 1, homogeneous suspension: grains at solid fraction phi_suspension on a
  *    jittered simple cubic lattice filling a periodic cube (Richardson & Zaki
- *    1954 hindered settling, U/U_t = (1 - phi)^4.65 at low Re).
+ *    1954 hindered settling, U/U_t = (1 - phi)^4.65 at low Re); with
+ *    arrangement 1, at random instead (sequential addition, no two grains
+ *    closer than 1.05 D across the periodic faces, phi <= 0.3), the cube kept
+ *    at box_over_D and the count rounded to phi L^3 / V_grain.
  * Axes: y vertical (docs/output.md), all three axes periodic. With periodic
  * gravity and no glued grains the coupling applies the mean pressure
  * gradient that carries the excess weight, so the mixture's momentum stays
@@ -25,9 +28,51 @@
 
 static const gf_param_info settling_params[] = {
     {"mode", "1", 1.0, 0.0, 1.0, "0: single sphere; 1: homogeneous suspension"},
-    {"box_over_D", "1", 16.0, 4.0, 1000.0, "periodic cube edge / D (the suspension rounds it to whole lattice cells)"},
+    {"box_over_D", "1", 16.0, 2.0, 1000.0, "periodic cube edge / D (the suspension rounds it to whole lattice cells)"},
     {"phi_suspension", "1", 0.2, 0.001, 0.5, "solid fraction of the suspension (mode 1)"},
+    {"arrangement", "1", 0.0, 0.0, 1.0, "suspension: 0 jittered simple cubic lattice; 1 random sequential addition"},
 };
+
+#define SETTLING_RANDOM_GAP 1.05      /* smallest centre distance / D of the random arrangement */
+#define SETTLING_RANDOM_PHI_MAX 0.3   /* sequential addition stalls well above (jamming near 0.38) */
+#define SETTLING_RANDOM_TRIES 100000  /* draws per grain before giving up */
+
+/* Squared distance between a and b in the periodic cube of edge L (minimum image). */
+static double periodic_dist2(const double a[3], const double b[3], double L)
+{
+    double s = 0.0;
+    for (int d = 0; d < 3; ++d) {
+        double x = fabs(a[d] - b[d]);
+        x = fmin(x, L - x);
+        s += x * x;
+    }
+    return s;
+}
+
+/* n grains of diameter D at random in the periodic cube [0, L)^3, none closer than SETTLING_RANDOM_GAP D. */
+static gf_status random_suspension(gf_sim *sim, double L, size_t n, double D, double rho)
+{
+    gf_ctx *ctx = gf_sim_ctx(sim);
+    gf_particles *p = gf_sim_particles(sim);
+    gf_rng *rng = gf_sim_rng(sim);
+    size_t i0 = p->n_local;
+    double gap2 = SETTLING_RANDOM_GAP * D * SETTLING_RANDOM_GAP * D;
+    for (size_t k = 0; k < n; ++k) {
+        double x[3];
+        int placed = 0;
+        for (long t = 0; t < SETTLING_RANDOM_TRIES && !placed; ++t) {
+            for (int d = 0; d < 3; ++d)
+                x[d] = gf_rng_range(rng, 0.0, L);
+            placed = 1;
+            for (size_t j = i0; j < p->n_local && placed; ++j)
+                placed = periodic_dist2(x, (const double[3]){p->x_m[j], p->y_m[j], p->z_m[j]}, L) >= gap2;
+        }
+        if (!placed)
+            return GF_FAIL(ctx, GF_ERR_CONFIG, "settling: no room for grain %zu of %zu at random", k + 1, n);
+        GF_TRY(gf_particles_add(ctx, p, x[0], x[1], x[2], 0.5 * D, rho, 0, NULL));
+    }
+    return GF_OK;
+}
 
 static const gf_var_info settling_diag[] = {
     {"grain_velocity_y", "m s-1", "mean vertical grain velocity", NULL},
@@ -45,6 +90,14 @@ static gf_status settling_build(gf_sim *sim, const gf_run_spec *spec)
     double phi = gf_run_spec_param(spec, "phi_suspension", 0.2);
     int n = 1;
     double a = L;
+    if (suspension && gf_run_spec_param(spec, "arrangement", 0.0) > 0.5) {
+        if (phi > SETTLING_RANDOM_PHI_MAX)
+            return GF_FAIL(ctx, GF_ERR_CONFIG, "settling: the random arrangement takes phi_suspension <= %g (%g asked)",
+                           SETTLING_RANDOM_PHI_MAX, phi);
+        const double lo[3] = {0, 0, 0}, hi[3] = {L, L, L};
+        GF_TRY(gf_scene_box_under_gravity(sim, lo, hi, (const int[3]){1, 1, 1}, spec->gravity_m_s2));
+        return random_suspension(sim, L, (size_t)lround(phi * L * L * L / (M_PI / 6.0 * D * D * D)), D, rho);
+    }
     if (suspension) {
         a = D * cbrt(M_PI / (6.0 * phi));  /* lattice spacing at phi */
         n = (int)lround(L / a);

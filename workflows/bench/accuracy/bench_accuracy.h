@@ -94,6 +94,10 @@ extern const double bench_tiers_cells[], bench_tiers_unresolved_cells[];
 gf_status bench_tiers_measure(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out);
 gf_status bench_tiers_measure_tenneti(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out);
 
+/* hindered_settling_tiers (bench_suspension.c): a random suspension at phi 0.1, Ar 20, unresolved and resolved tiers */
+extern const double bench_suspension_cells[];
+gf_status bench_suspension_measure(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out);
+
 /* Default of a knob for case c: the common default, or the first of the
  * case's own list when that list does not hold the common default. */
 double bench_case_default(const bench_case *c, unsigned knob);

@@ -69,6 +69,12 @@
  *                   tier's default closure (di_felice). Its twin
  *                   settling_terminal_tenneti: the unresolved cells with the
  *                   closure tenneti (isolated limit Schiller-Naumann).
+ *  hindered_settling_tiers (bench_suspension.c) a random suspension, phi
+ *                   0.1, 41 grains in a 6 D periodic cube, rho_p/rho 2,
+ *                   Ar 20: U/U_T against Richardson & Zaki (1954),
+ *                   n = 4.4 Re_T^-0.03, tolerance 10 %; the cell knob picks
+ *                   the tier as in settling_terminal_tiers (unresolved
+ *                   di_felice at 3, 2, 1.5 D; resolved at D/dx = 8).
  *  janssen_saturation (--full, bench_janssen.c) the 6 D x 30 D Janssen
  *                   column of test_janssen: saturation stress (lower-half
  *                   mean), mean of 3 seeds, against the same at dt = t_c/100,
@@ -586,6 +592,10 @@ static const bench_case cases[] = {
      SETTLING_TERMINAL_REFERENCE,
      BENCH_KNOB_CELL, 0, bench_resolved_available, bench_tiers_measure_tenneti, NULL, bench_tiers_unresolved_cells, 0,
      3, SETTLING_TERMINAL_AUX, NULL, 0, 0, 2, NULL, 0},
+    {"hindered_settling_tiers", "settling velocity U/U_T, random suspension phi 0.1, Ar 20, 6 D cube, both tiers (1)",
+     "Richardson & Zaki 1954: (1 - phi)^n, n = 4.4 Re_T^-0.03, U_T Schiller-Naumann", "|U/U_RZ - 1| (1)", 0.10,
+     BENCH_KNOB_CELL, 0, bench_resolved_available, bench_suspension_measure, NULL, bench_suspension_cells, 0, 4, NULL,
+     NULL, 0, 0, 2, NULL, 0},
 };
 
 const bench_case *bench_cases(int *n)
