@@ -81,25 +81,30 @@ static double face_offset(const gf_grid *g, int a, int d, int m, double xc_d)
     return g->lo_m[d] + (m + (d == a ? 0.0 : 0.5)) * g->h_m[d] - xc_d;
 }
 
-/* Appends the face at offset r_m (squared length r2) to component a of grain slot s when it lies within the
- * profile's shell. */
-static gf_status map_face(gf_ibm_grain *s, const gf_grid *g, int a, const int q[3], const double r_m[3], double r2,
-                          double R)
+/* The offset of entry e of component a from the centre xc (minimum image: e holds the unwrapped indices). */
+static void entry_offset(const gf_grid *g, int a, const gf_ibm_entry *e, const double xc[3], double r_m[3])
+{
+    for (int d = 0; d < 3; ++d)
+        r_m[d] = face_offset(g, a, d, e->q[d], xc[d]);
+}
+
+/* Appends face u (unwrapped indices; q: wrapped) at offset r_m (squared length r2) to component a of grain
+ * slot s when it lies within the profile's shell. */
+static gf_status map_face(gf_ibm_grain *s, const gf_grid *g, int a, const int u[3], const int q[3],
+                          const double r_m[3], double r2, double R)
 {
     double h = g->h_m[0];
-    gf_ibm_entry e;
-    memcpy(e.r_m, r_m, sizeof e.r_m);
     double r = sqrt(r2);
     double n[3] = {1.0, 0.0, 0.0};
     if (r > 0.0)
         for (int d = 0; d < 3; ++d)
-            n[d] = e.r_m[d] / r;
+            n[d] = r_m[d] / r;
     double lambda = fabs(n[0]) + fabs(n[1]) + fabs(n[2]);
     double width = lambda * (0.065 * (1.0 - lambda * lambda) + 0.39) * M_SQRT2 * h;
     if (r - R > GF_IBM_SHELL_WIDTHS * width)
         return GF_OK;
-    e.alpha = gf_ibm_alpha(r - R, n, h);
-    e.face = gf_grid_face(g, a, q[0], q[1], q[2]);
+    gf_ibm_entry e = {.alpha = gf_ibm_alpha(r - R, n, h), .face = (uint32_t)gf_grid_face(g, a, q[0], q[1], q[2]),
+                      .q = {(int16_t)u[0], (int16_t)u[1], (int16_t)u[2]}};
     return push(s, a, &e);
 }
 
@@ -134,8 +139,8 @@ static gf_status map_grain(gf_ibm_grain *s, const gf_grid *g, int a, const doubl
                 double r2 = r_m[0] * r_m[0] + r_m[1] * r_m[1] + r_m[2] * r_m[2];
                 if (r2 > reach2)
                     continue;
-                const int q[3] = {ii, jj, kk};
-                gf_status st = map_face(s, g, a, q, r_m, r2, R);
+                const int u[3] = {i, j, k}, q[3] = {ii, jj, kk};
+                gf_status st = map_face(s, g, a, u, q, r_m, r2, R);
                 if (st != GF_OK)
                     return st;
             }
@@ -170,6 +175,10 @@ static int map_slot(gf_ibm_grain *s, const gf_grid *g, const double xc[3], doubl
 gf_status gf_ibm_build(gf_ctx *ctx, gf_ibm_map *m, const gf_grid *g, const gf_particles *p)
 {
     const long n = (long)p->n_local;
+    for (int a = 0; a < 3; ++a)
+        if (g->n[a] > GF_IBM_MAX_CELLS || g->n_faces[a] > UINT32_MAX)
+            return GF_FAIL(ctx, GF_ERR_CONFIG, "ibm: %d cells along axis %d (%zu faces): the maps hold at most %d "
+                           "cells per axis and 2^32 faces", g->n[a], a, g->n_faces[a], GF_IBM_MAX_CELLS);
     GF_TRY(reserve_grains(ctx, m, (size_t)n));
     if (!same_grid(g, &m->built_on))
         for (size_t i = 0; i < m->cap_grains; ++i)
@@ -210,12 +219,16 @@ static void scatter_component(const gf_ibm_map *m, const gf_grid *g, const gf_pa
 {
     memset(alpha_sum, 0, g->n_faces[a] * sizeof(double));
     memset(aU, 0, g->n_faces[a] * sizeof(double));
-    for (size_t i = 0; i < m->n_grains; ++i)
-        for (size_t q = 0; q < m->grain[i].n_e[a]; ++q) {
-            const gf_ibm_entry *e = &m->grain[i].e[a][q];
+    for (size_t i = 0; i < m->n_grains; ++i) {
+        const gf_ibm_grain *s = &m->grain[i];
+        for (size_t q = 0; q < s->n_e[a]; ++q) {
+            const gf_ibm_entry *e = &s->e[a][q];
+            double r_m[3];
+            entry_offset(g, a, e, s->key, r_m);
             alpha_sum[e->face] += e->alpha;
-            aU[e->face] += e->alpha * rigid_velocity(p, i, a, e->r_m);
+            aU[e->face] += e->alpha * rigid_velocity(p, i, a, r_m);
         }
+    }
 }
 
 /* f = alpha (U - u~)/dt, alpha = min(1, sum_i alpha_i), face by face on nt threads. */
@@ -242,12 +255,15 @@ static void grain_integrals(const gf_ibm_map *m, const gf_grid *g, const gf_part
     double F[3] = {0, 0, 0}, T[3] = {0, 0, 0};
     for (int a = 0; a < 3; ++a) {
         int b = (a + 1) % 3, c = (a + 2) % 3;
-        for (size_t q = 0; q < m->grain[i].n_e[a]; ++q) {
-            const gf_ibm_entry *e = &m->grain[i].e[a][q];
-            double fa = e->alpha * (rigid_velocity(p, i, a, e->r_m) - u_pred[a][e->face]);
+        const gf_ibm_grain *s = &m->grain[i];
+        for (size_t q = 0; q < s->n_e[a]; ++q) {
+            const gf_ibm_entry *e = &s->e[a][q];
+            double r_m[3];
+            entry_offset(g, a, e, s->key, r_m);
+            double fa = e->alpha * (rigid_velocity(p, i, a, r_m) - u_pred[a][e->face]);
             F[a] += fa;
-            T[b] += e->r_m[c] * fa; /* r x (f_a e_a) = f_a (r_c e_b - r_b e_c), (a, b, c) cyclic */
-            T[c] -= e->r_m[b] * fa;
+            T[b] += r_m[c] * fa; /* r x (f_a e_a) = f_a (r_c e_b - r_b e_c), (a, b, c) cyclic */
+            T[c] -= r_m[b] * fa;
         }
     }
     for (int d = 0; d < 3; ++d) {

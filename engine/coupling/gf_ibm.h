@@ -62,6 +62,7 @@
 #define GF_IBM_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "core/gf_status.h"
 #include "fluid/gf_grid.h"
@@ -72,10 +73,15 @@
 /* Reach of a grain's map beyond its radius, in cells: 7 x 0.46 x sqrt(2) = 4.6. */
 #define GF_IBM_REACH_CELLS 4.6
 
+/* Maps hold faces of grids up to this many cells per axis (the unwrapped indices are 16-bit). */
+#define GF_IBM_MAX_CELLS 30000
+
+/* 24 bytes: the forcing streams every entry twice a step. The face's offset from the grain's centre (minimum
+ * image) is recomputed from the unwrapped indices q, the same expression that selected the face. */
 typedef struct gf_ibm_entry {
-    size_t face;
     double alpha;
-    double r_m[3];      /* face position minus grain centre (minimum image) */
+    uint32_t face;      /* index in the component's face array */
+    int16_t q[3];       /* face indices before the periodic wrap */
 } gf_ibm_entry;
 
 /* One grain's entries, per velocity component, in face order (k, then j, then i). */
