@@ -9,15 +9,17 @@ double gf_ibm_alpha(double s_m, const double n[3], double dx_m)
 {
     double lambda = fabs(n[0]) + fabs(n[1]) + fabs(n[2]);
     double phi = 0.065 * (1.0 - lambda * lambda) + 0.39;
-    return 0.5 - 0.5 * tanh(s_m / (lambda * phi * M_SQRT2 * dx_m));
+    /* 1/2 - 1/2 tanh(x) = 1 / (1 + exp(2x)): one exponential where tanh costs an expm1 and a division, and no
+     * cancellation in the outer shell (alpha ~ 1e-6 at x = 7) */
+    return 1.0 / (1.0 + exp(2.0 * s_m / (lambda * phi * M_SQRT2 * dx_m)));
 }
 
 void gf_ibm_free(gf_ibm_map *m)
 {
-    for (int a = 0; a < 3; ++a) {
-        free(m->start[a]);
-        free(m->e[a]);
-    }
+    for (size_t i = 0; i < m->cap_grains; ++i)
+        for (int a = 0; a < 3; ++a)
+            free(m->grain[i].e[a]);
+    free(m->grain);
     memset(m, 0, sizeof *m);
 }
 
@@ -30,31 +32,32 @@ static int face_threads(const gf_ibm_map *m) { return m->n_threads > 1 ? m->n_th
 
 static gf_status reserve_grains(gf_ctx *ctx, gf_ibm_map *m, size_t n)
 {
-    if (n + 1 <= m->cap_grains)
+    if (n <= m->cap_grains)
         return GF_OK;
     size_t cap = n + n / 2 + 8;
-    for (int a = 0; a < 3; ++a) {
-        size_t *s = realloc(m->start[a], cap * sizeof *s);
-        if (!s)
-            return GF_FAIL(ctx, GF_ERR_NOMEM, "ibm: out of memory for %zu grains", n);
-        m->start[a] = s;
-    }
+    gf_ibm_grain *q = realloc(m->grain, cap * sizeof *q);
+    if (!q)
+        return GF_FAIL(ctx, GF_ERR_NOMEM, "ibm: out of memory for %zu grains", n);
+    memset(q + m->cap_grains, 0, (cap - m->cap_grains) * sizeof *q);
+    for (size_t i = m->cap_grains; i < cap; ++i)
+        q[i].key[0] = NAN;
+    m->grain = q;
     m->cap_grains = cap;
     return GF_OK;
 }
 
-/* Appends e to component a's entries; GF_ERR_NOMEM (no message: it may run on a worker thread) when full. */
-static gf_status push(gf_ibm_map *m, int a, const gf_ibm_entry *e)
+/* Appends e to component a of grain slot s; GF_ERR_NOMEM (no message: it runs on a worker thread) when full. */
+static gf_status push(gf_ibm_grain *s, int a, const gf_ibm_entry *e)
 {
-    if (m->n_e[a] == m->cap_e[a]) {
-        size_t cap = m->cap_e[a] ? 2 * m->cap_e[a] : 4096;
-        gf_ibm_entry *q = realloc(m->e[a], cap * sizeof *q);
+    if (s->n_e[a] == s->cap_e[a]) {
+        size_t cap = s->cap_e[a] ? 2 * s->cap_e[a] : 1024;
+        gf_ibm_entry *q = realloc(s->e[a], cap * sizeof *q);
         if (!q)
             return GF_ERR_NOMEM;
-        m->e[a] = q;
-        m->cap_e[a] = cap;
+        s->e[a] = q;
+        s->cap_e[a] = cap;
     }
-    m->e[a][m->n_e[a]++] = *e;
+    s->e[a][s->n_e[a]++] = *e;
     return GF_OK;
 }
 
@@ -72,47 +75,72 @@ static int face_index(const gf_grid *g, int a, int d, int m)
     return (m >= 0 && m < g->n[d]) ? m : -1;
 }
 
-/* The faces of component a around one grain. */
-static gf_status map_grain(gf_ibm_map *m, const gf_grid *g, int a, const double xc[3], double R)
+/* Offset along axis d of face m of component a from the centre xc_d. */
+static double face_offset(const gf_grid *g, int a, int d, int m, double xc_d)
 {
-    double h = g->h_m[0], reach = R + GF_IBM_REACH_CELLS * h;
+    return g->lo_m[d] + (m + (d == a ? 0.0 : 0.5)) * g->h_m[d] - xc_d;
+}
+
+/* The offset of entry e of component a from the centre xc (minimum image: e holds the unwrapped indices). */
+static void entry_offset(const gf_grid *g, int a, const gf_ibm_entry *e, const double xc[3], double r_m[3])
+{
+    for (int d = 0; d < 3; ++d)
+        r_m[d] = face_offset(g, a, d, e->q[d], xc[d]);
+}
+
+/* Appends face u (unwrapped indices; q: wrapped) at offset r_m (squared length r2) to component a of grain
+ * slot s when it lies within the profile's shell. */
+static gf_status map_face(gf_ibm_grain *s, const gf_grid *g, int a, const int u[3], const int q[3],
+                          const double r_m[3], double r2, double R)
+{
+    double h = g->h_m[0];
+    double r = sqrt(r2);
+    double n[3] = {1.0, 0.0, 0.0};
+    if (r > 0.0)
+        for (int d = 0; d < 3; ++d)
+            n[d] = r_m[d] / r;
+    double lambda = fabs(n[0]) + fabs(n[1]) + fabs(n[2]);
+    double width = lambda * (0.065 * (1.0 - lambda * lambda) + 0.39) * M_SQRT2 * h;
+    if (r - R > GF_IBM_SHELL_WIDTHS * width)
+        return GF_OK;
+    gf_ibm_entry e = {.alpha = gf_ibm_alpha(r - R, n, h), .face = (uint32_t)gf_grid_face(g, a, q[0], q[1], q[2]),
+                      .q = {(int16_t)u[0], (int16_t)u[1], (int16_t)u[2]}};
+    return push(s, a, &e);
+}
+
+/* The faces of component a around one grain, into slot s. The shell ends at most 7 x 0.4634 sqrt(2) = 4.587
+ * cells beyond R (lambda phi peaks at 0.4634), inside the reach of GF_IBM_REACH_CELLS: a face farther than the
+ * reach (a whole row of them, or one face) is dropped before its normal and width are computed. */
+static gf_status map_grain(gf_ibm_grain *s, const gf_grid *g, int a, const double xc[3], double R)
+{
+    double h = g->h_m[0], reach = R + GF_IBM_REACH_CELLS * h, reach2 = reach * reach;
     int m0[3], m1[3];
     for (int d = 0; d < 3; ++d) {
         double off = d == a ? 0.0 : 0.5;
         m0[d] = (int)ceil((xc[d] - reach - g->lo_m[d]) / g->h_m[d] - off);
         m1[d] = (int)floor((xc[d] + reach - g->lo_m[d]) / g->h_m[d] - off);
     }
+    s->n_e[a] = 0;
     for (int k = m0[2]; k <= m1[2]; ++k) {
         int kk = face_index(g, a, 2, k);
         if (kk < 0)
             continue;
+        double rz = face_offset(g, a, 2, k, xc[2]);
         for (int j = m0[1]; j <= m1[1]; ++j) {
             int jj = face_index(g, a, 1, j);
-            if (jj < 0)
+            double ry = face_offset(g, a, 1, j, xc[1]);
+            if (jj < 0 || ry * ry + rz * rz > reach2)
                 continue;
             for (int i = m0[0]; i <= m1[0]; ++i) {
                 int ii = face_index(g, a, 0, i);
                 if (ii < 0)
                     continue;
-                int q[3] = {i, j, k};
-                gf_ibm_entry e;
-                double r2 = 0.0;
-                for (int d = 0; d < 3; ++d) {
-                    e.r_m[d] = g->lo_m[d] + (q[d] + (d == a ? 0.0 : 0.5)) * g->h_m[d] - xc[d];
-                    r2 += e.r_m[d] * e.r_m[d];
-                }
-                double r = sqrt(r2);
-                double n[3] = {1.0, 0.0, 0.0};
-                if (r > 0.0)
-                    for (int d = 0; d < 3; ++d)
-                        n[d] = e.r_m[d] / r;
-                double lambda = fabs(n[0]) + fabs(n[1]) + fabs(n[2]);
-                double width = lambda * (0.065 * (1.0 - lambda * lambda) + 0.39) * M_SQRT2 * h;
-                if (r - R > GF_IBM_SHELL_WIDTHS * width)
+                const double r_m[3] = {face_offset(g, a, 0, i, xc[0]), ry, rz};
+                double r2 = r_m[0] * r_m[0] + r_m[1] * r_m[1] + r_m[2] * r_m[2];
+                if (r2 > reach2)
                     continue;
-                e.alpha = gf_ibm_alpha(r - R, n, h);
-                e.face = gf_grid_face(g, a, ii, jj, kk);
-                gf_status st = push(m, a, &e);
+                const int u[3] = {i, j, k}, q[3] = {ii, jj, kk};
+                gf_status st = map_face(s, g, a, u, q, r_m, r2, R);
                 if (st != GF_OK)
                     return st;
             }
@@ -121,26 +149,58 @@ static gf_status map_grain(gf_ibm_map *m, const gf_grid *g, int a, const double 
     return GF_OK;
 }
 
+/* 1 when grid g is the one the entries were built on. */
+static int same_grid(const gf_grid *g, const gf_grid *built_on)
+{
+    for (int d = 0; d < 3; ++d)
+        if (g->n[d] != built_on->n[d] || g->h_m[d] != built_on->h_m[d] || g->lo_m[d] != built_on->lo_m[d] ||
+            g->periodic[d] != built_on->periodic[d])
+            return 0;
+    return 1;
+}
+
+/* Grain slot s for centre xc and profile radius R: rebuilt unless it holds exactly these (1 when rebuilt). */
+static int map_slot(gf_ibm_grain *s, const gf_grid *g, const double xc[3], double R, gf_status *st)
+{
+    if (s->key[0] == xc[0] && s->key[1] == xc[1] && s->key[2] == xc[2] && s->key[3] == R)
+        return 0;
+    s->key[0] = NAN;
+    for (int a = 0; a < 3 && *st == GF_OK; ++a)
+        *st = map_grain(s, g, a, xc, R);
+    if (*st == GF_OK)
+        memcpy(s->key, (const double[4]){xc[0], xc[1], xc[2], R}, sizeof s->key);
+    return 1;
+}
+
 gf_status gf_ibm_build(gf_ctx *ctx, gf_ibm_map *m, const gf_grid *g, const gf_particles *p)
 {
-    size_t n = p->n_local;
-    GF_TRY(reserve_grains(ctx, m, n));
-    m->n_grains = n;
-    gf_status st[3] = {GF_OK, GF_OK, GF_OK};
-    const int nt = component_threads(m);
-#pragma omp parallel for num_threads(nt) if (nt > 1) schedule(static, 1)
-    for (int a = 0; a < 3; ++a) {
-        m->n_e[a] = 0;
-        for (size_t i = 0; i < n && st[a] == GF_OK; ++i) {
-            m->start[a][i] = m->n_e[a];
-            const double xc[3] = {p->x_m[i], p->y_m[i], p->z_m[i]};
-            st[a] = map_grain(m, g, a, xc, p->radius_m[i] - m->retraction_cells * g->h_m[0]);
-        }
-        m->start[a][n] = m->n_e[a];
-    }
+    const long n = (long)p->n_local;
     for (int a = 0; a < 3; ++a)
-        if (st[a] != GF_OK)
-            return GF_FAIL(ctx, st[a], "ibm: out of memory for the face entries of component %d (%zu grains)", a, n);
+        if (g->n[a] > GF_IBM_MAX_CELLS || g->n_faces[a] > UINT32_MAX)
+            return GF_FAIL(ctx, GF_ERR_CONFIG, "ibm: %d cells along axis %d (%zu faces): the maps hold at most %d "
+                           "cells per axis and 2^32 faces", g->n[a], a, g->n_faces[a], GF_IBM_MAX_CELLS);
+    GF_TRY(reserve_grains(ctx, m, (size_t)n));
+    if (!same_grid(g, &m->built_on))
+        for (size_t i = 0; i < m->cap_grains; ++i)
+            m->grain[i].key[0] = NAN;
+    m->built_on = *g;
+    m->n_grains = (size_t)n;
+    const int nt = face_threads(m);
+    gf_status st = GF_OK;
+    size_t n_rebuilt = 0;
+#pragma omp parallel for num_threads(nt) if (nt > 1 && n > 1) schedule(dynamic, 1) reduction(+ : n_rebuilt)
+    for (long i = 0; i < n; ++i) {
+        gf_status sti = GF_OK;
+        const double xc[3] = {p->x_m[i], p->y_m[i], p->z_m[i]};
+        n_rebuilt += (size_t)map_slot(&m->grain[i], g, xc, p->radius_m[i] - m->retraction_cells * g->h_m[0], &sti);
+        if (sti != GF_OK) {
+#pragma omp atomic write
+            st = sti;
+        }
+    }
+    m->n_rebuilt = n_rebuilt;
+    if (st != GF_OK)
+        return GF_FAIL(ctx, st, "ibm: out of memory for the face entries of %ld grains", n);
     return GF_OK;
 }
 
@@ -159,12 +219,16 @@ static void scatter_component(const gf_ibm_map *m, const gf_grid *g, const gf_pa
 {
     memset(alpha_sum, 0, g->n_faces[a] * sizeof(double));
     memset(aU, 0, g->n_faces[a] * sizeof(double));
-    for (size_t i = 0; i < m->n_grains; ++i)
-        for (size_t q = m->start[a][i]; q < m->start[a][i + 1]; ++q) {
-            const gf_ibm_entry *e = &m->e[a][q];
+    for (size_t i = 0; i < m->n_grains; ++i) {
+        const gf_ibm_grain *s = &m->grain[i];
+        for (size_t q = 0; q < s->n_e[a]; ++q) {
+            const gf_ibm_entry *e = &s->e[a][q];
+            double r_m[3];
+            entry_offset(g, a, e, s->key, r_m);
             alpha_sum[e->face] += e->alpha;
-            aU[e->face] += e->alpha * rigid_velocity(p, i, a, e->r_m);
+            aU[e->face] += e->alpha * rigid_velocity(p, i, a, r_m);
         }
+    }
 }
 
 /* f = alpha (U - u~)/dt, alpha = min(1, sum_i alpha_i), face by face on nt threads. */
@@ -191,12 +255,15 @@ static void grain_integrals(const gf_ibm_map *m, const gf_grid *g, const gf_part
     double F[3] = {0, 0, 0}, T[3] = {0, 0, 0};
     for (int a = 0; a < 3; ++a) {
         int b = (a + 1) % 3, c = (a + 2) % 3;
-        for (size_t q = m->start[a][i]; q < m->start[a][i + 1]; ++q) {
-            const gf_ibm_entry *e = &m->e[a][q];
-            double fa = e->alpha * (rigid_velocity(p, i, a, e->r_m) - u_pred[a][e->face]);
+        const gf_ibm_grain *s = &m->grain[i];
+        for (size_t q = 0; q < s->n_e[a]; ++q) {
+            const gf_ibm_entry *e = &s->e[a][q];
+            double r_m[3];
+            entry_offset(g, a, e, s->key, r_m);
+            double fa = e->alpha * (rigid_velocity(p, i, a, r_m) - u_pred[a][e->face]);
             F[a] += fa;
-            T[b] += e->r_m[c] * fa; /* r x (f_a e_a) = f_a (r_c e_b - r_b e_c), (a, b, c) cyclic */
-            T[c] -= e->r_m[b] * fa;
+            T[b] += r_m[c] * fa; /* r x (f_a e_a) = f_a (r_c e_b - r_b e_c), (a, b, c) cyclic */
+            T[c] -= r_m[b] * fa;
         }
     }
     for (int d = 0; d < 3; ++d) {

@@ -45,16 +45,24 @@
  * c = retraction_cells (fluid.ibm_retraction_dx); the force formula keeps
  * the grain's true mass and radius.
  *
- * Threads. The three components' maps are built, and their forcing summed, on
- * up to three threads, one component each: every face array is summed in
- * grain order whatever the thread count. The per-face forcing and each
- * grain's integrals (its own entries, in map order) are split freely. So the
- * force, the torque and the forcing field are bitwise the same on 1 or N threads.
+ * Threads. The maps are built grain by grain, a grain's three components on
+ * one thread, the grains spread over all threads (each grain's entries live
+ * in its own buffers, so no order depends on the split). The forcing sums
+ * every face array in grain order, one component per thread (at most three);
+ * the per-face forcing and each grain's integrals (its own entries, in map
+ * order) are split freely. So the force, the torque and the forcing field are
+ * bitwise the same on 1 or N threads.
+ *
+ * Reuse. A grain's entries depend only on its centre, its profile radius and
+ * the grid: a grain whose centre and radius are bitwise those of the last
+ * build (glued grains, grains at rest) keeps its entries, the same bytes a
+ * rebuild would give.
  */
 #ifndef GF_IBM_H
 #define GF_IBM_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "core/gf_status.h"
 #include "fluid/gf_grid.h"
@@ -65,19 +73,31 @@
 /* Reach of a grain's map beyond its radius, in cells: 7 x 0.46 x sqrt(2) = 4.6. */
 #define GF_IBM_REACH_CELLS 4.6
 
+/* Maps hold faces of grids up to this many cells per axis (the unwrapped indices are 16-bit). */
+#define GF_IBM_MAX_CELLS 30000
+
+/* 24 bytes: the forcing streams every entry twice a step. The face's offset from the grain's centre (minimum
+ * image) is recomputed from the unwrapped indices q, the same expression that selected the face. */
 typedef struct gf_ibm_entry {
-    size_t face;
     double alpha;
-    double r_m[3];      /* face position minus grain centre (minimum image) */
+    uint32_t face;      /* index in the component's face array */
+    int16_t q[3];       /* face indices before the periodic wrap */
 } gf_ibm_entry;
+
+/* One grain's entries, per velocity component, in face order (k, then j, then i). */
+typedef struct gf_ibm_grain {
+    double key[4];      /* centre and profile radius the entries were built for (NaN: not built) */
+    gf_ibm_entry *e[3];
+    size_t n_e[3], cap_e[3];
+} gf_ibm_grain;
 
 typedef struct gf_ibm_map {
     int n_threads;      /* OpenMP threads of the build and the forcing (0 or 1: one); the values do not depend on it */
     double retraction_cells; /* the profile is centred on R - retraction_cells dx (0: on R, Izard's profile) */
     size_t n_grains, cap_grains;
-    size_t *start[3];   /* grain i's entries of component a: e[a][start[a][i] .. start[a][i+1]) */
-    gf_ibm_entry *e[3];
-    size_t n_e[3], cap_e[3];
+    gf_ibm_grain *grain;    /* grain i's entries (slots past n_grains keep their buffers for reuse) */
+    gf_grid built_on;       /* the grid of the entries (a different grid rebuilds every grain) */
+    size_t n_rebuilt;       /* grains the last gf_ibm_build recomputed (the others had not moved) */
 } gf_ibm_map;
 
 /* Solid fraction at signed distance s_m = |x - x_i| - R_i, normal n (unit), grid step dx_m. */
