@@ -31,10 +31,10 @@
  * velocity F_i = -m_i g.
  *
  * Maps. gf_ibm_build lists, per grain and per velocity component, the faces
- * where alpha_i exceeds GF_IBM_ALPHA_MIN with alpha_i and r_i (minimum image
- * on periodic axes). Face indices are those of the grid the map is built on:
+ * within GF_IBM_SHELL_WIDTHS profile widths outside R_i (alpha_i above ~1e-6),
+ * with alpha_i and r_i (minimum image on periodic axes). Face indices are those of the grid the map is built on:
  * a later domain split builds the same map on each rank's grid (its cells
- * plus a halo as wide as GF_IBM_REACH) from the grains that overlap it, and
+ * plus a halo of GF_IBM_REACH_CELLS) from the grains that overlap it, and
  * sums the per-grain force over ranks; nothing here assumes the whole domain.
  *
  * Retraction (beyond Izard's method). A diffuse boundary makes the grain
