@@ -24,8 +24,9 @@
  *   bed_packing_fraction  phi of the mobile grains between y = D/2 and
  *                     h_bed - D/2 (thesis (4.7): the glued layer and the free
  *                     surface excluded);
- *   fluid_flow_rate   0 in dry runs; NaN when immersed (the fluid flux is not
- *                     exposed to scenes by gf_sim.h yet).
+ *   fluid_flow_rate   Q_f = (1/L) int eps u dV, the fluid's flux through a cross
+ *                     section, as the run's coupling tier measures it (the
+ *                     fluid outside the grains); 0 in dry runs.
  */
 #include <math.h>
 #include <string.h>
@@ -106,6 +107,13 @@ static gf_status avalanche_start(gf_sim *sim)
     return gf_sim_set_gravity(sim, g);
 }
 
+/* Q_f of the coupling tier; NaN before the coupling exists (the initial packing's measure). */
+static double fluid_flow_rate(gf_sim *sim)
+{
+    struct gf_coupling *c = gf_sim_coupling(sim);
+    return c ? gf_coupling_fluid_flow_rate(c) : NAN;
+}
+
 static gf_status avalanche_diagnose(gf_sim *sim, double *v)
 {
     const gf_run_spec *s = gf_sim_spec(sim);
@@ -123,7 +131,7 @@ static gf_status avalanche_diagnose(gf_sim *sim, double *v)
     if (h > 1.5 * D)
         GF_TRY(gf_measure_profile_y(gf_sim_ctx(sim), p, &d, 0.5 * D, h - D, 1, &phi_bed, NULL));
     v[0] = gf_measure_grain_flow_rate(p, &d);
-    v[1] = is_immersed(s) ? NAN : 0.0;
+    v[1] = is_immersed(s) ? fluid_flow_rate(sim) : 0.0;
     v[2] = phi_bed;
     v[3] = h;
     return GF_OK;
