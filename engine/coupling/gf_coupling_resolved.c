@@ -61,6 +61,7 @@
 #include "coupling/gf_coupling_restart.h"
 #include "coupling/gf_coupling_tier.h"
 #include "coupling/gf_ibm.h"
+#include "coupling/gf_weight_balance.h"
 #include "fluid/gf_fluid.h"
 #include "fluid/gf_fluid_ns2.h"
 
@@ -340,23 +341,13 @@ static void output_fields(gf_resolved *c)
     memcpy(c->fields[RF_P], f->p_Pa, g->n_cells * sizeof(double));
 }
 
-/* G/rho on the periodic axes (m/s^2), 0 with glued grains or no excess weight; see the header. */
+/* G/rho (m/s^2): the weight balance of gf_weight_balance.h as a body acceleration of the fluid. */
 static void mean_pressure_gradient(const gf_resolved *c, const gf_particles *p, double b_m_s2[3])
 {
-    const gf_grid *g = &c->fluid->grid;
-    double rho = c->fluid->rho_kg_m3, excess = 0.0, vbox = 1.0;
-    int glued = 0;
-    for (size_t i = 0; i < p->n_local; ++i) {
-        double R = p->radius_m[i];
-        excess += p->mass_kg[i] - rho * (4.0 / 3.0 * M_PI * R * R * R);
-        glued |= (p->flags[i] & GF_P_GLUED) != 0;
-    }
+    double rho = c->fluid->rho_kg_m3;
+    gf_weight_balance_gradient(&c->fluid->grid, p, rho, c->setup.gravity_m_s2, b_m_s2);
     for (int d = 0; d < 3; ++d)
-        vbox *= g->h_m[d] * g->n[d];
-    for (int d = 0; d < 3; ++d) {
-        double G = g->periodic[d] && !glued ? -excess / vbox * c->setup.gravity_m_s2[d] : 0.0;
-        b_m_s2[d] = G / rho;
-    }
+        b_m_s2[d] /= rho;
 }
 
 static gf_status resolved_fluid_step(gf_coupling *cc, const gf_particles *p, double dt_s)

@@ -100,6 +100,7 @@
 #include "core/gf_timer.h"
 #include "coupling/gf_average.h"
 #include "coupling/gf_coupling.h"
+#include "coupling/gf_weight_balance.h"
 #include "coupling/gf_coupling_diag.h"
 #include "coupling/gf_coupling_tier.h"
 #include "coupling/gf_coupling_unresolved.h"
@@ -578,29 +579,11 @@ static void build_fluid_fraction(gf_unresolved *c, const gf_particles *p)
     c->stats.eps_clipped_cells = clipped;
 }
 
-/* Weight balance or imposed mean gradient G (Pa/m) for this step. */
+/* Weight balance (gf_weight_balance.h) or imposed mean gradient G (Pa/m) for this step. */
 static void mean_pressure_gradient(gf_unresolved *c, const gf_particles *p)
 {
-    if (c->user_gradp)
-        return;
-    const gf_grid *g = &c->fluid->grid;
-    for (int d = 0; d < 3; ++d)
-        c->mean_gradp[d] = 0.0;
-    if (has_glued(p))
-        return;
-    double vs = 0.0, ms = 0.0, vbox = 1.0;
-    for (int d = 0; d < 3; ++d)
-        vbox *= g->h_m[d] * g->n[d];
-    for (size_t i = 0; i < p->n_local; ++i) {
-        vs += grain_volume(p, i);
-        ms += p->mass_kg[i];
-    }
-    if (vs <= 0.0)
-        return;
-    double excess = ms / vbox - c->rho_f * vs / vbox;  /* phi_mean (rho_p - rho_f) */
-    for (int d = 0; d < 3; ++d)
-        if (g->periodic[d])
-            c->mean_gradp[d] = -excess * c->setup.gravity_m_s2[d];
+    if (!c->user_gradp)
+        gf_weight_balance_gradient(&c->fluid->grid, p, c->rho_f, c->setup.gravity_m_s2, c->mean_gradp);
 }
 
 /* Drag coefficient of grain i with the self-induced-velocity correction; slip from the measured u_f. */
