@@ -59,6 +59,8 @@ typedef struct gf_fluid_spec {
     double d_over_dx;         /* resolved tier: grid cells per grain diameter D/dx (8-20); 0: 16 */
     int lub_overlap_off;      /* 1: no lubrication while surfaces overlap (contact law alone);
                                  0: gap clamped at 0 (constant damping 6 pi eta R_eff^2 / eta_e) */
+    char time_scheme[GF_NAME_LEN]; /* resolved tier: "ab2" or "rk3" (fluid/gf_fluid_ns2.h) */
+    char advection[GF_NAME_LEN];   /* resolved tier: "advective" or "divergence" form (fluid/gf_fluid_ns2.h) */
     double ibm_retraction_dx; /* resolved tier: the solid fraction's profile centred on R - this x dx (Breugem,
                                  J. Comput. Phys. 2012); 0: on R (Izard 2014) */
 } gf_fluid_spec;

@@ -7,9 +7,12 @@
  *
  * One fluid step of dt with the grains frozen (Izard 2014 §2.3.1):
  *   1. grain-to-face maps and solid fractions alpha_i (coupling/gf_ibm.h);
- *   2. AB2 rates and the predictor u~ (fluid/gf_fluid_ns2.h);
+ *   then for each substep of the time scheme (fluid.time_scheme: ab2, one; rk3, three;
+ *   fluid/gf_fluid_ns2.h, with fluid.advection's form, divergence by default):
+ *   2. rates and the predictor u~;
  *   3. forcing f = alpha (U - u~)/dt, and each grain's force and torque from
- *      the forcing integral, F_i = -(rho rho_p/(rho_p - rho)) int alpha_i (U_i - u~)/dt;
+ *      the forcing integral, F_i = -(rho rho_p/(rho_p - rho)) int alpha_i (U_i - u~)/dt,
+ *      summed over the substeps;
  *   4. Crank-Nicolson viscous step with f, projection (FFT Poisson);
  * then the DEM runs its substeps with F_i and T_i held (gf_coupling_add_forces),
  * contacts and lubrication recomputed at every substep. The fluid carries the
@@ -22,8 +25,8 @@
  *     10-40, §3.1.3.1, Table 3.2);
  *   - rho_p/rho >= 1.7: the force formula is singular at rho_p = rho and the
  *     thesis' lowest ratio is 1.7 (§3.1.3.1);
- *   - advective: sum_d |u_d| dt/h <= 1 (the AB2/central step diverges beyond;
- *     gf_coupling_dt_max_s keeps spec.fluid.cfl);
+ *   - advective: sum_d |u_d| dt/h <= 1 (AB2 on central advection diverges
+ *     beyond; gf_coupling_dt_max_s keeps spec.fluid.cfl);
  *   - viscous: nu dt/dx^2 <= 1, the predictor's explicit viscous term (the
  *     one the forcing sees) spreads at most a cell per step; the thesis'
  *     settling run sits at 0.98 (dt sqrt(g/D) = 0.04, D/dx = 20, Ar = 800).
@@ -90,9 +93,12 @@ typedef struct gf_resolved {
     double *A[3], *A_old[3], *r[3], *u_pred[3], *force[3], *alpha_sum[3], *aU[3];
     double *fields[RF_N];
     int first_step;
+    gf_ns2_scheme scheme;  /* spec.fluid.time_scheme */
+    gf_ns2_advection advection;
     /* what the last fluid step left for the substeps, per grain */
     int64_t *held_id;
     double *held_F, *held_T;
+    double *sub_F, *sub_T;   /* a later substep's force and torque, before they are added to held_F, held_T */
     size_t n_held, cap_held;
     uint64_t held_epoch;
     int held_epoch_known;
@@ -110,6 +116,18 @@ static double d_over_dx(const gf_run_spec *spec)
 }
 
 /* --- checks -------------------------------------------------------------------------------------- */
+
+/* The time scheme and the advection form named in the spec (fluid/gf_fluid_ns2.h). */
+static gf_status numerics(gf_ctx *ctx, const gf_fluid_spec *fs, gf_ns2_scheme *scheme, gf_ns2_advection *form)
+{
+    if (gf_fluid_ns2_scheme_from_name(fs->time_scheme, scheme) != 0)
+        return GF_FAIL(ctx, GF_ERR_CONFIG, "fluid.time_scheme = \"%s\": the resolved tier runs \"ab2\" or \"rk3\"",
+                       fs->time_scheme);
+    if (gf_fluid_ns2_advection_from_name(fs->advection, form) != 0)
+        return GF_FAIL(ctx, GF_ERR_CONFIG, "fluid.advection = \"%s\": the resolved tier has the \"advective\" and "
+                       "\"divergence\" forms", fs->advection);
+    return GF_OK;
+}
 
 static gf_status resolved_check(gf_ctx *ctx, const gf_run_spec *spec)
 {
@@ -131,6 +149,9 @@ static gf_status resolved_check(gf_ctx *ctx, const gf_run_spec *spec)
                        "uses 0.3)", fs->ibm_retraction_dx);
     if (!(fs->cfl > 0.0 && fs->cfl <= 1.0))
         return GF_FAIL(ctx, GF_ERR_CONFIG, "fluid.cfl = %g must be in (0, 1]", fs->cfl);
+    gf_ns2_scheme scheme;
+    gf_ns2_advection form;
+    GF_TRY(numerics(ctx, fs, &scheme, &form));
     /* the fluid step is a whole number (>= 1) of DEM steps: a DEM step beyond the fluid's limits would
      * force a fluid step that breaks them */
     double D = spec->grains.diameter_m, h = D / n, nu = fs->viscosity_Pa_s / fs->density_kg_m3;
@@ -201,7 +222,7 @@ static void resolved_destroy(gf_coupling *cc)
     }
     for (int v = 0; v < RF_N; ++v)
         free(c->fields[v]);
-    free(c->held_id), free(c->held_F), free(c->held_T);
+    free(c->held_id), free(c->held_F), free(c->held_T), free(c->sub_F), free(c->sub_T);
     free(c);
 }
 
@@ -210,6 +231,9 @@ static gf_status resolved_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_
 {
     *out = NULL;
     gf_fluid_params fp;
+    gf_ns2_scheme scheme;
+    gf_ns2_advection form;
+    GF_TRY(numerics(ctx, &spec->fluid, &scheme, &form));
     GF_TRY(grid_params(ctx, spec, setup, &fp));
     gf_resolved *c = calloc(1, sizeof *c);
     if (!c)
@@ -219,6 +243,7 @@ static gf_status resolved_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_
     c->setup = *setup;
     c->first_step = 1;
     c->n_threads = 1;
+    c->scheme = scheme, c->advection = form;
     c->map.retraction_cells = spec->fluid.ibm_retraction_dx;
     gf_status st = gf_fluid_create(ctx, &fp, &c->fluid);
     if (st != GF_OK) {
@@ -324,7 +349,13 @@ static gf_status reserve_held(gf_resolved *c, size_t n)
     double *T = realloc(c->held_T, 3 * cap * sizeof *T);
     if (T)
         c->held_T = T;
-    if (!id || !F || !T)
+    double *sF = realloc(c->sub_F, 3 * cap * sizeof *sF);
+    if (sF)
+        c->sub_F = sF;
+    double *sT = realloc(c->sub_T, 3 * cap * sizeof *sT);
+    if (sT)
+        c->sub_T = sT;
+    if (!id || !F || !T || !sF || !sT)
         return GF_FAIL(c->ctx, GF_ERR_NOMEM, "resolved tier: out of memory for %zu grains", n);
     c->cap_held = cap;
     return GF_OK;
@@ -350,6 +381,36 @@ static void mean_pressure_gradient(const gf_resolved *c, const gf_particles *p, 
         b_m_s2[d] /= rho;
 }
 
+/* One substep of the scheme (fluid/gf_fluid_ns2.h) with the grains frozen: rates, predictor, forcing (this
+ * substep's force and torque on each grain into F, T), Crank-Nicolson, projection over 2 alpha dt; A^{k-1}
+ * then becomes A^{k-2}. use_old: A_old holds A^{k-2} (else the Euler start, A_old = A). */
+static gf_status fluid_substep(gf_resolved *c, const gf_particles *p, const gf_ns2_substep *s, int use_old,
+                               const double b[3], double dt_s, double *F, double *T)
+{
+    gf_fluid *f = c->fluid;
+    gf_fluid_ns2_advection(f, c->advection, c->A);
+    const double *const A[3] = {c->A[0], c->A[1], c->A[2]};
+    const double *const A_old[3] = {c->A_old[0], c->A_old[1], c->A_old[2]};
+    gf_fluid_ns2_rates(f, s, A, use_old ? A_old : A, c->r);
+    const double w = 2.0 * s->alpha, bw[3] = {w * b[0], w * b[1], w * b[2]};
+    gf_fluid_ns2_add_acceleration(f, bw, c->r);
+    const double *const r[3] = {c->r[0], c->r[1], c->r[2]};
+    gf_fluid_ns2_predict(f, r, dt_s, c->u_pred);
+    const double *const up[3] = {c->u_pred[0], c->u_pred[1], c->u_pred[2]};
+    gf_ibm_force(&c->map, &f->grid, p, up, dt_s, f->rho_kg_m3, c->force, c->alpha_sum, c->aU, F, T);
+    const double *const force[3] = {c->force[0], c->force[1], c->force[2]};
+    GF_TRY(gf_fluid_ns2_viscous(c->ctx, f, s, r, force, dt_s));
+    GF_TRY(gf_fluid_ns2_project(c->ctx, f, w * dt_s));
+    for (int a = 0; a < 3; ++a) { /* A^{k-1} becomes A^{k-2} */
+        double *t = c->A_old[a];
+        c->A_old[a] = c->A[a];
+        c->A[a] = t;
+    }
+    return GF_OK;
+}
+
+/* The step's substeps; the grains' held force and torque are the sum of the substeps' (each substep forces
+ * the fluid by dt f_k: the step's impulse on the fluid is dt sum_k int f_k). */
 static gf_status resolved_fluid_step(gf_coupling *cc, const gf_particles *p, double dt_s)
 {
     gf_resolved *c = R_(cc);
@@ -358,29 +419,21 @@ static gf_status resolved_fluid_step(gf_coupling *cc, const gf_particles *p, dou
     GF_TRY(check_step(c, p, dt_s));
     GF_TRY(gf_ibm_build(c->ctx, &c->map, &f->grid, p));
     GF_TRY(reserve_held(c, p->n_local));
-    gf_fluid_ns2_advection(f, c->A);
-    const double *const A[3] = {c->A[0], c->A[1], c->A[2]};
-    const double *const A_old[3] = {c->A_old[0], c->A_old[1], c->A_old[2]};
-    gf_fluid_ns2_rates(f, A, c->first_step ? A : A_old, c->r);
     double b[3];
     mean_pressure_gradient(c, p, b);
-    gf_fluid_ns2_add_acceleration(f, b, c->r);
-    const double *const r[3] = {c->r[0], c->r[1], c->r[2]};
-    gf_fluid_ns2_predict(f, r, dt_s, c->u_pred);
-    const double *const up[3] = {c->u_pred[0], c->u_pred[1], c->u_pred[2]};
-    gf_ibm_force(&c->map, &f->grid, p, up, dt_s, f->rho_kg_m3, c->force, c->alpha_sum, c->aU, c->held_F, c->held_T);
+    const gf_ns2_substep *sub;
+    int n_sub = gf_fluid_ns2_substeps(c->scheme, &sub);
+    for (int k = 0; k < n_sub; ++k) {
+        int use_old = k > 0 || (c->scheme == GF_NS2_AB2 && !c->first_step);
+        GF_TRY(fluid_substep(c, p, &sub[k], use_old, b, dt_s, k == 0 ? c->held_F : c->sub_F,
+                             k == 0 ? c->held_T : c->sub_T));
+        for (size_t q = 0; k > 0 && q < 3 * p->n_local; ++q)
+            c->held_F[q] += c->sub_F[q], c->held_T[q] += c->sub_T[q];
+    }
     for (size_t i = 0; i < p->n_local; ++i)
         c->held_id[i] = p->id[i];
     c->n_held = p->n_local;
     c->held_epoch = p->order_epoch, c->held_epoch_known = 1;
-    const double *const force[3] = {c->force[0], c->force[1], c->force[2]};
-    GF_TRY(gf_fluid_ns2_viscous(c->ctx, f, r, force, dt_s));
-    GF_TRY(gf_fluid_ns2_project(c->ctx, f, dt_s));
-    for (int a = 0; a < 3; ++a) { /* A^n becomes A^{n-1} */
-        double *t = c->A_old[a];
-        c->A_old[a] = c->A[a];
-        c->A[a] = t;
-    }
     c->first_step = 0;
     output_fields(c);
     if (gf_fluid_nonfinite(f))

@@ -4,6 +4,8 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "core/gf_rng.h"
+
 #include "fluid/gf_fluid.h"
 #include "fluid/gf_fluid_ns2.h"
 
@@ -70,13 +72,16 @@ static gf_status create_fluid(gf_ctx *ctx, const gf_fluid_exact_case *c, gf_flui
 static void initial_state(const gf_fluid_exact_case *c, gf_fluid *f)
 {
     const gf_grid *g = &f->grid;
+    gf_rng rng;
+    gf_rng_seed(&rng, 1); /* the noise: the same sequence, in face order, on every run */
     for (int a = 0; a < 3; ++a)
         for (int k = 0; k < g->nf[a][2]; ++k)
             for (int j = 0; j < g->nf[a][1]; ++j)
                 for (int i = 0; i < g->nf[a][0]; ++i) {
                     double x[3];
                     face_position(g, a, i, j, k, x);
-                    f->u[a][gf_grid_face(g, a, i, j, k)] = exact_u(c, a, x, 0.0);
+                    size_t q = gf_grid_face(g, a, i, j, k);
+                    f->u[a][q] = exact_u(c, a, x, 0.0) + (c->noise > 0.0 ? c->noise * gf_rng_range(&rng, -1.0, 1.0) : 0.0);
                 }
     for (int k = 0; k < g->n[2]; ++k)
         for (int j = 0; j < g->n[1]; ++j)
@@ -107,8 +112,8 @@ static void velocity_error(const gf_fluid_exact_case *c, const gf_fluid *f, doub
     r->err_max = mx / scale;
 }
 
-/* The resolved tier's step (gf_fluid_ns2.h) without forcing: AB2 rates, CN, projection. */
-static gf_status run_ns2(gf_ctx *ctx, gf_fluid *f, double dt, long steps)
+/* The resolved tier's step (gf_fluid_ns2.h) without forcing: c->scheme's substeps of rates, CN, projection. */
+static gf_status run_ns2(gf_ctx *ctx, const gf_fluid_exact_case *c, gf_fluid *f, double dt, long steps)
 {
     const gf_grid *g = &f->grid;
     double *A[3], *A_old[3], *r[3];
@@ -119,20 +124,35 @@ static gf_status run_ns2(gf_ctx *ctx, gf_fluid *f, double dt, long steps)
         ok &= (r[a] = calloc(g->n_faces[a], sizeof(double))) != NULL;
     }
     gf_status st = ok ? GF_OK : GF_FAIL(ctx, GF_ERR_NOMEM, "fluid exact case: out of memory");
-    for (long s = 0; s < steps && st == GF_OK; ++s) {
-        gf_fluid_ns2_advection(f, A);
-        gf_fluid_ns2_rates(f, (const double *const *)A, (const double *const *)(s == 0 ? A : A_old), r);
-        st = gf_fluid_ns2_viscous(ctx, f, (const double *const *)r, NULL, dt);
-        if (st == GF_OK)
-            st = gf_fluid_ns2_project(ctx, f, dt);
-        for (int a = 0; a < 3; ++a) {
-            double *t = A_old[a];
-            A_old[a] = A[a], A[a] = t;
+    const gf_ns2_substep *sub;
+    int n_sub = gf_fluid_ns2_substeps(c->scheme, &sub);
+    for (long s = 0; s < steps && st == GF_OK; ++s)
+        for (int k = 0; k < n_sub && st == GF_OK; ++k) {
+            int use_old = k > 0 || (c->scheme == GF_NS2_AB2 && s > 0);
+            gf_fluid_ns2_advection(f, c->advection, A);
+            gf_fluid_ns2_rates(f, &sub[k], (const double *const *)A, (const double *const *)(use_old ? A_old : A), r);
+            st = gf_fluid_ns2_viscous(ctx, f, &sub[k], (const double *const *)r, NULL, dt);
+            if (st == GF_OK)
+                st = gf_fluid_ns2_project(ctx, f, 2.0 * sub[k].alpha * dt);
+            for (int a = 0; a < 3; ++a) {
+                double *t = A_old[a];
+                A_old[a] = A[a], A[a] = t;
+            }
         }
-    }
     for (int a = 0; a < 3; ++a)
         free(A[a]), free(A_old[a]), free(r[a]);
     return st;
+}
+
+/* Kinetic energy per unit density, sum over the free faces of u^2/2 times the cell volume. */
+static double kinetic_energy(const gf_fluid *f)
+{
+    const gf_grid *g = &f->grid;
+    double e = 0.0;
+    for (int a = 0; a < 3; ++a)
+        GF_GRID_FOR_FREE_FACES(g, a, fi, i, j, k)
+        e += 0.5 * f->u[a][fi] * f->u[a][fi];
+    return e * g->h_m[0] * g->h_m[1] * g->h_m[2];
 }
 
 static gf_status run_case(gf_ctx *ctx, const gf_fluid_exact_case *c, int ns2, gf_fluid_exact_result *out)
@@ -143,13 +163,14 @@ static gf_status run_case(gf_ctx *ctx, const gf_fluid_exact_case *c, int ns2, gf
     gf_fluid *f = NULL;
     GF_TRY(create_fluid(ctx, c, &f));
     initial_state(c, f);
+    double ke0 = kinetic_energy(f);
     long steps = (long)ceil(c->t_end / c->dt - 1e-9);
     double dt = c->t_end / (double)steps;
     gf_status st = GF_OK;
     if (ns2 && c->problem == GF_EXACT_TAYLOR_GREEN)
-        st = run_ns2(ctx, f, dt, steps);
+        st = run_ns2(ctx, c, f, dt, steps);
     else if (ns2)
-        st = GF_FAIL(ctx, GF_ERR_ARG, "fluid exact case: the AB2/CN step runs Taylor-Green only");
+        st = GF_FAIL(ctx, GF_ERR_ARG, "fluid exact case: the resolved tier's step runs Taylor-Green only");
     for (long s = 0; s < steps && st == GF_OK && !ns2; ++s) {
         gf_fluid_advect(f, dt);                  /* work = dt (b - (u.grad)u) */
         st = gf_fluid_viscous(ctx, f, dt);       /* u** */
@@ -163,6 +184,7 @@ static gf_status run_case(gf_ctx *ctx, const gf_fluid_exact_case *c, int ns2, gf
         out->h = f->grid.h_m[1];
         out->cell_re = tg ? out->h / nu_of(c) : 0.0;
         out->steps = steps;
+        out->energy_ratio = ke0 > 0.0 ? kinetic_energy(f) / (ke0 * scale * scale) : 0.0;
     }
     gf_fluid_destroy(&f);
     return st;

@@ -36,6 +36,7 @@
 #define GF_FLUID_EXACT_H
 
 #include "core/gf_status.h"
+#include "fluid/gf_fluid_ns2.h"
 
 typedef enum gf_fluid_exact_problem { GF_EXACT_POISEUILLE = 0, GF_EXACT_TAYLOR_GREEN } gf_fluid_exact_problem;
 
@@ -45,6 +46,10 @@ typedef struct gf_fluid_exact_case {
     double dt;        /* fluid step (the problem's time unit); rounded down so that t_end is a whole number of steps */
     double t_end;     /* the problem's time unit */
     double re;        /* TAYLOR_GREEN: Reynolds number U/(nu k); ignored otherwise */
+    gf_ns2_scheme scheme; /* gf_fluid_exact_run_ns2: the resolved tier's time scheme (0: AB2) */
+    gf_ns2_advection advection; /* gf_fluid_exact_run_ns2: its advection form (0: advective) */
+    double noise;     /* TAYLOR_GREEN: a fixed pseudo-random velocity of this amplitude added at t = 0 (its
+                         divergence removed by the first projection), to excite every grid mode; 0: none */
 } gf_fluid_exact_case;
 
 typedef struct gf_fluid_exact_result {
@@ -52,12 +57,14 @@ typedef struct gf_fluid_exact_result {
     double h;                 /* cell edge (problem units) */
     double cell_re;           /* TAYLOR_GREEN: U h / nu; 0 otherwise */
     long steps;
+    double energy_ratio;      /* kinetic energy at t_end over the exact one (the discrete one at t = 0 times F^2
+                                 for TAYLOR_GREEN, times 1 for POISEUILLE: meaningful for TAYLOR_GREEN only) */
 } gf_fluid_exact_result;
 
 /* Runs the case. Errors: n < 2, dt or t_end <= 0, a failed fluid step. */
 gf_status gf_fluid_exact_run(gf_ctx *ctx, const gf_fluid_exact_case *c, gf_fluid_exact_result *out);
-/* The same with the resolved tier's AB2/Crank-Nicolson step (gf_fluid_ns2.h), no forcing; TAYLOR_GREEN only
- * (that step has no body force). */
+/* The same with the resolved tier's step (gf_fluid_ns2.h; c->scheme: AB2 or RK3 with Crank-Nicolson), no
+ * forcing; TAYLOR_GREEN only (that step has no body force). */
 gf_status gf_fluid_exact_run_ns2(gf_ctx *ctx, const gf_fluid_exact_case *c, gf_fluid_exact_result *out);
 
 /* Order between two grids: ln(e_coarse / e_fine) / ln(h_coarse / h_fine). */

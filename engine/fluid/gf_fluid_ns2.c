@@ -1,8 +1,41 @@
-/* Second-order (AB2/CN) Navier-Stokes step of the resolved tier; scheme and sources in gf_fluid_ns2.h. */
+/* Second-order Navier-Stokes substeps of the resolved tier (AB2/CN, RK3/CN); schemes and sources in
+ * gf_fluid_ns2.h. */
 #include "fluid/gf_fluid_ns2.h"
 
 #include <math.h>
 #include <string.h>
+
+static const gf_ns2_substep ab2_substeps[1] = {{1.5, -0.5, 0.5}};
+static const gf_ns2_substep rk3_substeps[3] = {
+    {8.0 / 15.0, 0.0, 4.0 / 15.0}, {5.0 / 12.0, -17.0 / 60.0, 1.0 / 15.0}, {3.0 / 4.0, -5.0 / 12.0, 1.0 / 6.0}};
+
+int gf_fluid_ns2_substeps(gf_ns2_scheme scheme, const gf_ns2_substep **out)
+{
+    *out = scheme == GF_NS2_RK3 ? rk3_substeps : ab2_substeps;
+    return scheme == GF_NS2_RK3 ? 3 : 1;
+}
+
+int gf_fluid_ns2_advection_from_name(const char *name, gf_ns2_advection *out)
+{
+    if (strcmp(name, "advective") == 0)
+        *out = GF_NS2_ADVECTIVE;
+    else if (strcmp(name, "divergence") == 0)
+        *out = GF_NS2_DIVERGENCE;
+    else
+        return -1;
+    return 0;
+}
+
+int gf_fluid_ns2_scheme_from_name(const char *name, gf_ns2_scheme *out)
+{
+    if (strcmp(name, "ab2") == 0)
+        *out = GF_NS2_AB2;
+    else if (strcmp(name, "rk3") == 0)
+        *out = GF_NS2_RK3;
+    else
+        return -1;
+    return 0;
+}
 
 /* The step's OpenMP threads: those its FFT plans were set for (gf_poisson_plan_set_threads), 1 by default.
  * Every loop below writes each face or cell from its own inputs alone, or takes a max: the values do not
@@ -54,17 +87,72 @@ static double advection_interior(const gf_grid *g, const double *const uu[3], in
     return adv;
 }
 
-void gf_fluid_ns2_advection(const gf_fluid *f, double *const A[3])
+/* Component d averaged along a to the edge of the a-face's control volume on its low (up 0) or high (up 1)
+ * side along d: the advecting velocity of the divergence form. Wall faces hold 0. */
+static double edge_velocity(const gf_grid *g, const double *ud, int a, int d, int i, int j, int k, int up)
+{
+    const int idx[3] = {i, j, k};
+    int c0 = gf_grid_wrap(g, a, idx[a] - 1), c1 = gf_grid_wrap(g, a, idx[a]);
+    c0 = c0 < 0 ? c1 : c0, c1 = c1 < 0 ? c0 : c1;
+    int q0[3] = {i, j, k}, q1[3] = {i, j, k};
+    q0[a] = c0, q1[a] = c1, q0[d] += up, q1[d] += up;
+    return 0.5 * (ud[gf_grid_face(g, d, q0[0], q0[1], q0[2])] + ud[gf_grid_face(g, d, q1[0], q1[1], q1[2])]);
+}
+
+/* Divergence form, sum_d d(u_d u_a)/dx_d with second-order interpolations (Harlow & Welch, Phys. Fluids 8,
+ * 1965; Morinishi et al., J. Comput. Phys. 143, 1998, "Div.-2"): conserves the kinetic energy of a
+ * divergence-free field up to the time scheme (the advective form does not, and pumps energy into the grid
+ * scale at high cell Reynolds numbers). */
+static double divergence_generic(const gf_grid *g, const double *const uu[3], int a, size_t fi, int i, int j, int k)
+{
+    const double *u = uu[a];
+    double adv = 0.0;
+    for (int d = 0; d < 3; ++d) {
+        if (g->n[d] == 1 && g->periodic[d])
+            continue;
+        double at = 0.5 * (u[fi] + gf_grid_face_neighbour(g, u, a, i, j, k, d, +1));
+        double ab = 0.5 * (u[fi] + gf_grid_face_neighbour(g, u, a, i, j, k, d, -1));
+        double vt = d == a ? at : edge_velocity(g, uu[d], a, d, i, j, k, 1);
+        double vb = d == a ? ab : edge_velocity(g, uu[d], a, d, i, j, k, 0);
+        adv += (vt * at - vb * ab) / g->h_m[d];
+    }
+    return adv;
+}
+
+static double divergence_interior(const gf_grid *g, const double *const uu[3], int a, size_t fi, int i, int j,
+                                  int k)
+{
+    const double *u = uu[a];
+    const size_t s[3] = {1, (size_t)g->nf[a][0], (size_t)g->nf[a][0] * (size_t)g->nf[a][1]};
+    double adv = 0.0;
+    for (int d = 0; d < 3; ++d) {
+        double at = 0.5 * (u[fi] + u[fi + s[d]]), ab = 0.5 * (u[fi] + u[fi - s[d]]), vt = at, vb = ab;
+        if (d != a) { /* component d at the high and low edges: two d-faces each (cells m-1, m along a) */
+            const size_t sd[3] = {1, (size_t)g->nf[d][0], (size_t)g->nf[d][0] * (size_t)g->nf[d][1]};
+            size_t q = gf_grid_face(g, d, i, j, k);
+            vb = 0.5 * (uu[d][q] + uu[d][q - sd[a]]);
+            vt = 0.5 * (uu[d][q + sd[d]] + uu[d][q - sd[a] + sd[d]]);
+        }
+        adv += (vt * at - vb * ab) / g->h_m[d];
+    }
+    return adv;
+}
+
+void gf_fluid_ns2_advection(const gf_fluid *f, gf_ns2_advection form, double *const A[3])
 {
     const gf_grid *g = &f->grid;
     const double *const uu[3] = {f->u[0], f->u[1], f->u[2]};
     const int nt = step_threads(f);
+    const int div = form == GF_NS2_DIVERGENCE;
     for (int a = 0; a < 3; ++a) {
         memset(A[a], 0, g->n_faces[a] * sizeof(double));
 #pragma omp parallel for num_threads(nt) if (nt > 1) schedule(static)
         GF_GRID_FOR_FREE_FACES(g, a, fi, i, j, k)
-        A[a][fi] = -(interior_face(g, a, i, j, k) ? advection_interior(g, uu, a, fi, i, j, k)
-                                                   : advection_generic(g, uu, a, fi, i, j, k));
+        {
+            int in = interior_face(g, a, i, j, k);
+            A[a][fi] = div ? -(in ? divergence_interior(g, uu, a, fi, i, j, k) : divergence_generic(g, uu, a, fi, i, j, k))
+                           : -(in ? advection_interior(g, uu, a, fi, i, j, k) : advection_generic(g, uu, a, fi, i, j, k));
+        }
         gf_grid_sync_periodic(g, a, A[a]);
     }
 }
@@ -88,19 +176,21 @@ static double pressure_gradient(const gf_grid *g, const double *p, int a, int i,
     return (p[gf_grid_cell(g, hi[0], hi[1], hi[2])] - p[gf_grid_cell(g, lo[0], lo[1], lo[2])]) / g->h_m[a];
 }
 
-void gf_fluid_ns2_rates(const gf_fluid *f, const double *const A[3], const double *const A_old[3], double *const r[3])
+void gf_fluid_ns2_rates(const gf_fluid *f, const gf_ns2_substep *s, const double *const A[3],
+                        const double *const A_old[3], double *const r[3])
 {
     const gf_grid *g = &f->grid;
-    double rho = f->rho_kg_m3, nu = f->mu_Pa_s / rho;
+    /* 2 alpha is 1 for AB2: w nu and w grad p are then nu and grad p, the same bits */
+    const double rho = f->rho_kg_m3, w = 2.0 * s->alpha, w_nu = w * (f->mu_Pa_s / rho), ga = s->gamma, ze = s->zeta;
     const int nt = step_threads(f);
     for (int a = 0; a < 3; ++a) {
         memset(r[a], 0, g->n_faces[a] * sizeof(double));
 #pragma omp parallel for num_threads(nt) if (nt > 1) schedule(static)
         GF_GRID_FOR_FREE_FACES(g, a, fi, i, j, k)
         {
-            double adv = 1.5 * A[a][fi] - 0.5 * A_old[a][fi];
-            r[a][fi] = adv + nu * laplacian(g, f->u[a], a, fi, i, j, k) -
-                       pressure_gradient(g, f->p_Pa, a, i, j, k) / rho;
+            double adv = ga * A[a][fi] + ze * A_old[a][fi];
+            r[a][fi] = adv + w_nu * laplacian(g, f->u[a], a, fi, i, j, k) -
+                       w * pressure_gradient(g, f->p_Pa, a, i, j, k) / rho;
         }
         gf_grid_sync_periodic(g, a, r[a]);
     }
@@ -133,8 +223,8 @@ void gf_fluid_ns2_predict(const gf_fluid *f, const double *const r[3], double dt
     }
 }
 
-gf_status gf_fluid_ns2_viscous(gf_ctx *ctx, gf_fluid *f, const double *const r[3], const double *const force[3],
-                               double dt_s)
+gf_status gf_fluid_ns2_viscous(gf_ctx *ctx, gf_fluid *f, const gf_ns2_substep *s, const double *const r[3],
+                               const double *const force[3], double dt_s)
 {
     const gf_grid *g = &f->grid;
     double nu = f->mu_Pa_s / f->rho_kg_m3;
@@ -147,7 +237,7 @@ gf_status gf_fluid_ns2_viscous(gf_ctx *ctx, gf_fluid *f, const double *const r[3
         for (long q = 0; q < n; ++q)
             w[q] = dt_s * (r[a][q] + (fa ? fa[q] : 0.0));
         /* wall faces stay 0: r and force are 0 there */
-        gf_helmholtz_solve(f->visc[a], 0.5 * dt_s * nu, w);
+        gf_helmholtz_solve(f->visc[a], s->alpha * dt_s * nu, w);
         int finite = 1;
 #pragma omp parallel for num_threads(nt) if (nt > 1) schedule(static) reduction(&& : finite)
         for (long q = 0; q < n; ++q) {

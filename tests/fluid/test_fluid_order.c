@@ -50,7 +50,7 @@ static double run_error(const order_case *oc, int n, double dt_factor, gf_fluid_
 {
     gf_ctx ctx = {0};
     double h = grid_h(oc, n);
-    gf_fluid_exact_case c = {oc->problem, n, dt_factor * oc->c_dt * h * h, oc->t_end, oc->re};
+    gf_fluid_exact_case c = {.problem = oc->problem, .n = n, .dt = dt_factor * oc->c_dt * h * h, .t_end = oc->t_end, .re = oc->re};
     GF_CHECK_OK(gf_fluid_exact_run(&ctx, &c, r), &ctx);
     return r->err_rms;
 }

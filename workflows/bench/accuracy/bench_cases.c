@@ -333,7 +333,7 @@ static gf_status measure_fluid(gf_ctx *ctx, gf_fluid_exact_problem pb, const ben
 {
     int tg = pb == GF_EXACT_TAYLOR_GREEN, n = (int)lround(32.0 / k->cell_over_D);
     double h = (tg ? 2.0 * M_PI : 1.0) / n;
-    gf_fluid_exact_case c = {pb, n, (tg ? 0.25 : 0.1) * h * h, tg ? 1.0 : 0.1, 10.0};
+    gf_fluid_exact_case c = {.problem = pb, .n = n, .dt = (tg ? 0.25 : 0.1) * h * h, .t_end = tg ? 1.0 : 0.1, .re = 10.0};
     gf_fluid_exact_result r;
     double t0 = bench_cpu_s();
     GF_TRY(gf_fluid_exact_run(ctx, &c, &r));
