@@ -27,6 +27,7 @@
  *     4 D box alone lowers it by ~20 %, docs/resolved.md);
  *   check=full: the early acceleration within 5 %, u_T and Re_T within 3 %.
  * retract=c: fluid.ibm_retraction_dx (the profile centred on R - c dx, Breugem 2012; 0: Izard's).
+ * scheme=ab2|rk3: fluid.time_scheme.
  * Prints the history and one summary line.
  */
 #include <math.h>
@@ -48,18 +49,21 @@ typedef struct args {
     int threads;                              /* OpenMP threads of the run (0: the library default) */
     double retract;                           /* fluid.ibm_retraction_dx */
     char check[16];
+    char scheme[16];                          /* fluid.time_scheme */
 } args;
 
 static void parse(int argc, char **argv, args *a)
 {
     *a = (args){.dx = 8, .box = 5, .height = 10, .end = 6, .cfl = 0.3};
     snprintf(a->check, sizeof a->check, "none");
+    snprintf(a->scheme, sizeof a->scheme, "ab2");
     const gf_test_arg keys[] = {
         {.key = "dx", .number = &a->dx}, {.key = "box", .number = &a->box}, {.key = "height", .number = &a->height},
         {.key = "end", .number = &a->end}, {.key = "cfl", .number = &a->cfl}, {.key = "retract", .number = &a->retract},
         {.key = "early_dx", .number = &a->early_dx}, {.key = "early_box", .number = &a->early_box},
         {.key = "early_height", .number = &a->early_height}, {.key = "threads", .integer = &a->threads},
-        {.key = "check", .text = a->check, .text_size = sizeof a->check}};
+        {.key = "check", .text = a->check, .text_size = sizeof a->check},
+        {.key = "scheme", .text = a->scheme, .text_size = sizeof a->scheme}};
     gf_test_parse_args(argc, argv, keys, sizeof keys / sizeof keys[0]);
 }
 
@@ -89,6 +93,7 @@ static gf_status run(const args *a, double cfl, double t_end_nd, double dt_sampl
     spec.fluid.d_over_dx = a->dx;
     spec.fluid.ibm_retraction_dx = a->retract;
     spec.fluid.cfl = cfl;
+    snprintf(spec.fluid.time_scheme, sizeof spec.fluid.time_scheme, "%s", a->scheme);
     spec.contact.t_contact_nd = 0.05; /* no contact happens; the DEM step only integrates the held force */
     spec.end_time_nd = t_end_nd;
     GF_TRY(gf_run_spec_set_param(&ctx, &spec, "bottom_no_slip", 0.0)); /* slip walls everywhere (§2.2.3) */
@@ -152,11 +157,11 @@ int main(int argc, char **argv)
     double Re_ref = gf_test_schiller_naumann_Re(AR), uT_ref = Re_ref * eta / (RHO * D) / sqrt(G * D);
     double Re = RHO * umax * sqrt(G * D) * D / eta;
     double F_end = late.n ? late.F[late.n - 1] : NAN; /* -> 1 at terminal velocity: F_h = -m g (Izard 2014 §2.2.2) */
-    printf("resolved settling: D/dx %g, box %g x %g D, cfl %g, retraction %g dx: "
+    printf("resolved settling: D/dx %g, box %g x %g D, %s, cfl %g, retraction %g dx: "
            "early a/g = %.4f at D/dx %g (ref 2/3, %+.1f %%), "
            "u_T/sqrt(gD) = %.4f at t = %.2f (ref %.4f, %+.1f %%), Re_T = %.2f (ref %.2f), F_h/(m g) at the end %.4f; "
            "wall %.1f s, cpu %.1f s (early %.1f s)\n",
-           a.dx, a.box, a.height, a.cfl, a.retract, a0, ea.dx, 100 * (a0 / (2.0 / 3.0) - 1), umax, t_umax, uT_ref,
+           a.dx, a.box, a.height, a.scheme, a.cfl, a.retract, a0, ea.dx, 100 * (a0 / (2.0 / 3.0) - 1), umax, t_umax, uT_ref,
            100 * (umax / uT_ref - 1), Re, Re_ref, F_end, late.wall_s + early.wall_s, late.cpu_s + early.cpu_s,
            early.cpu_s);
     if (!strcmp(a.check, "fast")) {
