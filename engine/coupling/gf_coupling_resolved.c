@@ -335,6 +335,15 @@ static gf_status check_step(const gf_resolved *c, const gf_particles *p, double 
 
 /* --- fluid step -------------------------------------------------------------------------------------- */
 
+/* *a grown to n doubles; 0 when out of memory (*a then keeps its old buffer). */
+static int grow(double **a, size_t n)
+{
+    double *q = realloc(*a, n * sizeof *q);
+    if (q)
+        *a = q;
+    return q != NULL;
+}
+
 static gf_status reserve_held(gf_resolved *c, size_t n)
 {
     if (n <= c->cap_held)
@@ -343,19 +352,12 @@ static gf_status reserve_held(gf_resolved *c, size_t n)
     int64_t *id = realloc(c->held_id, cap * sizeof *id);
     if (id)
         c->held_id = id;
-    double *F = realloc(c->held_F, 3 * cap * sizeof *F);
-    if (F)
-        c->held_F = F;
-    double *T = realloc(c->held_T, 3 * cap * sizeof *T);
-    if (T)
-        c->held_T = T;
-    double *sF = realloc(c->sub_F, 3 * cap * sizeof *sF);
-    if (sF)
-        c->sub_F = sF;
-    double *sT = realloc(c->sub_T, 3 * cap * sizeof *sT);
-    if (sT)
-        c->sub_T = sT;
-    if (!id || !F || !T || !sF || !sT)
+    int ok = id != NULL;
+    ok &= grow(&c->held_F, 3 * cap);
+    ok &= grow(&c->held_T, 3 * cap);
+    ok &= grow(&c->sub_F, 3 * cap);
+    ok &= grow(&c->sub_T, 3 * cap);
+    if (!ok)
         return GF_FAIL(c->ctx, GF_ERR_NOMEM, "resolved tier: out of memory for %zu grains", n);
     c->cap_held = cap;
     return GF_OK;

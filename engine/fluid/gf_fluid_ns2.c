@@ -15,26 +15,31 @@ int gf_fluid_ns2_substeps(gf_ns2_scheme scheme, const gf_ns2_substep **out)
     return scheme == GF_NS2_RK3 ? 3 : 1;
 }
 
+/* The index of name in the NULL-terminated list, -1 when absent. */
+static int name_index(const char *name, const char *const *list)
+{
+    for (int i = 0; list[i]; ++i)
+        if (strcmp(name, list[i]) == 0)
+            return i;
+    return -1;
+}
+
 int gf_fluid_ns2_advection_from_name(const char *name, gf_ns2_advection *out)
 {
-    if (strcmp(name, "advective") == 0)
-        *out = GF_NS2_ADVECTIVE;
-    else if (strcmp(name, "divergence") == 0)
-        *out = GF_NS2_DIVERGENCE;
-    else
-        return -1;
-    return 0;
+    static const char *const names[] = {"advective", "divergence", NULL}; /* in gf_ns2_advection's order */
+    int i = name_index(name, names);
+    if (i >= 0)
+        *out = (gf_ns2_advection)i;
+    return i >= 0 ? 0 : -1;
 }
 
 int gf_fluid_ns2_scheme_from_name(const char *name, gf_ns2_scheme *out)
 {
-    if (strcmp(name, "ab2") == 0)
-        *out = GF_NS2_AB2;
-    else if (strcmp(name, "rk3") == 0)
-        *out = GF_NS2_RK3;
-    else
-        return -1;
-    return 0;
+    static const char *const names[] = {"ab2", "rk3", NULL}; /* in gf_ns2_scheme's order */
+    int i = name_index(name, names);
+    if (i >= 0)
+        *out = (gf_ns2_scheme)i;
+    return i >= 0 ? 0 : -1;
 }
 
 /* The step's OpenMP threads: those its FFT plans were set for (gf_poisson_plan_set_threads), 1 by default.
