@@ -13,20 +13,22 @@
  * at the requested packing fraction, re-equilibrated with the run's
  * contacts, and at t = 0 start() tilts gravity to
  *     g = |g| (sin theta, -cos theta, 0)                       (§4.1.2.2).
- * The fluid tiers give each grain the full buoyancy -rho_f V g (a grain in a
- * tank). Izard 2014 (4.5)-(4.6) take the downslope gravity off the fluid, so
+ * The unresolved tier gives each grain the full buoyancy -rho_f V g (a grain
+ * in a tank). Izard 2014 (4.5)-(4.6) take the downslope gravity off the fluid, so
  * that it stays at rest far from the bed, and add rho_f/(rho_p - rho_f) g sin(theta)
  * to the grains' acceleration "to keep the buoyancy unchanged"; with F_h the
  * surface force of that fluid, whose pressure has no downslope gradient,
  * this drives a grain downslope with rho_p V g sin(theta) rho_p/(rho_p - rho_f)
- * instead of (rho_p - rho_f) V g sin(theta), and without the added term with
- * rho_p V g sin(theta). slope_gravity_exponent n scales the downslope gravity
- * by (rho_p/(rho_p - rho_f))^n, so that the grains' net downslope weight is
- * that of the tank (n = 0, default), the second reading (n = 1) or the first
- * (n = 2), the normal one unchanged; this is exact for the unresolved tier
- * (its fluid carries only the excess pressure, the buoyancy follows g). The
- * free-fall points of Izard's Table 4.2 flow as n = 1-2 on this bed would
- * (docs/fast-tier.md). Dry runs: no effect.
+ * instead of the tank's (rho_p - rho_f) V g sin(theta); without the added term
+ * it would be rho_p V g sin(theta) (no downslope buoyancy).
+ * slope_gravity_exponent n scales the downslope gravity by
+ * (rho_p/(rho_p - rho_f))^n, so that the grains' net downslope weight is the
+ * tank's (n = 0, default), the one without downslope buoyancy (n = 1) or that
+ * of (4.6) as printed (n = 2), the normal weight unchanged. Exact for the
+ * unresolved tier, whose fluid carries only the excess pressure and whose
+ * buoyancy follows the gravity set here; not checked with the resolved tier. Izard's free-fall and inertial points
+ * of Table 4.2 are matched far better with n = 2 (docs/fast-tier.md). Dry
+ * runs: no effect.
  *
  * The rough base: glued grains centred on y = 0 placed at random (default),
  * on a square lattice (base_spacing_over_D > 0), or none (rough_base = 0);
