@@ -68,12 +68,8 @@ static const gf_param_info avalanche_params[] = {
     {"phi_tolerance", "1", 0.005, 0.001, 0.05, "accepted |Phi - phi_target| of the preparation (thin beds: more)"},
     {"settle_time_nd", "1", 5.0, 0.0, 1e4, "re-equilibration at theta = 0 before t = 0, sqrt(D/g)"},
     {"rough_base", "1", 1.0, 0.0, 1.0, "1: glued half-grains on the floor; 0: plain frictional floor"},
-    {"base_spacing_over_D", "1", 0.0, 0.0, 10.0,
-     "0: glued grains placed at random (sequential adsorption); > 0: a square lattice of about this spacing / D, "
-     "fitted to L and W"},
-    {"slope_gravity_exponent", "1", 0.0, 0.0, 2.0,
-     "immersed grains' downslope weight Delta rho V g sin(theta) x (rho_p / Delta rho)^n: 0 the full buoyancy (a "
-     "tank), 1 without its downslope part, 2 Izard 2014 (4.6) with F_h the surface force of the fluid (4.5)"},
+    {"base_spacing_over_D", "1", 0.0, 0.0, 10.0, "0: glued grains at random; > 0: square lattice of ~ this / D"},
+    {"slope_gravity_exponent", "1", 0.0, 0.0, 2.0, "downslope weight x (rho_p/Delta rho)^n: 0 tank, 2 Izard (4.6)"},
 };
 
 static const gf_var_info avalanche_diag[] = {
