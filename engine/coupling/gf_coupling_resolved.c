@@ -403,11 +403,7 @@ static gf_status fluid_substep(gf_resolved *c, const gf_particles *p, const gf_n
     const double *const force[3] = {c->force[0], c->force[1], c->force[2]};
     GF_TRY(gf_fluid_ns2_viscous(c->ctx, f, s, r, force, dt_s));
     GF_TRY(gf_fluid_ns2_project(c->ctx, f, w * dt_s));
-    for (int a = 0; a < 3; ++a) { /* A^{k-1} becomes A^{k-2} */
-        double *t = c->A_old[a];
-        c->A_old[a] = c->A[a];
-        c->A[a] = t;
-    }
+    gf_fluid_ns2_rotate(c->A, c->A_old);
     return GF_OK;
 }
 
@@ -426,7 +422,7 @@ static gf_status resolved_fluid_step(gf_coupling *cc, const gf_particles *p, dou
     const gf_ns2_substep *sub;
     int n_sub = gf_fluid_ns2_substeps(c->scheme, &sub);
     for (int k = 0; k < n_sub; ++k) {
-        int use_old = k > 0 || (c->scheme == GF_NS2_AB2 && !c->first_step);
+        int use_old = gf_fluid_ns2_uses_previous(c->scheme, k, c->first_step);
         GF_TRY(fluid_substep(c, p, &sub[k], use_old, b, dt_s, k == 0 ? c->held_F : c->sub_F,
                              k == 0 ? c->held_T : c->sub_T));
         for (size_t q = 0; k > 0 && q < 3 * p->n_local; ++q)

@@ -128,16 +128,13 @@ static gf_status run_ns2(gf_ctx *ctx, const gf_fluid_exact_case *c, gf_fluid *f,
     int n_sub = gf_fluid_ns2_substeps(c->scheme, &sub);
     for (long s = 0; s < steps && st == GF_OK; ++s)
         for (int k = 0; k < n_sub && st == GF_OK; ++k) {
-            int use_old = k > 0 || (c->scheme == GF_NS2_AB2 && s > 0);
+            int use_old = gf_fluid_ns2_uses_previous(c->scheme, k, s == 0);
             gf_fluid_ns2_advection(f, c->advection, A);
             gf_fluid_ns2_rates(f, &sub[k], (const double *const *)A, (const double *const *)(use_old ? A_old : A), r);
             st = gf_fluid_ns2_viscous(ctx, f, &sub[k], (const double *const *)r, NULL, dt);
             if (st == GF_OK)
                 st = gf_fluid_ns2_project(ctx, f, 2.0 * sub[k].alpha * dt);
-            for (int a = 0; a < 3; ++a) {
-                double *t = A_old[a];
-                A_old[a] = A[a], A[a] = t;
-            }
+            gf_fluid_ns2_rotate(A, A_old);
         }
     for (int a = 0; a < 3; ++a)
         free(A[a]), free(A_old[a]), free(r[a]);

@@ -24,10 +24,12 @@ static int name_index(const char *name, const char *const *list)
     return -1;
 }
 
+const char *const gf_ns2_scheme_names[] = {"ab2", "rk3", NULL};
+const char *const gf_ns2_advection_names[] = {"advective", "divergence", NULL};
+
 int gf_fluid_ns2_advection_from_name(const char *name, gf_ns2_advection *out)
 {
-    static const char *const names[] = {"advective", "divergence", NULL}; /* in gf_ns2_advection's order */
-    int i = name_index(name, names);
+    int i = name_index(name, gf_ns2_advection_names);
     if (i >= 0)
         *out = (gf_ns2_advection)i;
     return i >= 0 ? 0 : -1;
@@ -35,11 +37,24 @@ int gf_fluid_ns2_advection_from_name(const char *name, gf_ns2_advection *out)
 
 int gf_fluid_ns2_scheme_from_name(const char *name, gf_ns2_scheme *out)
 {
-    static const char *const names[] = {"ab2", "rk3", NULL}; /* in gf_ns2_scheme's order */
-    int i = name_index(name, names);
+    int i = name_index(name, gf_ns2_scheme_names);
     if (i >= 0)
         *out = (gf_ns2_scheme)i;
     return i >= 0 ? 0 : -1;
+}
+
+int gf_fluid_ns2_uses_previous(gf_ns2_scheme scheme, int k, int first_step)
+{
+    return k > 0 || (scheme == GF_NS2_AB2 && !first_step);
+}
+
+void gf_fluid_ns2_rotate(double *A[3], double *A_old[3])
+{
+    for (int a = 0; a < 3; ++a) {
+        double *t = A_old[a];
+        A_old[a] = A[a];
+        A[a] = t;
+    }
 }
 
 /* The step's OpenMP threads: those its FFT plans were set for (gf_poisson_plan_set_threads), 1 by default.

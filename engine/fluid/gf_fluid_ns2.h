@@ -42,6 +42,17 @@ typedef struct gf_ns2_substep {
 
 /* The scheme's substeps: *out points at a static table; returns their number (1 or 3). */
 int gf_fluid_ns2_substeps(gf_ns2_scheme scheme, const gf_ns2_substep **out);
+/* The names of the schemes and of the advection forms, in their enums' order, NULL-terminated (the
+ * configuration's allowed values). */
+extern const char *const gf_ns2_scheme_names[];
+extern const char *const gf_ns2_advection_names[];
+
+/* Whether substep k of the scheme reads A^{k-2} (else A_old is taken as A: the first substep of RK3, and
+ * the Euler start of AB2 at the run's first step). */
+int gf_fluid_ns2_uses_previous(gf_ns2_scheme scheme, int k, int first_step);
+/* A^{k-1} becomes A^{k-2}: the two sets of face arrays swap. */
+void gf_fluid_ns2_rotate(double *A[3], double *A_old[3]);
+
 /* "ab2" or "rk3" -> scheme; 0 when the name is known, -1 otherwise. */
 int gf_fluid_ns2_scheme_from_name(const char *name, gf_ns2_scheme *out);
 

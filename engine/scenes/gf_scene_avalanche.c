@@ -120,12 +120,11 @@ static gf_status avalanche_build(gf_sim *sim, const gf_run_spec *spec)
     gf_particles *base = NULL;
     GF_TRY(gf_particles_create(ctx, 256, &base));
     const double spacing = gf_run_spec_param(spec, "base_spacing_over_D", 0.0) * D;
+    const int rough = gf_run_spec_param(spec, "rough_base", 1.0) >= 0.5;
     gf_status st = GF_OK;
-    if (gf_run_spec_param(spec, "rough_base", 1.0) < 0.5)
-        st = GF_OK;
-    else if (spacing > 0.0)
+    if (rough && spacing > 0.0)
         st = lattice_base(ctx, base, &psd, rho, L, W, spacing, spec->seed);
-    else
+    else if (rough)
         st = gf_packing_rough_base(ctx, base, &psd, rho, 0.0, 0.0, L, 0.0, W, (const int[2]){1, 1}, spec->seed);
     for (size_t i = 0; st == GF_OK && i < base->n_local; ++i)
         st = gf_particles_add(ctx, p, base->x_m[i], base->y_m[i], base->z_m[i], base->radius_m[i], rho, GF_P_GLUED,

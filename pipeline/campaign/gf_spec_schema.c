@@ -17,12 +17,11 @@
 
 #include "contact/gf_contact.h"
 #include "coupling/gf_drag.h"
+#include "fluid/gf_fluid_ns2.h"
 #include "scenes/gf_scene.h"
 
 static const char *const fluid_models[] = {"none", "unresolved", "resolved", "auto", NULL};
 static const char *const methods[] = {"dem", "continuum", NULL};
-static const char *const time_schemes[] = {"ab2", "rk3", NULL};                  /* fluid/gf_fluid_ns2.h */
-static const char *const advection_forms[] = {"advective", "divergence", NULL};  /* fluid/gf_fluid_ns2.h */
 
 #define D(sec, k, field, lo, hi, open, unit, doc) \
     {sec, k, GF_FIELD_DOUBLE, offsetof(gf_run_spec, field), 0, lo, hi, open, unit, NULL, doc, NULL}
@@ -73,9 +72,9 @@ static const gf_spec_field fields[] = {
     D("fluid", "d_over_dx", fluid.d_over_dx, 0, 64.0, 0, "1", "resolved tier: grid cells per diameter D/dx (8-20; 0: 16)"),
     D("fluid", "ibm_retraction_dx", fluid.ibm_retraction_dx, 0, 1.0, 0, "1",
       "resolved tier: solid-fraction profile centred on R minus this many cells (Breugem 2012; 0: on R)"),
-    N("fluid", "time_scheme", fluid.time_scheme, time_schemes,
+    N("fluid", "time_scheme", fluid.time_scheme, gf_ns2_scheme_names,
       "resolved tier: ab2 (Adams-Bashforth 2) or rk3 (three-substep Runge-Kutta), Crank-Nicolson viscosity"),
-    N("fluid", "advection", fluid.advection, advection_forms,
+    N("fluid", "advection", fluid.advection, gf_ns2_advection_names,
       "resolved tier: advective (u.grad)u or divergence div(uu), the energy-conserving form"),
     D("output", "interval_nd", output.interval_nd, 0, 1e7, 1, "1", "output interval in sqrt(D/g)"),
     B("output", "particles", output.particles, "write particles.nc"),
