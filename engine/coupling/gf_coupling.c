@@ -114,3 +114,11 @@ double gf_coupling_fluid_mass_kg(const gf_coupling *c)
 {
     return c->tier->fluid_mass_kg ? c->tier->fluid_mass_kg(c) : NAN;
 }
+
+int gf_coupling_grain_force(const gf_coupling *c, const gf_particles *p, size_t i, double f_N[3])
+{
+    if (c->tier->grain_force && i < p->n_local && c->tier->grain_force(c, p, i, f_N))
+        return 1;
+    f_N[0] = f_N[1] = f_N[2] = NAN;
+    return 0;
+}

@@ -83,5 +83,9 @@ gf_status gf_coupling_load(gf_coupling *c, gf_restart *r);
 /* Fluid volume flux through the domain along x per unit length (Q_f, m^3/s), and fluid mass, kg. */
 double gf_coupling_fluid_flow_rate(const gf_coupling *c);
 double gf_coupling_fluid_mass_kg(const gf_coupling *c);
+/* The fluid force held on grain i, the one gf_coupling_add_forces adds to it (buoyancy
+ * included: the fluid carries the excess pressure); 1, or 0 and NaNs where the tier
+ * does not keep per-grain forces. */
+int gf_coupling_grain_force(const gf_coupling *c, const gf_particles *p, size_t i, double f_N[3]);
 
 #endif

@@ -466,6 +466,16 @@ static void resolved_add_forces_range(gf_coupling *cc, gf_particles *p, size_t i
         add_held(c, i, p, i);
 }
 
+/* Where grain i's force is held, once the store was reordered since the fluid step: matched by id
+ * (few grains: a linear search); n_held when none. */
+static size_t held_slot_by_id(const gf_resolved *c, const gf_particles *p, size_t i)
+{
+    size_t h = 0;
+    while (h < c->n_held && c->held_id[h] != p->id[i])
+        ++h;
+    return h;
+}
+
 static gf_status resolved_add_forces(gf_coupling *cc, gf_particles *p)
 {
     gf_resolved *c = R_(cc);
@@ -475,14 +485,25 @@ static gf_status resolved_add_forces(gf_coupling *cc, gf_particles *p)
         resolved_add_forces_range(cc, p, 0, p->n_local);
         return GF_OK;
     }
-    /* the store was reordered since the fluid step: match by id (few grains: a linear search each) */
-    for (size_t i = 0; i < p->n_local; ++i)
-        for (size_t h = 0; h < c->n_held; ++h)
-            if (c->held_id[h] == p->id[i]) {
-                add_held(c, h, p, i);
-                break;
-            }
+    for (size_t i = 0; i < p->n_local; ++i) {
+        size_t h = held_slot_by_id(c, p, i);
+        if (h < c->n_held)
+            add_held(c, h, p, i);
+    }
     return GF_OK;
+}
+
+static int resolved_grain_force(const gf_coupling *cc, const gf_particles *p, size_t i, double f_N[3])
+{
+    const gf_resolved *c = CR(cc);
+    if (c->first_step)
+        return 0; /* before the first fluid step: nothing held */
+    size_t h = resolved_forces_in_order(cc, p) ? i : held_slot_by_id(c, p, i);
+    if (h >= c->n_held)
+        return 0;
+    for (int d = 0; d < 3; ++d)
+        f_N[d] = c->held_F[3 * h + d];
+    return 1;
 }
 
 /* --- outputs, probes, settings ----------------------------------------------------------------------------- */
@@ -645,4 +666,5 @@ const gf_coupling_tier gf_coupling_tier_resolved = {
     .load = resolved_load,
     .fluid_flow_rate = resolved_flow_rate,
     .fluid_mass_kg = resolved_fluid_mass,
+    .grain_force = resolved_grain_force,
 };

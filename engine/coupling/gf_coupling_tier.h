@@ -16,6 +16,7 @@
  *                    by ranges of grains on several threads
  *   fields           the grid and its fields for fields.nc (CF names)
  *   excess_pressure_Pa, fluid_flow_rate, fluid_mass_kg   diagnostics and probes
+ *   grain_force      the fluid force held on one grain (what add_forces adds)
  *   save/load        checkpoint: a run restarted from it continues bitwise
  *   set_gravity, set_threads                            run-time settings
  *   check            refuse a spec this tier cannot run, naming the limit
@@ -63,6 +64,7 @@ struct gf_coupling_tier {
     gf_status (*load)(gf_coupling *c, gf_restart *r);
     double (*fluid_flow_rate)(const gf_coupling *c);                          /* NULL: NaN */
     double (*fluid_mass_kg)(const gf_coupling *c);                            /* NULL: NaN */
+    int (*grain_force)(const gf_coupling *c, const gf_particles *p, size_t i, double f_N[3]); /* NULL: not kept */
 };
 
 /* The registry, in the order `fluid: auto` asks (cheapest first). */

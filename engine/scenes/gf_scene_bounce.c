@@ -59,6 +59,10 @@ static const gf_var_info bounce_diag[] = {
     {"sphere_velocity_x", "m s-1", "velocity of the sphere along the wall (x)", NULL},
     {"sphere_spin_z", "rad s-1", "angular velocity of the sphere about z", NULL},
     {"target_velocity_y", "m s-1", "vertical velocity of the target sphere (head-on; 0 without one)", NULL},
+    {"hydrodynamic_force_y_over_buoyant_weight", "1",
+     "vertical force of the resolved flow on the sphere beyond the buoyancy (the drag) / ((rho_p - rho_f) V g)", NULL},
+    {"wall_force_y_over_buoyant_weight", "1",
+     "vertical contact and lubrication force of the wall (or the target) on the sphere / ((rho_p - rho_f) V g)", NULL},
 };
 
 /* The release point and the box's far corner, from the scene's parameters. */
@@ -139,6 +143,17 @@ static gf_status bounce_diagnose(gf_sim *sim, double *v)
     v[3] = p->vx_m_s[0];
     v[4] = p->wz_rad_s[0];
     v[5] = head_on ? p->vy_m_s[1] : 0.0;
+    /* The non-gravity force splits into the flow's (the tier's held force, which carries the buoyancy
+     * -rho_f V g: the fluid holds the excess pressure) and the DEM's contact and lubrication. */
+    double f_fluid[3], grav[3];
+    struct gf_coupling *c = gf_sim_coupling(sim);
+    if (c && w > 0.0 && gf_coupling_grain_force(c, p, 0, f_fluid)) {
+        gf_sim_gravity(sim, grav);
+        v[6] = (f_fluid[1] + rho_f * vol * grav[1]) / w;
+        v[7] = (p->fy_N[0] - f_fluid[1]) / w;
+    } else {
+        v[6] = v[7] = NAN;
+    }
     return GF_OK;
 }
 
