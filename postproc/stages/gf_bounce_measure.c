@@ -115,6 +115,7 @@ void gf_bounce_measure_approach(const double *v, const double *gap, size_t n, do
             break;
         }
     }
+    const int after_peak = k_min < k1;
     for (size_t k = 0; k_min == k1 && k < k1; ++k)
         if (approaching(v, gap, k, top) && -v[k] * R / gap[k] < r_min)
             r_min = -v[k] * R / gap[k], k_min = k;
@@ -133,5 +134,5 @@ void gf_bounce_measure_approach(const double *v, const double *gap, size_t n, do
         sxx += x * x;
     }
     *a = (gf_bounce_approach){.V_m = sxu / sxx, .ratio_min = r_min, .x_lo = gap[hi] / R, .x_hi = gap[lo] / R,
-                              .k_first = lo, .k_last = hi, .n = hi - lo + 1};
+                              .k_first = lo, .k_last = hi, .n = hi - lo + 1, .after_peak = after_peak};
 }

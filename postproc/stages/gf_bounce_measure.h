@@ -99,6 +99,7 @@ typedef struct gf_bounce_approach {
     double x_lo, x_hi;     /* the window's smallest and largest delta_n/R */
     size_t k_first, k_last;/* the window's first and last sample (k_first <= k_last) */
     size_t n;              /* samples in the window */
+    int after_peak;        /* 1: the minimum follows the fall from the peak; 0: the ratio never fell so */
 } gf_bounce_approach;
 
 /* v (m s-1, positive away from the wall) and gap (m) at n samples in

@@ -216,7 +216,7 @@ static void check_approach(void)
     gf_bounce_approach a;
     gf_bounce_measure_approach(tr.v, gap, tr.n, R, 0.5, 0.05, &a);
     GF_CHECK_REL(a.V_m, V0, 1e-9);
-    GF_CHECK(a.x_hi <= 0.5 && a.x_hi > 0.499 && a.k_last == tr.n - 1);
+    GF_CHECK(a.x_hi <= 0.5 && a.x_hi > 0.499 && a.k_last == tr.n - 1 && !a.after_peak);
     /* (b): 4000 samples from x = 0.5 down to 1e-4, uniform in log x */
     const double e = 2e-4, c = 5.0, flat = 0.05;
     double v[4000], g[4000];
@@ -231,7 +231,7 @@ static void check_approach(void)
     GF_CHECK_REL(a.ratio_min, r_min, 1e-6);
     GF_CHECK_REL(a.x_lo, x_lo, 2e-3);
     GF_CHECK_REL(a.x_hi, x_hi, 2e-3);
-    GF_CHECK(a.V_m >= r_min && a.V_m <= (1.0 + flat) * r_min);
+    GF_CHECK(a.V_m >= r_min && a.V_m <= (1.0 + flat) * r_min && a.after_peak);
     printf("approach: V_m %.6f (V0 %.3f, ratio min %.6f), window x %.5f-%.5f (exact %.5f-%.5f)\n", a.V_m, V0,
            a.ratio_min, a.x_lo, a.x_hi, x_lo, x_hi);
 }
