@@ -211,23 +211,28 @@ static double report(const options *o, const bounce_trace *s, double D, double c
     return a.V_m;
 }
 
+/* Builds and runs the approach of o; returns V_m (NaN when the run could not be built or measured). */
+static double approach(const options *o)
+{
+    const double c0 = (double)clock() / CLOCKS_PER_SEC;
+    gf_ctx ctx = {0};
+    gf_run_spec spec = approach_spec(&ctx, o);
+    gf_sim *sim = harness_sim_create(&ctx, &spec, o->threads);
+    if (!sim)
+        return NAN;
+    bounce_trace s = {.n_cols = AP_N};
+    run_approach(&ctx, sim, spec.grains.diameter_m, o->end_s, &s);
+    const double V_m = report(o, &s, spec.grains.diameter_m, c0);
+    bounce_trace_free(&s);
+    gf_sim_destroy(&sim);
+    return V_m;
+}
+
 int main(int argc, char **argv)
 {
     options o;
     parse(argc, argv, &o);
-    gf_ctx ctx = {0};
-    gf_run_spec spec = approach_spec(&ctx, &o);
-    gf_sim_options opt = {.n_threads = (int)o.threads};
-    gf_sim *sim = NULL;
-    double c0 = (double)clock() / CLOCKS_PER_SEC;
-    GF_CHECK_OK(gf_sim_create(&ctx, &spec, &opt, &sim), &ctx);
-    if (!sim)
-        return gf_test_finish();
-    bounce_trace s = {.n_cols = AP_N};
-    run_approach(&ctx, sim, spec.grains.diameter_m, o.end_s, &s);
-    const double V_m = report(&o, &s, spec.grains.diameter_m, c0);
-    bounce_trace_free(&s);
-    gf_sim_destroy(&sim);
+    const double V_m = approach(&o);
     GF_CHECK(isfinite(V_m));
     if (o.check) {
         /* Mongruel et al. (2010) by radius (4, 5.25, 6.35, 7 mm) */
