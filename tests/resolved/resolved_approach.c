@@ -9,8 +9,9 @@
  * (V_m, St_m = rho_p V_m^2/(Delta rho g R)) = (0.28, 2.3), (0.51, 5.7),
  * (0.77, 10.9), (0.98, 15.9) for the four radii. The thesis (eta_e/R = 2e-4, the
  * sphere released 40 cm above the wall, D/dx = 20 axisymmetric) finds
- * (0.48, 3.9), (0.62, 6.4), (0.74, 9.3), (0.81, 10.9) and the far-field settling
- * velocity within 4 %.
+ * (0.48, 3.9), (0.62, 6.4), (0.74, 9.3), (0.81, 10.9) (Fig. 3.8, listed in the
+ * experiments' order, although their St_m hold with R = 7 mm only; the text names
+ * 0.74 against 0.77 m/s at R = 6.35 mm) and the far-field settling velocity within 4 %.
  * Here: the thesis' lubrication (Brenner's force with eta_e/R = 2e-4, cut-off R/2,
  * off in overlap), t_c sqrt(g/D) = 2.5e-3 (Izard 2014 §3.1.3.1's reference
  * contact; the approach ends before the contact acts), the sphere released
@@ -24,10 +25,12 @@
  *   V_m     the slope of u_p against delta_n/R through the origin over the linear
  *           regime: below delta_n = 0.06 R (xmax=), the samples around the first
  *           minimum of u_p/(delta_n/R) after its inertial peak where it stays
- *           within 5 % (flat=) of that minimum (gf_bounce_measure_approach); St_m; the ratio V_m/V_S with
- *           V_S = 2 Delta rho g R^2/(9 eta), the velocity at which Brenner's film
- *           force 6 pi eta R^2 u/delta balances the buoyant weight;
- *   the ratio u_p/(delta_n/R) at a ladder of gaps (the flat part is the window);
+ *           within 5 % (flat=) of that minimum (gf_bounce_measure_approach);
+ *           St_m; the ratio V_m/V_S with V_S = 2 Delta rho g R^2/(9 eta), the
+ *           velocity at which Brenner's film force 6 pi eta R^2 u/delta balances
+ *           the buoyant weight;
+ *   the ratio u_p/(delta_n/R) at a ladder of gaps (the flat part is the window),
+ *   with the resolved force over the buoyant weight there;
  *   the extended equation of Mongruel et al. (2010; Izard 2014 eq. (3.20)),
  *   -St_m d2x/dtau2 = dx/dtau/(x + eta_e/R) + 1 with x = delta_n/R, tau = t V_m/R,
  *   integrated from the window's top (the harness's gap and speed there) to its
@@ -37,8 +40,8 @@
  * R = 6.35 mm): Izard and Mongruel et al. span the experimental dispersion with
  * 5e-5 <= eta_e/R <= 5e-4, which moves V_m by -6 %/+11 % in this harness (R = 6.35 mm,
  * D/dx = 8); the thesis is 4 % below the experiment.
- * Usage: resolved_approach [R=mm] [dx=D/dx] [box=D] [height=D] [depth=D] [eta_e=] [flat=] [xmax=] [end=s] [cfl=] [threads=n]
- *        [check=mongruel]
+ * Usage: resolved_approach [R=mm] [dx=D/dx] [box=D] [height=D] [depth=D] [eta_e=] [flat=] [xmax=]
+ *        [end=s] [cfl=] [threads=n] [check=mongruel]
  */
 #include <math.h>
 #include <stdio.h>
