@@ -82,3 +82,57 @@ void gf_bounce_measure_oblique(const gf_bounce *b, const double *vx, const doubl
         o->mu_f = 2.0 * (1.0 + o->beta) * o->psi_in / (7.0 * (1.0 + o->e));
     }
 }
+
+/* A sample of the near-wall approach: before contact, below x_max R, moving towards the wall. */
+static int approaching(const double *v, const double *gap, size_t k, double x_max_R)
+{
+    return gap[k] > 0.0 && gap[k] <= x_max_R && v[k] < 0.0;
+}
+
+void gf_bounce_measure_approach(const double *v, const double *gap, size_t n, double R, double x_max, double flat,
+                                gf_bounce_approach *a)
+{
+    const double top = x_max * R;
+    *a = (gf_bounce_approach){.V_m = NAN, .ratio_min = NAN, .x_lo = NAN, .x_hi = NAN};
+    size_t k1 = 0;   /* the first contact ends the approach */
+    while (k1 < n && gap[k1] > 0.0)
+        ++k1;
+    /* the ratio's first minimum once it has fallen 2 flat below its running peak (the film slowing the sphere),
+       ended by a rise 2 flat above it (the roughness); without such a fall, its smallest value */
+    size_t k_min = k1;
+    double peak = -INFINITY, r_min = INFINITY;
+    for (size_t k = 0; k < k1; ++k) {
+        if (!approaching(v, gap, k, top))
+            continue;
+        double r = -v[k] * R / gap[k];
+        if (k_min == k1) {
+            peak = fmax(peak, r);
+            if (r * (1.0 + 2.0 * flat) <= peak)
+                k_min = k, r_min = r;
+        } else if (r < r_min) {
+            k_min = k, r_min = r;
+        } else if (r > (1.0 + 2.0 * flat) * r_min) {
+            break;
+        }
+    }
+    const int after_peak = k_min < k1;
+    for (size_t k = 0; k_min == k1 && k < k1; ++k)
+        if (approaching(v, gap, k, top) && -v[k] * R / gap[k] < r_min)
+            r_min = -v[k] * R / gap[k], k_min = k;
+    if (k_min == k1)
+        return;
+    const double r_max = (1.0 + flat) * r_min;
+    size_t lo = k_min, hi = k_min;
+    while (lo > 0 && approaching(v, gap, lo - 1, top) && -v[lo - 1] * R / gap[lo - 1] <= r_max)
+        --lo;
+    while (hi + 1 < k1 && approaching(v, gap, hi + 1, top) && -v[hi + 1] * R / gap[hi + 1] <= r_max)
+        ++hi;
+    double sxu = 0.0, sxx = 0.0;
+    for (size_t k = lo; k <= hi; ++k) {
+        double x = gap[k] / R;
+        sxu += -v[k] * x;
+        sxx += x * x;
+    }
+    *a = (gf_bounce_approach){.V_m = sxu / sxx, .ratio_min = r_min, .x_lo = gap[hi] / R, .x_hi = gap[lo] / R,
+                              .k_first = lo, .k_last = hi, .n = hi - lo + 1, .after_peak = after_peak};
+}

@@ -76,4 +76,36 @@ void gf_bounce_measure(const double *t, const double *v, const double *gap, size
 void gf_bounce_measure_oblique(const gf_bounce *b, const double *vx, const double *wz, double R,
                                gf_bounce_reference ref, gf_bounce_oblique *o);
 
+/* The linear near-wall approach of a sphere dominated by the film's
+ * lubrication (Mongruel, Lamriben, Yahiaoui & Feuillebois, J. Fluid Mech. 661,
+ * 2010; Izard 2014 §3.1.3.2): u_p = V_m delta_n/R close to the wall, u_p the
+ * approach speed and delta_n the gap. Above it inertia keeps u_p/(delta_n/R)
+ * higher (the sphere has not yet slowed to the film's pace); below it the
+ * roughness eta_e does (the film force goes as 1/(delta_n + eta_e)); further
+ * up, where the sphere still falls at nearly its terminal speed, the ratio is
+ * low again because the gap is large. The linear regime is where the ratio is
+ * flat: among the samples before the first contact with 0 < delta_n <= x_max R
+ * (close to the wall: Brenner's (1961) film force is within 10 % of the full
+ * sphere-wall resistance below delta_n = 0.06 R, Cox & Brenner 1967, and
+ * Mongruel et al. find the linear regime below 0.1-6 % of R), in time order, the ratio's first minimum once it
+ * has fallen by a factor 1 + 2 flat below its running peak, the minimum being
+ * over when the ratio rises 1 + 2 flat above it (the smallest ratio if it never
+ * falls so: an approach linear throughout), and the samples contiguous with it
+ * whose ratio stays within (1 + flat) of it. V_m is the least-squares slope of u_p against delta_n/R through the
+ * origin over that window. */
+typedef struct gf_bounce_approach {
+    double V_m;            /* m s-1; NaN when no sample qualifies */
+    double ratio_min;      /* the smallest u_p/(delta_n/R), m s-1 */
+    double x_lo, x_hi;     /* the window's smallest and largest delta_n/R */
+    size_t k_first, k_last;/* the window's first and last sample (k_first <= k_last) */
+    size_t n;              /* samples in the window */
+    int after_peak;        /* 1: the minimum follows the fall from the peak; 0: the ratio never fell so */
+} gf_bounce_approach;
+
+/* v (m s-1, positive away from the wall) and gap (m) at n samples in
+ * increasing time, R (m), x_max the largest gap over R considered (e.g. 0.06),
+ * flat the window's relative tolerance (e.g. 0.05). */
+void gf_bounce_measure_approach(const double *v, const double *gap, size_t n, double R, double x_max, double flat,
+                                gf_bounce_approach *a);
+
 #endif

@@ -30,6 +30,17 @@
  * V_I = V0, with a "not determined: no rebound" note; (b) the approach slows
  * exponentially (a lubrication film) and never touches: V_T = V0 only, a note,
  * no e. A diagnostics file without gap_over_D is not a bounce: no note.
+ *
+ * Linear approach (gf_bounce_measure_approach): (a) the film trace above, whose
+ * gap decays as exp(-t/tau) with tau = R/V0, so u = V0 gap/R below R: V_m = V0
+ * to roundoff, the window the whole of 0 < gap <= R/2; (b) a trace
+ * u = V0 (x + e + c x^2), x = gap/R (a roughness offset e and an inertial excess
+ * c x^2), below x = 0.1 and the speed there above (the terminal fall, whose ratio
+ * u/x falls below the linear regime's at large gaps and must not be taken), whose ratio u/x = V0 (1 + e/x + c x) has its minimum V0 (1 + 2 sqrt(e c))
+ * at x = sqrt(e/c) and leaves (1 + flat) of it at the roots of
+ * c x^2 - ((1 + flat)(1 + 2 sqrt(e c)) - 1) x + e = 0: the minimum within 1e-6,
+ * the edges within the sample spacing (0.2 %), V_m (an x^2-weighted mean of the
+ * ratio) between the minimum and (1 + flat) times it.
  */
 #include <math.h>
 #include <netcdf.h>
@@ -39,6 +50,7 @@
 
 #include "gf_post_synth.h"
 #include "gf_test.h"
+#include "stages/gf_bounce_measure.h"
 #include "stages/gf_stage.h"
 #include "synth_stage.h"
 
@@ -192,9 +204,42 @@ static void check_no_rebound(void)
     GF_CHECK(st == GF_ERR_UNSUPPORTED && ctx.last_msg[0] == '\0');
 }
 
+static void check_approach(void)
+{
+    static trace tr;
+    tr.n = 0;
+    film_trace(&tr);
+    const double R = 0.5 * D;
+    static double gap[NMAX];
+    for (size_t k = 0; k < tr.n; ++k)
+        gap[k] = tr.gap_over_D[k] * D;
+    gf_bounce_approach a;
+    gf_bounce_measure_approach(tr.v, gap, tr.n, R, 0.5, 0.05, &a);
+    GF_CHECK_REL(a.V_m, V0, 1e-9);
+    GF_CHECK(a.x_hi <= 0.5 && a.x_hi > 0.499 && a.k_last == tr.n - 1 && !a.after_peak);
+    /* (b): 4000 samples from x = 0.5 down to 1e-4, uniform in log x */
+    const double e = 2e-4, c = 5.0, flat = 0.05;
+    double v[4000], g[4000];
+    for (int k = 0; k < 4000; ++k) {
+        double x = 0.5 * pow(2e-4, k / 3999.0);
+        double xs = fmin(x, 0.1);   /* above 0.1 R a constant speed: the ratio low there, peaking at 0.1 R */
+        g[k] = x * R, v[k] = -V0 * (xs + e + c * xs * xs);
+    }
+    gf_bounce_measure_approach(v, g, 4000, R, 0.5, flat, &a);
+    const double r_min = V0 * (1.0 + 2.0 * sqrt(e * c)), b = (1.0 + flat) * r_min / V0 - 1.0;
+    const double x_lo = (b - sqrt(b * b - 4.0 * c * e)) / (2.0 * c), x_hi = (b + sqrt(b * b - 4.0 * c * e)) / (2.0 * c);
+    GF_CHECK_REL(a.ratio_min, r_min, 1e-6);
+    GF_CHECK_REL(a.x_lo, x_lo, 2e-3);
+    GF_CHECK_REL(a.x_hi, x_hi, 2e-3);
+    GF_CHECK(a.V_m >= r_min && a.V_m <= (1.0 + flat) * r_min && a.after_peak);
+    printf("approach: V_m %.6f (V0 %.3f, ratio min %.6f), window x %.5f-%.5f (exact %.5f-%.5f)\n", a.V_m, V0,
+           a.ratio_min, a.x_lo, a.x_hi, x_lo, x_hi);
+}
+
 int main(void)
 {
     check_rebound();
     check_no_rebound();
+    check_approach();
     return gf_test_finish();
 }

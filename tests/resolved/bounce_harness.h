@@ -1,5 +1,5 @@
 /*
- * Pieces of the bounce harnesses (resolved_oblique.c, resolved_head_on.c):
+ * Pieces of the bounce harnesses (resolved_oblique.c, resolved_head_on.c, resolved_approach.c):
  * their key=value arguments, and the sampled trace, one growing array per
  * quantity, so that the columns go straight to gf_bounce_measure
  * (postproc/stages/gf_bounce_measure.h).
@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "gf_run_spec.h"
+#include "gf_sim.h"
 #include "gf_test.h"
 
 typedef struct harness_arg {
@@ -95,6 +96,16 @@ static inline void harness_scene_params(gf_ctx *ctx, gf_run_spec *spec, const ch
 {
     for (int k = 0; k < n; ++k)
         GF_CHECK_OK(gf_run_spec_set_param(ctx, spec, keys[k], values[k]), ctx);
+}
+
+/* The simulation of spec on n_threads OpenMP threads (0: the library default); NULL, with the failure
+ * recorded, when it cannot be built. */
+static inline gf_sim *harness_sim_create(gf_ctx *ctx, const gf_run_spec *spec, double n_threads)
+{
+    gf_sim_options opt = {.n_threads = (int)n_threads};
+    gf_sim *sim = NULL;
+    GF_CHECK_OK(gf_sim_create(ctx, spec, &opt, &sim), ctx);
+    return sim;
 }
 
 #endif /* BOUNCE_HARNESS_H */

@@ -80,10 +80,8 @@ int main(int argc, char **argv)
     parse(argc, argv, &o);
     gf_ctx ctx = {0};
     gf_run_spec spec = head_on_spec(&ctx, &o);
-    gf_sim_options opt = {.n_threads = (int)o.threads};
-    gf_sim *sim = NULL;
     double c0 = (double)clock() / CLOCKS_PER_SEC;
-    GF_CHECK_OK(gf_sim_create(&ctx, &spec, &opt, &sim), &ctx);
+    gf_sim *sim = harness_sim_create(&ctx, &spec, o.threads);
     if (!sim)
         return gf_test_finish();
     const double D = spec.grains.diameter_m, t_end = 0.5 * (o.gap + 2.0) * D / 0.3 * 4.0;
