@@ -128,6 +128,7 @@ const gf_post_col gf_summary_columns[] = {
     {"bounce_eps_over_eps_max", 0, "1", "-V_R/V_T over the dry restitution of the contact law"},
     {"bounce_St", 0, "1", "impact Stokes number rho_p V_I D / (9 eta_f) (Gondret et al. 2002)"},
     {"bounce_St_T", 0, "1", "Stokes number (rho_p + rho_f/2) V_T D / (9 eta_f) (Izard 2014 eq. 3.19)"},
+    {"bounce_V_m", 0, "m s-1", "speed of the linear near-wall approach u_p = V_m gap/R (Mongruel et al. 2010)"},
     {"bounce_t_impact_s", 0, "s", "time of the first contact"},
     {"bounce_contact_s", 0, "s", "duration of the first contact (gap <= 0)"},
     {"bounce_contact_over_tc", 0, "1", "duration of the first contact over the contact law's t_c"},

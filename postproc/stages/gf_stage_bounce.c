@@ -11,6 +11,9 @@
  *                  Gondret et al. (2002) (also Breugem 2010; Kempe & Fröhlich 2012);
  *   bounce_St_T  = (rho_p + rho_f/2) V_T D / (9 eta_f), Izard 2014 eq. (3.19)
  *                  (terminal velocity, added mass C_M = 1/2).
+ * bounce_V_m is the speed of the linear near-wall approach u_p = V_m delta_n/R
+ * (Mongruel et al. 2010; gf_bounce_measure_approach), from records dense
+ * enough near the wall (configs/approach_mongruel.yaml).
  * eps/eps_max uses the run's restitution attribute (the dry ε_max of the
  * contact law) and the contact time over t_c its t_contact_s attribute.
  *
@@ -51,6 +54,15 @@ static void set_if(gf_post_row *row, const char *name, double x)
 {
     if (isfinite(x))
         gf_post_row_set(row, name, x);
+}
+
+/* V_m of the linear near-wall approach (gf_bounce_measure_approach): gaps below 0.06 R, window 5 % flat,
+ * the settings of Mongruel et al.'s (2010) comparison in docs/resolved.md. */
+static void report_approach(const bounce_series *s, double R, gf_post_row *row)
+{
+    gf_bounce_approach a;
+    gf_bounce_measure_approach(s->v, s->gap, s->n, R, 0.06, 0.05, &a);
+    set_if(row, "bounce_V_m", a.V_m);
 }
 
 static gf_status report(gf_ctx *ctx, const gf_bounce *b, const double *att, gf_post_row *row, size_t n)
@@ -135,6 +147,7 @@ gf_status gf_stage_bounce(gf_ctx *ctx, const gf_stage_in *in, const gf_stage_opt
     if (st == GF_OK) {
         gf_bounce b;
         gf_bounce_measure(s.t, s.v, s.gap, s.n, 0.5 * att[0], &b);
+        report_approach(&s, 0.5 * att[0], out->row);
         st = report(ctx, &b, att, out->row, s.n);
         if (b.rebounded) {
             gf_status so = report_oblique(ctx, in, &b, 0.5 * att[0], s.n, out->row);
