@@ -63,6 +63,8 @@ typedef struct gf_fluid_spec {
     char advection[GF_NAME_LEN];   /* resolved tier: "advective" or "divergence" form (fluid/gf_fluid_ns2.h) */
     double ibm_retraction_dx; /* resolved tier: the solid fraction's profile centred on R - this x dx (Breugem,
                                  J. Comput. Phys. 2012); 0: on R (Izard 2014) */
+    char ibm_forcing[GF_NAME_LEN]; /* resolved tier: "smoothed" (Izard 2014) or "markers" (Uhlmann 2005,
+                                      Breugem 2012; coupling/gf_ibm_markers.h) */
 } gf_fluid_spec;
 
 /* The continuum method (method: continuum; engine/continuum): the mu(I) law and the grid. */
