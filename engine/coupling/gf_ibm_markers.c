@@ -84,7 +84,7 @@ static void marker_stencil(const gf_grid *g, int a, const double X[3], stencil *
                 sum += w;
             }
     for (int t = 0; t < s->n; ++t)
-        s->w[t] /= sum; /* near a wall: the faces left carry the whole kernel */
+        s->w[t] /= sum; /* near a wall: the faces left carry the whole kernel (none: a marker past a wall) */
 }
 
 /* Marker radius and volume of grain i: R_m = R - r_d dx, dV_l = (pi dx / 3N) (12 R_m^2 + dx^2). */
@@ -155,7 +155,7 @@ static void interpolate_grain(gf_ibm_markers *mk, const gf_grid *g, const gf_par
             for (int t = 0; t < s.n; ++t)
                 ul += s.w[t] * u[a][s.face[t]];
             int b = (a + 1) % 3, c = (a + 2) % 3;
-            double target = v[a] + w[b] * r[c] - w[c] * r[b];
+            double target = s.n ? v[a] + w[b] * r[c] - w[c] * r[b] : ul; /* a marker with no face forces nothing */
             Fl[a] = (target - ul) / dt_s;
             slip2 += (target - ul) * (target - ul);
             mk->F[3 * (mk->first[i] + l) + a] = Fl[a];

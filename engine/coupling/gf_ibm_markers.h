@@ -10,19 +10,19 @@
  * only, with the force that makes the interpolated velocity there the grain's
  * own, whatever the step.
  *
- * Markers (Uhlmann, J. Comput. Phys. 209, 2005, §2). N_i markers on a sphere
+ * Markers (Uhlmann, J. Comput. Phys. 209, 2005). N_i markers on a sphere
  * of radius R_m = R_i - r_d dx, concentric with grain i, r_d = fluid.ibm_retraction_dx
- * (Breugem, J. Comput. Phys. 231, 2012, §2.3, retracts them by 0.3 dx so that
+ * (Breugem, J. Comput. Phys. 231, 2012, retracts them by 0.3 dx so that
  * the diffuse interface makes the grain hydrodynamically R_i, not R_i + ~dx/3).
  * N_i = round(4 pi R_m^2 / dx^2), about one marker per cell face of surface,
  * placed on the golden-angle (Fibonacci) spiral,
  *     z_l = 1 - (2l + 1)/N,  rho_l = sqrt(1 - z_l^2),  phi_l = l pi (3 - sqrt 5),
  * fixed in the lab frame (a sphere: no orientation to follow). Each marker
- * carries the volume of a shell one cell thick (Breugem 2012, §2.3):
+ * carries the volume of a shell one cell thick (Breugem 2012):
  *     dV_l = (pi dx / 3N) (12 R_m^2 + dx^2).
  *
  * Kernel. The regularised three-point delta of Roma, Peskin & Berger
- * (J. Comput. Phys. 153, 1999, eq. 22), a product over the axes of
+ * (J. Comput. Phys. 153, 1999), a product over the axes of
  *     phi(r) = (1 + sqrt(1 - 3 r^2)) / 3                          |r| <= 1/2,
  *              (5 - 3|r| - sqrt(1 - 3 (1 - |r|)^2)) / 6          1/2 <= |r| <= 3/2,
  * r the distance to the face in cells, on each staggered velocity component's
@@ -34,7 +34,7 @@
  * stencil wraps.
  *
  * Forcing, per substep of the fluid step, with multi-direct forcing (Luo et
- * al., Phys. Rev. E 76, 2007; Breugem 2012, §2.2): from u^0 = u~ (the predictor),
+ * al., Phys. Rev. E 76, 2007; Breugem 2012): from u^0 = u~ (the predictor),
  * for s = 1..GF_IBM_MARKER_SWEEPS,
  *     U_l = sum_faces u^{s-1} delta(x - X_l) dx^3                (interpolation)
  *     F_l^s = (U_i + w_i x (X_l - x_i) - U_l) / dt
@@ -43,8 +43,8 @@
  * does. The sweeps correct the overlap of neighbouring markers' kernels, which
  * otherwise leaves the interpolated slip at a fraction of its start.
  *
- * Force and torque (Uhlmann 2005, eq. 17; Kempe & Froehlich, J. Comput. Phys.
- * 231, 2012; Breugem 2012, eqs. 12-13): the momentum balance of the fluid
+ * Force and torque (Uhlmann 2005; Kempe & Froehlich, J. Comput. Phys.
+ * 231, 2012; Breugem 2012): the momentum balance of the fluid
  * inside grain i, rigid or not, gives the surface force
  *     F_i = -rho sum_l F_l dV_l + rho d/dt int_{V_i} u dV - rho V_i g,
  *     T_i = -rho sum_l (X_l - x_i) x F_l dV_l + rho d/dt int_{V_i} (x - x_i) x u dV,
@@ -69,8 +69,8 @@
 #include "coupling/gf_ibm.h"
 
 /* Multi-direct forcing sweeps per substep. Each sweep halves the markers' slip (the kernel's overlap with itself,
- * int phi^2 dr ~ 1/2): four leave 1/16 of it (Breugem 2012 takes 2; four halve the spread of the terminal
- * velocity over the fluid step, docs/notes/resolved-settling.md, at no measurable cost). */
+ * int phi^2 dr ~ 1/2): four leave 1/16 of it, and halve the spread of the terminal velocity over the fluid step
+ * that two leave, at no measurable cost (docs/notes/resolved-settling.md). */
 #define GF_IBM_MARKER_SWEEPS 4
 
 /* The names of fluid.ibm_forcing, NULL-terminated: "smoothed" (gf_ibm.h), "markers". */
