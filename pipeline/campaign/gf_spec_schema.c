@@ -72,7 +72,7 @@ static const gf_spec_field fields[] = {
       "no lubrication while surfaces overlap (1), or the gap clamped at 0 (0: constant damping in contact)"),
     D("fluid", "d_over_dx", fluid.d_over_dx, 0, 64.0, 0, "1", "resolved tier: grid cells per diameter D/dx (8-20; 0: 16)"),
     D("fluid", "ibm_retraction_dx", fluid.ibm_retraction_dx, 0, 1.0, 0, "1",
-      "resolved tier: solid-fraction profile centred on R minus this many cells (Breugem 2012; 0: on R)"),
+      "resolved tier: solid-fraction profile (or markers) centred on R minus this many cells (Breugem 2012; 0: on R)"),
     N("fluid", "time_scheme", fluid.time_scheme, gf_ns2_scheme_names,
       "resolved tier: ab2 (Adams-Bashforth 2) or rk3 (three-substep Runge-Kutta), Crank-Nicolson viscosity"),
     N("fluid", "advection", fluid.advection, gf_ns2_advection_names,
