@@ -87,10 +87,16 @@ static void marker_stencil(const gf_grid *g, int a, const double X[3], stencil *
         s->w[t] /= sum; /* near a wall: the faces left carry the whole kernel (none: a marker past a wall) */
 }
 
-/* Marker radius and volume of grain i: R_m = R - r_d dx, dV_l = (pi dx / 3N) (12 R_m^2 + dx^2). */
+/* The markers' sphere of grain i: R_m = R - r_d dx. */
 static double marker_radius(const gf_ibm_markers *mk, const gf_grid *g, const gf_particles *p, size_t i)
 {
     return p->radius_m[i] - mk->retraction_cells * g->h_m[0];
+}
+
+/* Each of n markers' volume on a sphere of radius R_m: dV_l = (pi dx / 3n) (12 R_m^2 + dx^2). */
+static double marker_volume(double R_m, double dx_m, size_t n)
+{
+    return M_PI * dx_m * (12.0 * R_m * R_m + dx_m * dx_m) / (3.0 * (double)n);
 }
 
 static gf_status reserve(gf_ctx *ctx, gf_ibm_markers *mk, const gf_grid *g, const gf_particles *p)
@@ -141,7 +147,7 @@ static void interpolate_grain(gf_ibm_markers *mk, const gf_grid *g, const gf_par
 {
     const double h = g->h_m[0], R_m = marker_radius(mk, g, p, i);
     const size_t n = mk->first[i + 1] - mk->first[i];
-    const double dV = M_PI * h * (12.0 * R_m * R_m + h * h) / (3.0 * (double)n);
+    const double dV = marker_volume(R_m, h, n);
     const double v[3] = {p->vx_m_s[i], p->vy_m_s[i], p->vz_m_s[i]};
     const double w[3] = {p->wx_rad_s[i], p->wy_rad_s[i], p->wz_rad_s[i]};
     double F[3] = {0, 0, 0}, T[3] = {0, 0, 0}, slip2 = 0.0;
@@ -179,7 +185,7 @@ static void spread_component(const gf_ibm_markers *mk, const gf_grid *g, const g
     for (size_t i = 0; i < mk->n_grains; ++i) {
         const double R_m = marker_radius(mk, g, p, i);
         const size_t n = mk->first[i + 1] - mk->first[i];
-        const double dV = M_PI * h * (12.0 * R_m * R_m + h * h) / (3.0 * (double)n);
+        const double dV = marker_volume(R_m, h, n);
         for (size_t l = 0; l < n; ++l) {
             double r[3], X[3];
             marker_position(p, i, R_m, l, n, r, X);
