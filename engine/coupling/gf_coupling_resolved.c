@@ -106,6 +106,8 @@ typedef struct gf_resolved {
     double *held_F, *held_T;
     double *sub_F, *sub_T;   /* a later substep's force and torque, before they are added to held_F, held_T */
     double *P0, *L0, *P1, *L1; /* markers: each grain's internal momentum and angular momentum, before and after */
+    double *P_last, *L_last;   /* markers: P1, L1 of the last fluid step, in held_id's order */
+    int last_known;            /* P_last, L_last hold the last step's (0: the first step, or an older checkpoint) */
     size_t n_held, cap_held;
     uint64_t held_epoch;
     int held_epoch_known;
@@ -237,7 +239,7 @@ static void resolved_destroy(gf_coupling *cc)
     for (int v = 0; v < RF_N; ++v)
         free(c->fields[v]);
     free(c->held_id), free(c->held_F), free(c->held_T), free(c->sub_F), free(c->sub_T);
-    free(c->P0), free(c->L0), free(c->P1), free(c->L1);
+    free(c->P0), free(c->L0), free(c->P1), free(c->L1), free(c->P_last), free(c->L_last);
     free(c);
 }
 
@@ -377,6 +379,7 @@ static gf_status reserve_held(gf_resolved *c, size_t n)
     ok &= grow(&c->sub_F, 3 * cap);
     ok &= grow(&c->sub_T, 3 * cap);
     ok &= grow(&c->P0, 3 * cap) && grow(&c->L0, 3 * cap) && grow(&c->P1, 3 * cap) && grow(&c->L1, 3 * cap);
+    ok &= grow(&c->P_last, 3 * cap) && grow(&c->L_last, 3 * cap);
     if (!ok)
         return GF_FAIL(c->ctx, GF_ERR_NOMEM, "resolved tier: out of memory for %zu grains", n);
     c->cap_held = cap;
@@ -430,18 +433,36 @@ static gf_status fluid_substep(gf_resolved *c, const gf_particles *p, const gf_n
     return GF_OK;
 }
 
-/* Markers (coupling/gf_ibm_markers.h): the fraction for the fields, and each grain's internal momentum before
- * the step. */
+/* Index of grain i among the last fluid step's grains (held_id), -1 when it was not there. */
+static long last_index(const gf_resolved *c, const gf_particles *p, size_t i)
+{
+    if (c->held_epoch_known && c->held_epoch == p->order_epoch && c->n_held == p->n_local)
+        return (long)i;
+    for (size_t h = 0; h < c->n_held; ++h)
+        if (c->held_id[h] == p->id[i])
+            return (long)h;
+    return -1;
+}
+
+/* Markers (coupling/gf_ibm_markers.h): the fraction for the fields, and each grain's internal momentum at the
+ * start of the step: over the volume it occupied during the last step, int alpha_i(x - x_i^{n-1}) u^n dV, the
+ * last step's closing value, so that the rate follows the moving grain (Breugem 2012); over its present volume
+ * at the first step. */
 static void begin_internal_momentum(gf_resolved *c, const gf_particles *p)
 {
     const gf_grid *g = &c->fluid->grid;
     gf_ibm_fraction(&c->map, g, c->alpha_sum);
     const double *const u[3] = {c->fluid->u[0], c->fluid->u[1], c->fluid->u[2]};
     gf_ibm_momentum(&c->map, g, p, u, c->P0, c->L0);
+    for (size_t i = 0; c->last_known && i < p->n_local; ++i) {
+        long h = last_index(c, p, i);
+        for (int d = 0; h >= 0 && d < 3; ++d)
+            c->P0[3 * i + d] = c->P_last[3 * h + d], c->L0[3 * i + d] = c->L_last[3 * h + d];
+    }
 }
 
-/* The rest of the markers' force and torque: rho d/dt int_{V_i} u dV - rho V_i g, and rho d/dt int r x u dV,
- * the rates over the step (grains frozen). */
+/* The rest of the markers' force and torque: rho d/dt int_{V_i(t)} u dV - rho V_i g, and rho d/dt int r x u dV,
+ * the rates over the step; the closing values kept for the next step. */
 static void add_internal_momentum(gf_resolved *c, const gf_particles *p, double dt_s)
 {
     const gf_grid *g = &c->fluid->grid;
@@ -455,6 +476,9 @@ static void add_internal_momentum(gf_resolved *c, const gf_particles *p, double 
             c->held_T[3 * i + d] += rho * (c->L1[3 * i + d] - c->L0[3 * i + d]) / dt_s;
         }
     }
+    memcpy(c->P_last, c->P1, 3 * p->n_local * sizeof(double));
+    memcpy(c->L_last, c->L1, 3 * p->n_local * sizeof(double));
+    c->last_known = 1;
 }
 
 /* The step's substeps; the grains' held force and torque are the sum of the substeps' (each substep forces
@@ -652,6 +676,11 @@ static gf_status resolved_save(const gf_coupling *cc, gf_restart *r)
     GF_TRY(gf_coupling_put_arrays(r, list, GRID_ARRAYS));
     GF_TRY(gf_restart_put_i64(r, "resolved_held_id", c->n_held, c->held_id));
     GF_TRY(gf_restart_put_f64(r, "resolved_held_F", 3 * c->n_held, c->held_F));
+    if (c->forcing == GF_IBM_MARKERS && c->last_known) { /* the markers' last internal momenta (the smoothed
+                                                             forcing's checkpoint stays as it was) */
+        GF_TRY(gf_restart_put_f64(r, "resolved_last_P", 3 * c->n_held, c->P_last));
+        GF_TRY(gf_restart_put_f64(r, "resolved_last_L", 3 * c->n_held, c->L_last));
+    }
     return gf_restart_put_f64(r, "resolved_held_T", 3 * c->n_held, c->held_T);
 }
 
@@ -673,6 +702,11 @@ static gf_status resolved_load(gf_coupling *cc, gf_restart *r)
     GF_TRY(gf_restart_get_i64(r, "resolved_held_id", n, c->held_id));
     GF_TRY(gf_restart_get_f64(r, "resolved_held_F", 3 * n, c->held_F));
     GF_TRY(gf_restart_get_f64(r, "resolved_held_T", 3 * n, c->held_T));
+    c->last_known = c->forcing == GF_IBM_MARKERS && gf_restart_has(r, "resolved_last_P");
+    if (c->last_known) {
+        GF_TRY(gf_restart_get_f64(r, "resolved_last_P", 3 * n, c->P_last));
+        GF_TRY(gf_restart_get_f64(r, "resolved_last_L", 3 * n, c->L_last));
+    }
     c->n_held = n;
     c->held_epoch_known = 0; /* matched by id at the first substep */
     c->first_step = (int)counts[3];
