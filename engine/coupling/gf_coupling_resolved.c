@@ -14,7 +14,8 @@
  *      the forcing integral, F_i = -(rho rho_p/(rho_p - rho)) int alpha_i (U_i - u~)/dt,
  *      summed over the substeps (fluid.ibm_forcing: smoothed); or the forcing
  *      at surface markers, F_i = -rho sum_l F_l dV_l summed over the substeps,
- *      plus, once a step, the inner fluid's momentum rate and the buoyancy
+ *      plus, once a step, the inner fluid's momentum rate (following the
+ *      moving grain: the last step's closing value is kept) and the buoyancy
  *      (fluid.ibm_forcing: markers, coupling/gf_ibm_markers.h);
  *   4. Crank-Nicolson viscous step with f, projection (FFT Poisson);
  * then the DEM runs its substeps with F_i and T_i held (gf_coupling_add_forces),

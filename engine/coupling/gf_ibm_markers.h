@@ -52,9 +52,13 @@
  * loop adds m g, as for the smoothed forcing). The mean pressure gradient of a
  * periodic gravity axis cancels from F_i as it does there (gf_coupling_resolved.c).
  * The internal momentum is the sum over the faces of the smoothed fraction
- * alpha_i of gf_ibm.h centred on R_i (its retraction 0), before and after the
- * step, grains frozen: its rate is the step's mean, added once per step. This
- * term removes the rho_p/(rho_p - rho) factor of Izard's formula; with it
+ * alpha_i of gf_ibm.h centred on R_i (its retraction 0), at the end of each
+ * fluid step (grain frozen at x_i^n); its rate is the difference from the last
+ * step's value, taken where the grain then was, over dt, added once a step: the
+ * derivative that follows the moving volume (Breugem 2012). A rate over a
+ * volume held still (both values at x_i^n) misses the flux of the fluid the
+ * smoothed weights count outside R_i and biases the terminal velocity (+3.5 %
+ * at D/dx 8; docs/notes/resolved-settling.md). This term removes the rho_p/(rho_p - rho) factor of Izard's formula; with it
  * explicit, the grain's acceleration feeds back through rho V_i/m_i = rho/rho_p
  * per step, stable for rho_p/rho > 1 (the tier requires 1.7).
  *
