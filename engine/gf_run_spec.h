@@ -61,8 +61,10 @@ typedef struct gf_fluid_spec {
                                  0: gap clamped at 0 (constant damping 6 pi eta R_eff^2 / eta_e) */
     char time_scheme[GF_NAME_LEN]; /* resolved tier: "ab2" or "rk3" (fluid/gf_fluid_ns2.h) */
     char advection[GF_NAME_LEN];   /* resolved tier: "advective" or "divergence" form (fluid/gf_fluid_ns2.h) */
-    double ibm_retraction_dx; /* resolved tier: the solid fraction's profile centred on R - this x dx (Breugem,
-                                 J. Comput. Phys. 2012); 0: on R (Izard 2014) */
+    double ibm_retraction_dx; /* resolved tier: the solid fraction's profile (markers: the markers' sphere) centred
+                                 on R - this x dx (Breugem, J. Comput. Phys. 2012); 0: on R (Izard 2014) */
+    char ibm_forcing[GF_NAME_LEN]; /* resolved tier: "smoothed" (Izard 2014) or "markers" (Uhlmann 2005,
+                                      Breugem 2012; coupling/gf_ibm_markers.h) */
 } gf_fluid_spec;
 
 /* The continuum method (method: continuum; engine/continuum): the mu(I) law and the grid. */

@@ -12,7 +12,11 @@
  *   2. rates and the predictor u~;
  *   3. forcing f = alpha (U - u~)/dt, and each grain's force and torque from
  *      the forcing integral, F_i = -(rho rho_p/(rho_p - rho)) int alpha_i (U_i - u~)/dt,
- *      summed over the substeps;
+ *      summed over the substeps (fluid.ibm_forcing: smoothed); or the forcing
+ *      at surface markers, F_i = -rho sum_l F_l dV_l summed over the substeps,
+ *      plus, once a step, the inner fluid's momentum rate (following the
+ *      moving grain: the last step's closing value is kept) and the buoyancy
+ *      (fluid.ibm_forcing: markers, coupling/gf_ibm_markers.h);
  *   4. Crank-Nicolson viscous step with f, projection (FFT Poisson);
  * then the DEM runs its substeps with F_i and T_i held (gf_coupling_add_forces),
  * contacts and lubrication recomputed at every substep. The fluid carries the
@@ -64,6 +68,7 @@
 #include "coupling/gf_coupling_restart.h"
 #include "coupling/gf_coupling_tier.h"
 #include "coupling/gf_ibm.h"
+#include "coupling/gf_ibm_markers.h"
 #include "coupling/gf_weight_balance.h"
 #include "fluid/gf_fluid.h"
 #include "fluid/gf_fluid_ns2.h"
@@ -90,6 +95,8 @@ typedef struct gf_resolved {
     gf_coupling_setup setup;
     gf_fluid *fluid;
     gf_ibm_map map;
+    gf_ibm_forcing forcing;  /* spec.fluid.ibm_forcing */
+    gf_ibm_markers markers;  /* its state when it is GF_IBM_MARKERS */
     double *A[3], *A_old[3], *r[3], *u_pred[3], *force[3], *alpha_sum[3], *aU[3];
     double *fields[RF_N];
     int first_step;
@@ -99,6 +106,9 @@ typedef struct gf_resolved {
     int64_t *held_id;
     double *held_F, *held_T;
     double *sub_F, *sub_T;   /* a later substep's force and torque, before they are added to held_F, held_T */
+    double *P0, *L0, *P1, *L1; /* markers: each grain's internal momentum and angular momentum, before and after */
+    double *P_last, *L_last;   /* markers: P1, L1 of the last fluid step, in held_id's order */
+    int last_known;            /* P_last, L_last hold the last step's (0: the first step, or an older checkpoint) */
     size_t n_held, cap_held;
     uint64_t held_epoch;
     int held_epoch_known;
@@ -117,9 +127,14 @@ static double d_over_dx(const gf_run_spec *spec)
 
 /* --- checks -------------------------------------------------------------------------------------- */
 
-/* The time scheme and the advection form named in the spec (fluid/gf_fluid_ns2.h). */
-static gf_status numerics(gf_ctx *ctx, const gf_fluid_spec *fs, gf_ns2_scheme *scheme, gf_ns2_advection *form)
+/* The time scheme, the advection form (fluid/gf_fluid_ns2.h) and the forcing (coupling/gf_ibm_markers.h) named
+ * in the spec. */
+static gf_status numerics(gf_ctx *ctx, const gf_fluid_spec *fs, gf_ns2_scheme *scheme, gf_ns2_advection *form,
+                          gf_ibm_forcing *forcing)
 {
+    if (gf_ibm_forcing_from_name(fs->ibm_forcing, forcing) != 0)
+        return GF_FAIL(ctx, GF_ERR_CONFIG, "fluid.ibm_forcing = \"%s\": the resolved tier has the \"smoothed\" and "
+                       "\"markers\" forcings", fs->ibm_forcing);
     if (gf_fluid_ns2_scheme_from_name(fs->time_scheme, scheme) != 0)
         return GF_FAIL(ctx, GF_ERR_CONFIG, "fluid.time_scheme = \"%s\": the resolved tier runs \"ab2\" or \"rk3\"",
                        fs->time_scheme);
@@ -151,7 +166,8 @@ static gf_status resolved_check(gf_ctx *ctx, const gf_run_spec *spec)
         return GF_FAIL(ctx, GF_ERR_CONFIG, "fluid.cfl = %g must be in (0, 1]", fs->cfl);
     gf_ns2_scheme scheme;
     gf_ns2_advection form;
-    GF_TRY(numerics(ctx, fs, &scheme, &form));
+    gf_ibm_forcing forcing;
+    GF_TRY(numerics(ctx, fs, &scheme, &form, &forcing));
     /* the fluid step is a whole number (>= 1) of DEM steps: a DEM step beyond the fluid's limits would
      * force a fluid step that breaks them */
     double D = spec->grains.diameter_m, h = D / n, nu = fs->viscosity_Pa_s / fs->density_kg_m3;
@@ -216,6 +232,7 @@ static void resolved_destroy(gf_coupling *cc)
         return;
     gf_fluid_destroy(&c->fluid);
     gf_ibm_free(&c->map);
+    gf_ibm_markers_free(&c->markers);
     for (int a = 0; a < 3; ++a) {
         free(c->A[a]), free(c->A_old[a]), free(c->r[a]), free(c->u_pred[a]);
         free(c->force[a]), free(c->alpha_sum[a]), free(c->aU[a]);
@@ -223,6 +240,7 @@ static void resolved_destroy(gf_coupling *cc)
     for (int v = 0; v < RF_N; ++v)
         free(c->fields[v]);
     free(c->held_id), free(c->held_F), free(c->held_T), free(c->sub_F), free(c->sub_T);
+    free(c->P0), free(c->L0), free(c->P1), free(c->L1), free(c->P_last), free(c->L_last);
     free(c);
 }
 
@@ -233,7 +251,8 @@ static gf_status resolved_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_
     gf_fluid_params fp;
     gf_ns2_scheme scheme;
     gf_ns2_advection form;
-    GF_TRY(numerics(ctx, &spec->fluid, &scheme, &form));
+    gf_ibm_forcing forcing;
+    GF_TRY(numerics(ctx, &spec->fluid, &scheme, &form, &forcing));
     GF_TRY(grid_params(ctx, spec, setup, &fp));
     gf_resolved *c = calloc(1, sizeof *c);
     if (!c)
@@ -244,7 +263,10 @@ static gf_status resolved_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_
     c->first_step = 1;
     c->n_threads = 1;
     c->scheme = scheme, c->advection = form;
-    c->map.retraction_cells = spec->fluid.ibm_retraction_dx;
+    c->forcing = forcing;
+    /* markers: the retraction moves the markers; the fraction (internal momentum, fields) stays on R */
+    c->map.retraction_cells = forcing == GF_IBM_MARKERS ? 0.0 : spec->fluid.ibm_retraction_dx;
+    c->markers.retraction_cells = spec->fluid.ibm_retraction_dx;
     gf_status st = gf_fluid_create(ctx, &fp, &c->fluid);
     if (st != GF_OK) {
         free(c);
@@ -357,6 +379,8 @@ static gf_status reserve_held(gf_resolved *c, size_t n)
     ok &= grow(&c->held_T, 3 * cap);
     ok &= grow(&c->sub_F, 3 * cap);
     ok &= grow(&c->sub_T, 3 * cap);
+    ok &= grow(&c->P0, 3 * cap) && grow(&c->L0, 3 * cap) && grow(&c->P1, 3 * cap) && grow(&c->L1, 3 * cap);
+    ok &= grow(&c->P_last, 3 * cap) && grow(&c->L_last, 3 * cap);
     if (!ok)
         return GF_FAIL(c->ctx, GF_ERR_NOMEM, "resolved tier: out of memory for %zu grains", n);
     c->cap_held = cap;
@@ -399,12 +423,63 @@ static gf_status fluid_substep(gf_resolved *c, const gf_particles *p, const gf_n
     const double *const r[3] = {c->r[0], c->r[1], c->r[2]};
     gf_fluid_ns2_predict(f, r, dt_s, c->u_pred);
     const double *const up[3] = {c->u_pred[0], c->u_pred[1], c->u_pred[2]};
-    gf_ibm_force(&c->map, &f->grid, p, up, dt_s, f->rho_kg_m3, c->force, c->alpha_sum, c->aU, F, T);
+    if (c->forcing == GF_IBM_MARKERS)
+        GF_TRY(gf_ibm_markers_force(c->ctx, &c->markers, &f->grid, p, up, dt_s, f->rho_kg_m3, c->aU, c->force, F, T));
+    else
+        gf_ibm_force(&c->map, &f->grid, p, up, dt_s, f->rho_kg_m3, c->force, c->alpha_sum, c->aU, F, T);
     const double *const force[3] = {c->force[0], c->force[1], c->force[2]};
     GF_TRY(gf_fluid_ns2_viscous(c->ctx, f, s, r, force, dt_s));
     GF_TRY(gf_fluid_ns2_project(c->ctx, f, w * dt_s));
     gf_fluid_ns2_rotate(c->A, c->A_old);
     return GF_OK;
+}
+
+/* Index of grain i among the last fluid step's grains (held_id), -1 when it was not there. */
+static long last_index(const gf_resolved *c, const gf_particles *p, size_t i)
+{
+    if (c->held_epoch_known && c->held_epoch == p->order_epoch && c->n_held == p->n_local)
+        return (long)i;
+    for (size_t h = 0; h < c->n_held; ++h)
+        if (c->held_id[h] == p->id[i])
+            return (long)h;
+    return -1;
+}
+
+/* Markers (coupling/gf_ibm_markers.h): the fraction for the fields, and each grain's internal momentum at the
+ * start of the step: over the volume it occupied during the last step, int alpha_i(x - x_i^{n-1}) u^n dV, the
+ * last step's closing value, so that the rate follows the moving grain (Breugem 2012); over its present volume
+ * at the first step. */
+static void begin_internal_momentum(gf_resolved *c, const gf_particles *p)
+{
+    const gf_grid *g = &c->fluid->grid;
+    gf_ibm_fraction(&c->map, g, c->alpha_sum);
+    const double *const u[3] = {c->fluid->u[0], c->fluid->u[1], c->fluid->u[2]};
+    gf_ibm_momentum(&c->map, g, p, u, c->P0, c->L0);
+    for (size_t i = 0; c->last_known && i < p->n_local; ++i) {
+        long h = last_index(c, p, i);
+        for (int d = 0; h >= 0 && d < 3; ++d)
+            c->P0[3 * i + d] = c->P_last[3 * h + d], c->L0[3 * i + d] = c->L_last[3 * h + d];
+    }
+}
+
+/* The rest of the markers' force and torque: rho d/dt int_{V_i(t)} u dV - rho V_i g, and rho d/dt int r x u dV,
+ * the rates over the step; the closing values kept for the next step. */
+static void add_internal_momentum(gf_resolved *c, const gf_particles *p, double dt_s)
+{
+    const gf_grid *g = &c->fluid->grid;
+    const double rho = c->fluid->rho_kg_m3, *grav = c->setup.gravity_m_s2;
+    const double *const u[3] = {c->fluid->u[0], c->fluid->u[1], c->fluid->u[2]};
+    gf_ibm_momentum(&c->map, g, p, u, c->P1, c->L1);
+    for (size_t i = 0; i < p->n_local; ++i) {
+        double R = p->radius_m[i], V = 4.0 / 3.0 * M_PI * R * R * R;
+        for (int d = 0; d < 3; ++d) {
+            c->held_F[3 * i + d] += rho * (c->P1[3 * i + d] - c->P0[3 * i + d]) / dt_s - rho * V * grav[d];
+            c->held_T[3 * i + d] += rho * (c->L1[3 * i + d] - c->L0[3 * i + d]) / dt_s;
+        }
+    }
+    memcpy(c->P_last, c->P1, 3 * p->n_local * sizeof(double));
+    memcpy(c->L_last, c->L1, 3 * p->n_local * sizeof(double));
+    c->last_known = 1;
 }
 
 /* The step's substeps; the grains' held force and torque are the sum of the substeps' (each substep forces
@@ -419,6 +494,8 @@ static gf_status resolved_fluid_step(gf_coupling *cc, const gf_particles *p, dou
     GF_TRY(reserve_held(c, p->n_local));
     double b[3];
     mean_pressure_gradient(c, p, b);
+    if (c->forcing == GF_IBM_MARKERS)
+        begin_internal_momentum(c, p);
     const gf_ns2_substep *sub;
     int n_sub = gf_fluid_ns2_substeps(c->scheme, &sub);
     for (int k = 0; k < n_sub; ++k) {
@@ -428,6 +505,8 @@ static gf_status resolved_fluid_step(gf_coupling *cc, const gf_particles *p, dou
         for (size_t q = 0; k > 0 && q < 3 * p->n_local; ++q)
             c->held_F[q] += c->sub_F[q], c->held_T[q] += c->sub_T[q];
     }
+    if (c->forcing == GF_IBM_MARKERS)
+        add_internal_momentum(c, p, dt_s);
     for (size_t i = 0; i < p->n_local; ++i)
         c->held_id[i] = p->id[i];
     c->n_held = p->n_local;
@@ -562,6 +641,7 @@ static void resolved_set_threads(gf_coupling *cc, int n_threads)
     }
     c->n_threads = n;
     c->map.n_threads = n;
+    c->markers.n_threads = n;
 }
 
 static double resolved_fluid_mass(const gf_coupling *cc)
@@ -618,6 +698,11 @@ static gf_status resolved_save(const gf_coupling *cc, gf_restart *r)
     GF_TRY(gf_coupling_put_arrays(r, list, GRID_ARRAYS));
     GF_TRY(gf_restart_put_i64(r, "resolved_held_id", c->n_held, c->held_id));
     GF_TRY(gf_restart_put_f64(r, "resolved_held_F", 3 * c->n_held, c->held_F));
+    if (c->forcing == GF_IBM_MARKERS && c->last_known) { /* the markers' last internal momenta (the smoothed
+                                                             forcing's checkpoint stays as it was) */
+        GF_TRY(gf_restart_put_f64(r, "resolved_last_P", 3 * c->n_held, c->P_last));
+        GF_TRY(gf_restart_put_f64(r, "resolved_last_L", 3 * c->n_held, c->L_last));
+    }
     return gf_restart_put_f64(r, "resolved_held_T", 3 * c->n_held, c->held_T);
 }
 
@@ -639,6 +724,11 @@ static gf_status resolved_load(gf_coupling *cc, gf_restart *r)
     GF_TRY(gf_restart_get_i64(r, "resolved_held_id", n, c->held_id));
     GF_TRY(gf_restart_get_f64(r, "resolved_held_F", 3 * n, c->held_F));
     GF_TRY(gf_restart_get_f64(r, "resolved_held_T", 3 * n, c->held_T));
+    c->last_known = c->forcing == GF_IBM_MARKERS && gf_restart_has(r, "resolved_last_P");
+    if (c->last_known) {
+        GF_TRY(gf_restart_get_f64(r, "resolved_last_P", 3 * n, c->P_last));
+        GF_TRY(gf_restart_get_f64(r, "resolved_last_L", 3 * n, c->L_last));
+    }
     c->n_held = n;
     c->held_epoch_known = 0; /* matched by id at the first substep */
     c->first_step = (int)counts[3];

@@ -61,9 +61,7 @@ static gf_status push(gf_ibm_grain *s, int a, const gf_ibm_entry *e)
     return GF_OK;
 }
 
-/* Face index m of component a along axis d mapped into the grid (wrap on periodic axes), -1 when it is not an
- * unknown (outside, or a wall face). */
-static int face_index(const gf_grid *g, int a, int d, int m)
+int gf_ibm_face_index(const gf_grid *g, int a, int d, int m)
 {
     if (g->periodic[d]) {
         int n = g->n[d];
@@ -122,17 +120,17 @@ static gf_status map_grain(gf_ibm_grain *s, const gf_grid *g, int a, const doubl
     }
     s->n_e[a] = 0;
     for (int k = m0[2]; k <= m1[2]; ++k) {
-        int kk = face_index(g, a, 2, k);
+        int kk = gf_ibm_face_index(g, a, 2, k);
         if (kk < 0)
             continue;
         double rz = face_offset(g, a, 2, k, xc[2]);
         for (int j = m0[1]; j <= m1[1]; ++j) {
-            int jj = face_index(g, a, 1, j);
+            int jj = gf_ibm_face_index(g, a, 1, j);
             double ry = face_offset(g, a, 1, j, xc[1]);
             if (jj < 0 || ry * ry + rz * rz > reach2)
                 continue;
             for (int i = m0[0]; i <= m1[0]; ++i) {
-                int ii = face_index(g, a, 0, i);
+                int ii = gf_ibm_face_index(g, a, 0, i);
                 if (ii < 0)
                     continue;
                 const double r_m[3] = {face_offset(g, a, 0, i, xc[0]), ry, rz};
@@ -213,20 +211,23 @@ static double rigid_velocity(const gf_particles *p, size_t i, int a, const doubl
     return v[a] + w[b] * r[c] - w[c] * r[b];
 }
 
-/* sum_i alpha_i and sum_i alpha_i U_i of component a, scattered in grain order. */
+/* sum_i alpha_i and (aU not NULL) sum_i alpha_i U_i of component a, scattered in grain order. */
 static void scatter_component(const gf_ibm_map *m, const gf_grid *g, const gf_particles *p, int a, double *alpha_sum,
                               double *aU)
 {
     memset(alpha_sum, 0, g->n_faces[a] * sizeof(double));
-    memset(aU, 0, g->n_faces[a] * sizeof(double));
+    if (aU)
+        memset(aU, 0, g->n_faces[a] * sizeof(double));
     for (size_t i = 0; i < m->n_grains; ++i) {
         const gf_ibm_grain *s = &m->grain[i];
         for (size_t q = 0; q < s->n_e[a]; ++q) {
             const gf_ibm_entry *e = &s->e[a][q];
-            double r_m[3];
-            entry_offset(g, a, e, s->key, r_m);
             alpha_sum[e->face] += e->alpha;
-            aU[e->face] += e->alpha * rigid_velocity(p, i, a, r_m);
+            if (aU) {
+                double r_m[3];
+                entry_offset(g, a, e, s->key, r_m);
+                aU[e->face] += e->alpha * rigid_velocity(p, i, a, r_m);
+            }
         }
     }
 }
@@ -244,6 +245,28 @@ static void forcing_component(const gf_grid *g, int a, const double *u_pred, con
     gf_grid_sync_periodic(g, a, force_out);
 }
 
+/* F = sum alpha_i (U_i - u) and T = sum r x alpha_i (U_i - u) over grain i's own entries; U_i taken as 0 when
+ * rigid is 0 (then F and T are minus the alpha-weighted momentum and angular momentum of u, per unit volume). */
+static void entry_moments(const gf_ibm_map *m, const gf_grid *g, const gf_particles *p, size_t i,
+                          const double *const u[3], int rigid, double F[3], double T[3])
+{
+    for (int d = 0; d < 3; ++d)
+        F[d] = T[d] = 0.0;
+    for (int a = 0; a < 3; ++a) {
+        int b = (a + 1) % 3, c = (a + 2) % 3;
+        const gf_ibm_grain *s = &m->grain[i];
+        for (size_t q = 0; q < s->n_e[a]; ++q) {
+            const gf_ibm_entry *e = &s->e[a][q];
+            double r_m[3];
+            entry_offset(g, a, e, s->key, r_m);
+            double fa = e->alpha * ((rigid ? rigid_velocity(p, i, a, r_m) : 0.0) - u[a][e->face]);
+            F[a] += fa;
+            T[b] += r_m[c] * fa; /* r x (f_a e_a) = f_a (r_c e_b - r_b e_c), (a, b, c) cyclic */
+            T[c] -= r_m[b] * fa;
+        }
+    }
+}
+
 /* Grain i's force and torque from the integral over its own alpha_i (Izard 2014 eqs. (2.32)-(2.33)). */
 static void grain_integrals(const gf_ibm_map *m, const gf_grid *g, const gf_particles *p, size_t i,
                             const double *const u_pred[3], double dt_s, double rho_f, double *F_N, double *T_Nm)
@@ -252,20 +275,8 @@ static void grain_integrals(const gf_ibm_map *m, const gf_grid *g, const gf_part
     double R = p->radius_m[i];
     double rho_p = p->mass_kg[i] / (4.0 / 3.0 * M_PI * R * R * R);
     double factor = -rho_f * rho_p / (rho_p - rho_f) * dV / dt_s;
-    double F[3] = {0, 0, 0}, T[3] = {0, 0, 0};
-    for (int a = 0; a < 3; ++a) {
-        int b = (a + 1) % 3, c = (a + 2) % 3;
-        const gf_ibm_grain *s = &m->grain[i];
-        for (size_t q = 0; q < s->n_e[a]; ++q) {
-            const gf_ibm_entry *e = &s->e[a][q];
-            double r_m[3];
-            entry_offset(g, a, e, s->key, r_m);
-            double fa = e->alpha * (rigid_velocity(p, i, a, r_m) - u_pred[a][e->face]);
-            F[a] += fa;
-            T[b] += r_m[c] * fa; /* r x (f_a e_a) = f_a (r_c e_b - r_b e_c), (a, b, c) cyclic */
-            T[c] -= r_m[b] * fa;
-        }
-    }
+    double F[3], T[3];
+    entry_moments(m, g, p, i, u_pred, 1, F, T);
     for (int d = 0; d < 3; ++d) {
         F_N[3 * i + d] = factor * F[d];
         T_Nm[3 * i + d] = factor * T[d];
@@ -288,6 +299,31 @@ void gf_ibm_force(const gf_ibm_map *m, const gf_grid *g, const gf_particles *p, 
 #pragma omp parallel for num_threads(nt) if (nt > 1 && n > 1) schedule(static)
     for (long i = 0; i < n; ++i)
         grain_integrals(m, g, p, (size_t)i, u_pred, dt_s, rho_f, F_N, T_Nm);
+}
+
+void gf_ibm_fraction(const gf_ibm_map *m, const gf_grid *g, double *const alpha_sum[3])
+{
+    const int nc = component_threads(m);
+#pragma omp parallel for num_threads(nc) if (nc > 1) schedule(static, 1)
+    for (int a = 0; a < 3; ++a)
+        scatter_component(m, g, NULL, a, alpha_sum[a], NULL);
+    for (int a = 0; a < 3; ++a)
+        gf_grid_sync_periodic(g, a, alpha_sum[a]);
+}
+
+void gf_ibm_momentum(const gf_ibm_map *m, const gf_grid *g, const gf_particles *p, const double *const u[3],
+                     double *P, double *L)
+{
+    const double dV = g->h_m[0] * g->h_m[1] * g->h_m[2];
+    const int nt = face_threads(m);
+    const long n = (long)m->n_grains;
+#pragma omp parallel for num_threads(nt) if (nt > 1 && n > 1) schedule(static)
+    for (long i = 0; i < n; ++i) {
+        double F[3], T[3];
+        entry_moments(m, g, p, (size_t)i, u, 0, F, T);
+        for (int d = 0; d < 3; ++d)
+            P[3 * i + d] = -dV * F[d], L[3 * i + d] = -dV * T[d];
+    }
 }
 
 void gf_ibm_cell_fraction(const gf_grid *g, const double *const alpha_sum[3], int n_threads, double *alpha_cell)

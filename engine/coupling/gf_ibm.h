@@ -115,6 +115,16 @@ void gf_ibm_force(const gf_ibm_map *m, const gf_grid *g, const gf_particles *p, 
                   double dt_s, double rho_f, double *const force_out[3], double *const alpha_sum[3],
                   double *const aU[3], double *F_N, double *T_Nm);
 
+/* sum_i alpha_i per face (alpha_sum: face arrays), grains in order, one component per thread. */
+void gf_ibm_fraction(const gf_ibm_map *m, const gf_grid *g, double *const alpha_sum[3]);
+/* Each grain's fluid momentum int alpha_i u dV (P, kg/m3 omitted: m^4/s) and angular momentum about its centre
+ * int alpha_i r x u dV (L), n_local x 3 each, over its own entries (the internal momentum of gf_ibm_markers.h). */
+void gf_ibm_momentum(const gf_ibm_map *m, const gf_grid *g, const gf_particles *p, const double *const u[3],
+                     double *P, double *L);
+/* Face index m of component a along axis d mapped into the grid (wrapped on periodic axes), -1 when it is not
+ * an unknown (outside the grid, or a wall's normal face). */
+int gf_ibm_face_index(const gf_grid *g, int a, int d, int m);
+
 /* alpha = min(1, sum_i alpha_i) at cell centres (mean of the six faces), for fields.nc; on n_threads threads. */
 void gf_ibm_cell_fraction(const gf_grid *g, const double *const alpha_sum[3], int n_threads, double *alpha_cell);
 

@@ -17,6 +17,7 @@
 
 #include "contact/gf_contact.h"
 #include "coupling/gf_drag.h"
+#include "coupling/gf_ibm_markers.h"
 #include "fluid/gf_fluid_ns2.h"
 #include "scenes/gf_scene.h"
 
@@ -71,11 +72,13 @@ static const gf_spec_field fields[] = {
       "no lubrication while surfaces overlap (1), or the gap clamped at 0 (0: constant damping in contact)"),
     D("fluid", "d_over_dx", fluid.d_over_dx, 0, 64.0, 0, "1", "resolved tier: grid cells per diameter D/dx (8-20; 0: 16)"),
     D("fluid", "ibm_retraction_dx", fluid.ibm_retraction_dx, 0, 1.0, 0, "1",
-      "resolved tier: solid-fraction profile centred on R minus this many cells (Breugem 2012; 0: on R)"),
+      "resolved tier: solid-fraction profile (or markers) centred on R minus this many cells (Breugem 2012; 0: on R)"),
     N("fluid", "time_scheme", fluid.time_scheme, gf_ns2_scheme_names,
       "resolved tier: ab2 (Adams-Bashforth 2) or rk3 (three-substep Runge-Kutta), Crank-Nicolson viscosity"),
     N("fluid", "advection", fluid.advection, gf_ns2_advection_names,
       "resolved tier: advective (u.grad)u or divergence div(uu), the energy-conserving form"),
+    N("fluid", "ibm_forcing", fluid.ibm_forcing, gf_ibm_forcing_names,
+      "resolved tier: smoothed (solid fraction, Izard 2014) or markers (surface markers, Uhlmann 2005)"),
     D("output", "interval_nd", output.interval_nd, 0, 1e7, 1, "1", "output interval in sqrt(D/g)"),
     B("output", "particles", output.particles, "write particles.nc"),
     B("output", "fields", output.fields, "write fields.nc"),

@@ -73,6 +73,8 @@ size_t gf_spec_text(const gf_run_spec *spec, char *buf, size_t n)
                     continue;
                 if (strcmp(f[i].key, "ibm_retraction_dx") == 0 && spec->fluid.ibm_retraction_dx == 0.0)
                     continue;
+                if (strcmp(f[i].key, "ibm_forcing") == 0 && strcmp(spec->fluid.ibm_forcing, "smoothed") == 0)
+                    continue;
                 /* the resolved tier's numerics only where it runs: its runs before the keys existed used
                  * another advection form, so their ids change with them, and no other run's does */
                 if ((strcmp(f[i].key, "time_scheme") == 0 || strcmp(f[i].key, "advection") == 0) &&

@@ -24,7 +24,7 @@
  *     dx=12: the D/dx = 8 grain is too fast at low Re), and the ratio of the
  *     two boxes, where that grid error largely cancels, within 3 % (+1.6 %).
  *     Arguments dx, retract, box0, box1 change the grid, the forcing radius's
- *     retraction and the cubes.
+ *     retraction and the cubes; ibm=markers the forcing (fluid.ibm_forcing).
  *
  * check=hindered (`slow`): the hindered settling of a random suspension (the
  * scene's arrangement 1; random=0 the jittered lattice) at phi = 0.05, 0.1,
@@ -50,6 +50,7 @@
 
 static const double D = GF_TEST_SUSP_D_M, RHO = GF_TEST_SUSP_RHO, RATIO = GF_TEST_SUSP_RATIO, G = GF_TEST_SUSP_G;
 static double D_OVER_DX = 8.0, RETRACT = 0.0;
+static char IBM[16] = "smoothed"; /* fluid.ibm_forcing */
 static int RANDOM = 0; /* the scene's arrangement: 0 jittered lattice, 1 random (check=hindered's default) */
 
 typedef struct run_case {
@@ -72,7 +73,7 @@ static gf_status make_sim(gf_ctx *ctx, const run_case *rc, gf_sim **sim)
 {
     const gf_test_suspension su = {.model = rc->model, .drag = rc->drag, .mode = rc->mode, .arrangement = RANDOM,
                                    .box = rc->box, .phi = rc->phi, .ar = rc->ar, .d_over_dx = D_OVER_DX,
-                                   .retract = RETRACT};
+                                   .retract = RETRACT, .ibm_forcing = IBM};
     gf_run_spec spec;
     GF_TRY(gf_test_suspension_spec(ctx, &su, rc->t_end, &spec));
     gf_sim_options opt = {.n_threads = 1};
@@ -239,7 +240,8 @@ int main(int argc, char **argv)
                                 {.key = "retract", .number = &RETRACT}, {.key = "box0", .number = &box0},
                                 {.key = "box1", .number = &box1}, {.key = "phi", .number = &phi_one},
                                 {.key = "box", .number = &box_one}, {.key = "resolved_only", .integer = &resolved_only},
-                                {.key = "random", .integer = &RANDOM}, {.key = "ar", .number = &ar}};
+                                {.key = "random", .integer = &RANDOM}, {.key = "ar", .number = &ar},
+                                {.key = "ibm", .text = IBM, .text_size = sizeof IBM}};
     gf_test_parse_args(argc, argv, keys, sizeof keys / sizeof keys[0]);
     int hindered = strcmp(check, "hindered") == 0;
     if (RANDOM < 0)

@@ -4,8 +4,9 @@
  *   D/dx < 6 (the solid fraction's shell is ~3 cells), rho_p/rho < 1.7 (the
  *   force formula of Izard 2014 eq. (2.32) is singular at 1), and a DEM step
  *   longer than the fluid step's viscous limit nu dt/dx^2 <= 1 (the fluid step
- *   is a whole number of DEM steps); an unknown fluid.time_scheme or
- *   fluid.advection names the ones there are. A good file loads.
+ *   is a whole number of DEM steps); an unknown fluid.time_scheme,
+ *   fluid.advection or fluid.ibm_forcing names the ones there are. A good
+ *   file loads.
  */
 #include <stdio.h>
 #include <string.h>
@@ -49,6 +50,8 @@ int main(void)
     expect(SPHERE "  time_scheme: rk3\n  advection: divergence\n", GF_OK, "", "");
     expect(SPHERE "  time_scheme: rk4\n", GF_ERR_CONFIG, "t.yaml:9:16:", "rk3");
     expect(SPHERE "  advection: upwind\n", GF_ERR_CONFIG, "t.yaml:9:14:", "divergence");
+    expect(SPHERE "  ibm_forcing: markers\n", GF_OK, "", "");
+    expect(SPHERE "  ibm_forcing: lagrangian\n", GF_ERR_CONFIG, "t.yaml:9:16:", "markers");
     expect(SPHERE "  d_over_dx: 40\ncontact:\n  t_contact_nd: 0.9\n", GF_ERR_NUMERIC,
            "t.yaml:11:17: contact.dt_over_tc", "viscous limit nu dt/dx^2 <= 1");
     return gf_test_finish();

@@ -29,6 +29,7 @@ typedef struct gf_test_suspension {
     double box, phi, ar;       /* box_over_D, phi_suspension, Archimedes number */
     double d_over_dx, retract; /* resolved tier: D/dx, fluid.ibm_retraction_dx */
     double cell_over_D;        /* unresolved tier: the fluid cell / D (0: a third of the box) */
+    const char *ibm_forcing;   /* resolved tier: fluid.ibm_forcing (NULL: its default) */
 } gf_test_suspension;
 
 /* Dynamic viscosity (Pa s) at Archimedes number ar. */
@@ -53,6 +54,8 @@ static inline gf_status gf_test_suspension_spec(gf_ctx *ctx, const gf_test_suspe
     spec->fluid.viscosity_Pa_s = gf_test_suspension_viscosity(s->ar);
     spec->fluid.d_over_dx = s->d_over_dx;
     spec->fluid.ibm_retraction_dx = s->retract;
+    if (s->ibm_forcing)
+        snprintf(spec->fluid.ibm_forcing, sizeof spec->fluid.ibm_forcing, "%s", s->ibm_forcing);
     spec->fluid.cfl = 0.3;
     spec->contact.t_contact_nd = 0.05;
     spec->end_time_nd = t_end_nd;
