@@ -23,7 +23,8 @@ enum {
     BENCH_KNOB_SKIN = 1u << 1,
     BENCH_KNOB_TC = 1u << 2,
     BENCH_KNOB_CELL = 1u << 3,
-    BENCH_KNOB_RETRACT = 1u << 4 /* resolved tier: fluid.ibm_retraction_dx */
+    BENCH_KNOB_RETRACT = 1u << 4, /* resolved tier: fluid.ibm_retraction_dx */
+    BENCH_KNOB_FLUID_CFL = 1u << 5 /* resolved tier: fluid.cfl, the fluid step's advective bound */
 };
 
 /* Defaults of the knobs a case does not sweep: the run-spec defaults. */
@@ -32,10 +33,12 @@ enum {
 #define BENCH_DEFAULT_TC_ND 1e-2
 #define BENCH_DEFAULT_CELL_OVER_D 2.0
 #define BENCH_DEFAULT_RETRACT_DX 0.0
+#define BENCH_DEFAULT_FLUID_CFL 0.3
 
 typedef struct bench_knobs {
     double dt_over_tc, skin_over_D, t_contact_nd, cell_over_D;
     double retract_dx; /* resolved tier: the solid fraction's profile centred on R - retract_dx dx */
+    double fluid_cfl;  /* resolved tier: fluid.cfl */
 } bench_knobs;
 
 typedef struct bench_result {
@@ -66,6 +69,8 @@ typedef struct bench_case {
                                    2 the tier by the cell: below one D, resolved at D/dx, else unresolved */
     const double *retract_list; /* the case's fluid.ibm_retraction_dx values (BENCH_KNOB_RETRACT) */
     int n_retract;
+    const double *cfl_list;     /* the case's fluid.cfl values (BENCH_KNOB_FLUID_CFL) */
+    int n_cfl;
 } bench_case;
 
 const bench_case *bench_cases(int *n);
@@ -93,6 +98,10 @@ gf_status bench_settling_sphere_spec(gf_ctx *ctx, double box_over_D, double heig
 extern const double bench_tiers_cells[], bench_tiers_unresolved_cells[];
 gf_status bench_tiers_measure(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out);
 gf_status bench_tiers_measure_tenneti(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out);
+/* settling_terminal_step[_markers] (bench_tiers.c): the resolved sphere at D/dx 8 against the fluid step */
+extern const double bench_step_cfl[];
+gf_status bench_step_measure_smoothed(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out);
+gf_status bench_step_measure_markers(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out);
 
 /* hindered_settling_tiers (bench_suspension.c): a random suspension at phi 0.1, Ar 20, unresolved and resolved tiers */
 extern const double bench_suspension_cells[];

@@ -69,6 +69,11 @@
  *                   tier's default closure (di_felice). Its twin
  *                   settling_terminal_tenneti: the unresolved cells with the
  *                   closure tenneti (isolated limit Schiller-Naumann).
+ *  settling_terminal_step, settling_terminal_step_markers (bench_tiers.c)
+ *                   the resolved sphere at D/dx 8 in a 4 D x 12 D box to
+ *                   8 sqrt(D/g), u_T against Schiller-Naumann, knob: the
+ *                   fluid step fluid.cfl in {0.3, 0.15, 0.075}, with the
+ *                   smoothed forcing (r_d 0) or the surface markers (r_d 0.3).
  *  hindered_settling_tiers (bench_suspension.c) a random suspension, phi
  *                   0.1, 41 grains in a 6 D periodic cube, rho_p/rho 2,
  *                   Ar 20: U/U_T against Richardson & Zaki (1954),
@@ -451,7 +456,8 @@ static int imm_is_reference(const bench_knobs *k)
 
 static gf_status immersed_reference(gf_ctx *ctx)
 {
-    const bench_knobs fine = {1.0 / 50, BENCH_DEFAULT_SKIN_OVER_D, BENCH_DEFAULT_TC_ND, 1.0, BENCH_DEFAULT_RETRACT_DX};
+    const bench_knobs fine = {1.0 / 50, BENCH_DEFAULT_SKIN_OVER_D, BENCH_DEFAULT_TC_ND, 1.0, BENCH_DEFAULT_RETRACT_DX,
+                              BENCH_DEFAULT_FLUID_CFL};
     double sum = 0.0, sum2 = 0.0;
     for (int s = 0; s < IMM_SEEDS; ++s) {
         GF_TRY(immersed_run(ctx, &fine, (uint64_t)(s + 1), &imm_ref_runs[s]));
@@ -551,51 +557,59 @@ static gf_status measure_settling(gf_ctx *ctx, const bench_knobs *k, int full, b
 static const bench_case cases[] = {
     {"restitution", "restitution of a normal collision, clipped law, eps_max 0.5 (1)",
      "closed form of the clipped oscillator, 0.550 (Schaefer et al. 1996)", "worst |e/e_closed - 1| over onset phases (1)",
-     0.01, BENCH_KNOB_DT, 0, always, measure_restitution, NULL, NULL, 0, 0, NULL, NULL, 0, 0, 0, NULL, 0},
+     0.01, BENCH_KNOB_DT, 0, always, measure_restitution, NULL, NULL, 0, 0, NULL, NULL, 0, 0, 0, NULL, 0, NULL, 0},
     {"contact_duration", "overlap duration / t_c, unclipped law, eps 0.87 (1)", "t_c exactly (Izard (3.17))",
-     "worst |T/t_c - 1| over onset phases (1)", 0.03, BENCH_KNOB_DT, 0, always, measure_duration, NULL, NULL, 0, 0, NULL, NULL, 0, 0, 0, NULL, 0},
+     "worst |T/t_c - 1| over onset phases (1)", 0.03, BENCH_KNOB_DT, 0, always, measure_duration, NULL, NULL, 0, 0, NULL, NULL, 0, 0, 0, NULL, 0, NULL, 0},
     {"gas_energy", "max relative energy error, elastic frictionless gas (1)", "0 (energy conserved by the ODE)",
-     "max |E/E0 - 1| (1)", 1e-3, BENCH_KNOB_DT | BENCH_KNOB_SKIN, 0, always, measure_gas, NULL, NULL, 0, 0, NULL, NULL, 0, 0, 0, NULL, 0},
+     "max |E/E0 - 1| (1)", 1e-3, BENCH_KNOB_DT | BENCH_KNOB_SKIN, 0, always, measure_gas, NULL, NULL, 0, 0, NULL, NULL, 0, 0, 0, NULL, 0, NULL, 0},
     {"collapse_runout", "final front position / D, dry collapse R0 = 8 D, a = 0.5 (1)",
      "finest run: dt = t_c/200, t_c sqrt(g/D) = 5e-3, mean of 3 seeds", "|R/R_finest - 1| (1)", 0.10, BENCH_KNOB_DT | BENCH_KNOB_TC,
-     1, collapse_available, measure_collapse, NULL, NULL, 0, 0, NULL, NULL, 0, 0, 0, NULL, 0},
+     1, collapse_available, measure_collapse, NULL, NULL, 0, 0, NULL, NULL, 0, 0, 0, NULL, 0, NULL, 0},
     {"hindered_settling", "settling velocity / Stokes velocity, suspension phi = 0.2, Re_t = 0.05 (1)",
      "Richardson & Zaki 1954: (1 - phi)^4.65", "|U/U_RZ - 1| (1)", 0.10, BENCH_KNOB_DT | BENCH_KNOB_CELL, 0,
-     settling_available, measure_settling, NULL, NULL, 0, 0, NULL, NULL, 0, 0, 0, NULL, 0},
+     settling_available, measure_settling, NULL, NULL, 0, 0, NULL, NULL, 0, 0, 0, NULL, 0, NULL, 0},
     {"fluid_cell_order", "rms velocity error / U F(t), Taylor-Green vortex Re 10, t = 1/(U k) (1)",
      "exact decay exp(-2 nu k^2 t) (Taylor & Green 1937)", "rms |u - u_exact| / (U F) (1)", 0.05, BENCH_KNOB_CELL, 0,
-     always, measure_fluid_tgv, NULL, fluid_cell_list, 0, 4, NULL, NULL, 0, 0, 0, NULL, 0},
+     always, measure_fluid_tgv, NULL, fluid_cell_list, 0, 4, NULL, NULL, 0, 0, 0, NULL, 0, NULL, 0},
     {"fluid_wall_order", "rms velocity error / u_max, start-up plane Poiseuille, t = 0.1 L^2/nu (1)",
      "exact series solution (gf_fluid_exact.h)", "rms |u - u_exact| / u_max (1)", 0.05, BENCH_KNOB_CELL, 0, always,
-     measure_fluid_poiseuille, NULL, fluid_cell_list, 0, 4, NULL, NULL, 0, 0, 0, NULL, 0},
+     measure_fluid_poiseuille, NULL, fluid_cell_list, 0, 4, NULL, NULL, 0, 0, 0, NULL, 0, NULL, 0},
     {"immersed_collapse", "run-out R_inf/R0, immersed dense collapse R0 = 16 D, a = 0.5, phi_i 0.60 (1)",
      "finest run: cell 1 D, dt = t_c/50, mean of 3 seeds", "|R_inf/R_ref - 1| (1)", 0.10,
      BENCH_KNOB_DT | BENCH_KNOB_CELL, 1, immersed_available, measure_immersed, imm_dt_list, imm_cell_list, 2, 4,
-     "dominant basal excess pressure at x = R0/2 / (drho g H0)", NULL, 0, 0, 0, NULL, 0},
+     "dominant basal excess pressure at x = R0/2 / (drho g H0)", NULL, 0, 0, 0, NULL, 0, NULL, 0},
     {"settling_sphere", "terminal velocity U/U_Stokes, single sphere Re_t = 0.01, periodic 60 D box (1)",
      "Stokes with Hasimoto's (1959) periodic correction, 1 - 1.7601 c^(1/3) + c", "|U/U_Hasimoto - 1| (1)", 0.03,
      BENCH_KNOB_CELL, 0, bench_sphere_available, bench_sphere_measure, NULL, bench_sphere_cells, 0, 4,
-     "drift of U over the last 20 % of the run (1)", NULL, 0, 0, 0, NULL, 0},
+     "drift of U over the last 20 % of the run (1)", NULL, 0, 0, 0, NULL, 0, NULL, 0},
     {"janssen_saturation", "saturation stress / (rho_e g D), Janssen column 6 D x 30 D, lower-half mean (1)",
      "finest run: dt = t_c/100, t_c sqrt(g/D) = 5e-3, same seed (packing)", "|sigma/sigma_finest - 1| (1)", 0.10,
      BENCH_KNOB_DT | BENCH_KNOB_TC, 1, bench_janssen_available, bench_janssen_measure, bench_janssen_dt, NULL, 3, 0,
-     "f_p K from the lambda fit (1)", bench_janssen_tc, 3, 0, 0, NULL, 0},
+     "f_p K from the lambda fit (1)", bench_janssen_tc, 3, 0, 0, NULL, 0, NULL, 0},
     {"resolved_early_acceleration", "early acceleration a/g, settling sphere rho_p/rho 4, Ar 800, resolved tier (1)",
      "added mass C_M = 1/2: (2/3) g (Izard 2014 eq. (2.34))", "|a/a_added_mass - 1| (1)", 0.05,
      BENCH_KNOB_CELL | BENCH_KNOB_RETRACT, 0, bench_resolved_available, bench_resolved_measure, NULL,
-     bench_resolved_cells, 0, 3, NULL, NULL, 0, 2, 1, bench_resolved_retract, 2},
+     bench_resolved_cells, 0, 3, NULL, NULL, 0, 2, 1, bench_resolved_retract, 2, NULL, 0},
     {"settling_terminal_tiers", "terminal velocity u_T/sqrt(gD), the same sphere in a 6 D x 16 D box, both tiers (1)",
      SETTLING_TERMINAL_REFERENCE,
      BENCH_KNOB_CELL, 0, bench_resolved_available, bench_tiers_measure, NULL, bench_tiers_cells, 0, 4,
-     SETTLING_TERMINAL_AUX, NULL, 0, 0, 2, NULL, 0},
+     SETTLING_TERMINAL_AUX, NULL, 0, 0, 2, NULL, 0, NULL, 0},
     {"settling_terminal_tenneti", "terminal velocity u_T/sqrt(gD), the same, unresolved tier, closure tenneti (1)",
      SETTLING_TERMINAL_REFERENCE,
      BENCH_KNOB_CELL, 0, bench_resolved_available, bench_tiers_measure_tenneti, NULL, bench_tiers_unresolved_cells, 0,
-     3, SETTLING_TERMINAL_AUX, NULL, 0, 0, 2, NULL, 0},
+     3, SETTLING_TERMINAL_AUX, NULL, 0, 0, 2, NULL, 0, NULL, 0},
+    {"settling_terminal_step", "terminal velocity u_T/sqrt(gD), resolved D/dx 8, 4 D x 12 D box, smoothed forcing (1)",
+     SETTLING_TERMINAL_REFERENCE,
+     BENCH_KNOB_FLUID_CFL, 0, bench_resolved_available, bench_step_measure_smoothed, NULL, NULL, 0, 0,
+     SETTLING_TERMINAL_AUX, NULL, 0, 0, 1, NULL, 0, bench_step_cfl, 3},
+    {"settling_terminal_step_markers", "the same with the surface markers (fluid.ibm_forcing: markers, r_d 0.3) (1)",
+     SETTLING_TERMINAL_REFERENCE,
+     BENCH_KNOB_FLUID_CFL, 0, bench_resolved_available, bench_step_measure_markers, NULL, NULL, 0, 0,
+     SETTLING_TERMINAL_AUX, NULL, 0, 0, 1, NULL, 0, bench_step_cfl, 3},
     {"hindered_settling_tiers", "settling velocity U/U_T, random suspension phi 0.1, Ar 20, 6 D cube, both tiers (1)",
      "Richardson & Zaki 1954: (1 - phi)^n, n = 4.4 Re_T^-0.03, U_T Schiller-Naumann", "|U/U_RZ - 1| (1)", 0.10,
      BENCH_KNOB_CELL, 0, bench_resolved_available, bench_suspension_measure, NULL, bench_suspension_cells, 0, 4, NULL,
-     NULL, 0, 0, 2, NULL, 0},
+     NULL, 0, 0, 2, NULL, 0, NULL, 0},
 };
 
 const bench_case *bench_cases(int *n)

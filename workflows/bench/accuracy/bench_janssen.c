@@ -184,7 +184,7 @@ gf_status bench_janssen_measure(gf_ctx *ctx, const bench_knobs *k, int full, ben
     static jan_run ref_mean;
     static double ref_sd = NAN;
     const bench_knobs fine = {1.0 / 100, BENCH_DEFAULT_SKIN_OVER_D, 5e-3, BENCH_DEFAULT_CELL_OVER_D,
-                               BENCH_DEFAULT_RETRACT_DX};
+                               BENCH_DEFAULT_RETRACT_DX, BENCH_DEFAULT_FLUID_CFL};
     jan_run runs[JAN_SEEDS], m;
     double sd;
     if (isnan(ref_sd)) {

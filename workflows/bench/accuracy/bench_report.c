@@ -69,11 +69,12 @@ static double knob_value(const bench_knobs *k, unsigned knob)
            : knob == BENCH_KNOB_SKIN    ? k->skin_over_D
            : knob == BENCH_KNOB_TC      ? k->t_contact_nd
            : knob == BENCH_KNOB_RETRACT ? k->retract_dx
+           : knob == BENCH_KNOB_FLUID_CFL ? k->fluid_cfl
                                         : k->cell_over_D;
 }
 
 static const bench_knobs bench_defaults = {BENCH_DEFAULT_DT_OVER_TC, BENCH_DEFAULT_SKIN_OVER_D, BENCH_DEFAULT_TC_ND,
-                                           BENCH_DEFAULT_CELL_OVER_D, BENCH_DEFAULT_RETRACT_DX};
+                                           BENCH_DEFAULT_CELL_OVER_D, BENCH_DEFAULT_RETRACT_DX, BENCH_DEFAULT_FLUID_CFL};
 
 static int list_holds(const double *list, int n, double v)
 {
@@ -90,11 +91,13 @@ double bench_case_default(const bench_case *c, unsigned knob)
                         : knob == BENCH_KNOB_TC      ? c->tc_list
                         : knob == BENCH_KNOB_CELL    ? c->cell_list
                         : knob == BENCH_KNOB_RETRACT ? c->retract_list
+                        : knob == BENCH_KNOB_FLUID_CFL ? c->cfl_list
                                                      : NULL;
     int n_own = knob == BENCH_KNOB_DT        ? c->n_dt
                 : knob == BENCH_KNOB_TC      ? c->n_tc
                 : knob == BENCH_KNOB_CELL    ? c->n_cell
                 : knob == BENCH_KNOB_RETRACT ? c->n_retract
+                : knob == BENCH_KNOB_FLUID_CFL ? c->n_cfl
                                              : 0;
     if (!(c->knobs & knob) || !own || n_own < 1 || list_holds(own, n_own, d))
         return d;
@@ -106,15 +109,15 @@ double bench_case_default(const bench_case *c, unsigned knob)
 static int knob_sweep(const bench_point *pts, int n, const bench_case *cases, int c, unsigned knob,
                       const bench_point **out, int cap)
 {
-    static const unsigned all[5] = {BENCH_KNOB_DT, BENCH_KNOB_SKIN, BENCH_KNOB_TC, BENCH_KNOB_CELL,
-                                    BENCH_KNOB_RETRACT};
+    static const unsigned all[6] = {BENCH_KNOB_DT, BENCH_KNOB_SKIN, BENCH_KNOB_TC, BENCH_KNOB_CELL,
+                                    BENCH_KNOB_RETRACT, BENCH_KNOB_FLUID_CFL};
     int m = 0;
     for (int i = 0; i < n && m < cap; ++i) {
         const bench_point *p = &pts[i];
         if (p->case_index != c || p->status != GF_OK)
             continue;
         int at_defaults = 1;
-        for (int q = 0; q < 5; ++q) {
+        for (int q = 0; q < 6; ++q) {
             double v = knob_value(&p->k, all[q]), d = bench_case_default(&cases[c], all[q]);
             if (all[q] != knob && fabs(v - d) > 1e-9 * fmax(fabs(d), 1e-12))
                 at_defaults = 0;
@@ -183,12 +186,13 @@ static gf_status write_csv(gf_ctx *ctx, const char *path, const bench_point *pts
     FILE *f = fopen(path, "w");
     if (!f)
         return GF_FAIL(ctx, GF_ERR_IO, "bench: cannot write %s", path);
-    fprintf(f, "case,dt_over_tc,skin_over_D,t_contact_nd,cell_over_D,ibm_retraction_dx,observable,reference,error,tolerance,cpu_time_s,"
+    fprintf(f, "case,dt_over_tc,skin_over_D,t_contact_nd,cell_over_D,ibm_retraction_dx,fluid_cfl,observable,reference,error,tolerance,cpu_time_s,"
                "wall_time_s,on_front,recommended,status,aux_observable\n");
     for (int i = 0; i < n; ++i) {
         const bench_point *p = &pts[i];
-        fprintf(f, "%s,%.6g,%.6g,%.6g,%.6g,%.6g,%.10g,%.10g,%.6g,%.3g,%.6g,%.6g,%d,%d,%s,", cases[p->case_index].name,
-                p->k.dt_over_tc, p->k.skin_over_D, p->k.t_contact_nd, p->k.cell_over_D, p->k.retract_dx, p->r.observable,
+        fprintf(f, "%s,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.10g,%.10g,%.6g,%.3g,%.6g,%.6g,%d,%d,%s,", cases[p->case_index].name,
+                p->k.dt_over_tc, p->k.skin_over_D, p->k.t_contact_nd, p->k.cell_over_D, p->k.retract_dx, p->k.fluid_cfl,
+                p->r.observable,
                 p->r.reference, p->r.error, cases[p->case_index].tolerance, p->r.cpu_s, p->wall_s, p->on_front,
                 p->recommended,
                 p->status == GF_OK ? "ok" : gf_status_str(p->status));
@@ -287,6 +291,7 @@ static gf_status write_nc(gf_ctx *ctx, const char *path, const bench_point *pts,
         {"t_contact_nd", "1", "contact duration t_c sqrt(g/D)"},
         {"fluid_cell_over_D", "1", "fluid cell size / grain diameter"},
         {"ibm_retraction_dx", "1", "resolved tier: retraction of the solid fraction's profile / grid spacing"},
+        {"fluid_cfl", "1", "resolved tier: the fluid step's advective bound fluid.cfl"},
         {"observable", "1", "measured observable (dimensionless; see case_observable)"},
         {"reference", "1", "reference value of the observable"},
         {"error", "1", "error against the reference"},
@@ -346,7 +351,8 @@ static gf_status write_nc(gf_ctx *ctx, const char *path, const bench_point *pts,
         NC(nc_put_var1_int(ncid, v_ci, &i1, &p->case_index));
         int ok = p->status == GF_OK;
         int has_aux = ok && cases[p->case_index].aux != NULL;
-        double vals[11] = {p->k.dt_over_tc, p->k.skin_over_D, p->k.t_contact_nd, p->k.cell_over_D, p->k.retract_dx,
+        double vals[12] = {p->k.dt_over_tc, p->k.skin_over_D, p->k.t_contact_nd, p->k.cell_over_D, p->k.retract_dx,
+                           p->k.fluid_cfl,
                            ok ? p->r.observable : NAN, ok ? p->r.reference : NAN, ok ? p->r.error : NAN,
                            ok ? p->r.cpu_s : NAN, ok ? p->wall_s : NAN, has_aux ? p->r.aux : NAN};
         for (int k = 0; k < n_dv; ++k)

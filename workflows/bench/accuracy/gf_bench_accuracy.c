@@ -12,13 +12,14 @@
  *   t_c sqrt(g/D) in {1e-2, 5e-3}            (where the physics sees it)
  *   fluid cell/D  in {1.5, 2, 3, 4}          (where the fluid works)
  *   fluid.ibm_retraction_dx                   (resolved tier only, its own list)
+ *   fluid.cfl                                 (resolved tier only, its own list)
  * unless a case lists its own values (bench_case.dt_list, cell_list): the
  * fluid cases take cell/D in {4, 2, 1, 0.5} of a nominal D, the immersed
  * collapse cell/D in {4, 2, 1.5, 1} and dt/t_c in {1/20, 1/50}, the settling
  * sphere cell/D in {4, 3, 2.5, 2}, the Janssen column dt/t_c in
  * {1/20, 1/50, 1/100} and t_c sqrt(g/D) in {2e-2, 1e-2, 5e-3}, the resolved
  * sphere D/dx in {8, 12, 16} (--quick: 8, 12) and the retraction in {0, 0.3}
- * dx. A knob's default is the common one, or the first of the case's own
+ * dx, the resolved sphere's fluid step fluid.cfl in {0.3, 0.15, 0.075}. A knob's default is the common one, or the first of the case's own
  * list when that list does not hold it. A case that
  * does not sweep dt (the grain-free fluid cases) runs at one dt.
  * --quick (default): the dt sweep with the other knobs at default, plus the
@@ -48,6 +49,7 @@ static const double skin_sweep[] = {0.05, 0.1, 0.2, 0.4};
 static const double tc_sweep[] = {1e-2, 5e-3};
 static const double cell_sweep[] = {1.5, 2.0, 3.0, 4.0};
 static const double retract_none[] = {BENCH_DEFAULT_RETRACT_DX}; /* no common sweep: only resolved cases list theirs */
+static const double cfl_none[] = {BENCH_DEFAULT_FLUID_CFL};
 
 static void label_of(const bench_case *c, const bench_knobs *k, char *buf, size_t len)
 {
@@ -67,7 +69,9 @@ static void label_of(const bench_case *c, const bench_knobs *k, char *buf, size_
     else if (c->knobs & BENCH_KNOB_CELL)
         n += snprintf(buf + n, len - (size_t)n, "%scell=%gD", n && buf[n - 1] != ' ' ? " " : "", k->cell_over_D);
     if (c->knobs & BENCH_KNOB_RETRACT)
-        snprintf(buf + n, len - (size_t)n, "%sretract=%gdx", n ? " " : "", k->retract_dx);
+        n += snprintf(buf + n, len - (size_t)n, "%sretract=%gdx", n ? " " : "", k->retract_dx);
+    if (c->knobs & BENCH_KNOB_FLUID_CFL)
+        snprintf(buf + n, len - (size_t)n, "%scfl=%g", n ? " " : "", k->fluid_cfl);
 }
 
 /* Values of one knob for case c: the case's own list, else the common sweep.
@@ -82,15 +86,16 @@ static int knob_values(unsigned knobs, unsigned bit, const double *own, int n_ow
 }
 
 /* A setting of case c: index a of dt, q of cell, b of skin, t of t_c, r of
- * the retraction; -1: that knob at the case's default. */
+ * the retraction, f of the fluid CFL; -1: that knob at the case's default. */
 typedef struct knob_lists {
-    const double *dt, *cell, *tc, *retract;
+    const double *dt, *cell, *tc, *retract, *cfl;
 } knob_lists;
 
-static bench_knobs knobs_at(const bench_case *c, const knob_lists *l, int a, int q, int b, int t, int r)
+static bench_knobs knobs_at(const bench_case *c, const knob_lists *l, int a, int q, int b, int t, int r, int f)
 {
     bench_knobs k = {bench_case_default(c, BENCH_KNOB_DT), BENCH_DEFAULT_SKIN_OVER_D, bench_case_default(c, BENCH_KNOB_TC),
-                     bench_case_default(c, BENCH_KNOB_CELL), bench_case_default(c, BENCH_KNOB_RETRACT)};
+                     bench_case_default(c, BENCH_KNOB_CELL), bench_case_default(c, BENCH_KNOB_RETRACT),
+                     bench_case_default(c, BENCH_KNOB_FLUID_CFL)};
     if (a >= 0 && (c->knobs & BENCH_KNOB_DT))
         k.dt_over_tc = l->dt[a];
     if (q >= 0 && (c->knobs & BENCH_KNOB_CELL))
@@ -101,6 +106,8 @@ static bench_knobs knobs_at(const bench_case *c, const knob_lists *l, int a, int
         k.t_contact_nd = l->tc[t];
     if (r >= 0 && (c->knobs & BENCH_KNOB_RETRACT))
         k.retract_dx = l->retract[r];
+    if (f >= 0 && (c->knobs & BENCH_KNOB_FLUID_CFL))
+        k.fluid_cfl = l->cfl[f];
     return k;
 }
 
@@ -114,6 +121,7 @@ static int settings_of(const bench_case *c, int full, bench_knobs *ks, int cap)
     int n_cell = knob_values(c->knobs, BENCH_KNOB_CELL, c->cell_list, c->n_cell, cell_sweep, 4, &l.cell);
     int n_tc = knob_values(c->knobs, BENCH_KNOB_TC, c->tc_list, c->n_tc, tc_sweep, 2, &l.tc);
     int n_ret = knob_values(c->knobs, BENCH_KNOB_RETRACT, c->retract_list, c->n_retract, retract_none, 1, &l.retract);
+    int n_cfl = knob_values(c->knobs, BENCH_KNOB_FLUID_CFL, c->cfl_list, c->n_cfl, cfl_none, 1, &l.cfl);
     int n_skin = (c->knobs & BENCH_KNOB_SKIN) ? 4 : 1;
     int n = 0;
     if (full) {
@@ -121,27 +129,31 @@ static int settings_of(const bench_case *c, int full, bench_knobs *ks, int cap)
             for (int b = 0; b < n_skin; ++b)
                 for (int t = 0; t < n_tc; ++t)
                     for (int r = 0; r < n_ret; ++r)
-                        for (int q = 0; q < n_cell && n < cap; ++q)
-                            ks[n++] = knobs_at(c, &l, a, q, b, t, r);
+                        for (int f = 0; f < n_cfl; ++f)
+                            for (int q = 0; q < n_cell && n < cap; ++q)
+                                ks[n++] = knobs_at(c, &l, a, q, b, t, r, f);
         return n;
     }
     /* --quick: the dt sweep at the other defaults, then each other knob's sweep at the default dt */
     if (c->cell_list && c->n_cell_quick > 0 && c->n_cell_quick < n_cell)
         n_cell = c->n_cell_quick;
     for (int a = 0; a < n_dt && n < cap; ++a)
-        ks[n++] = knobs_at(c, &l, a, -1, -1, -1, -1);
+        ks[n++] = knobs_at(c, &l, a, -1, -1, -1, -1, -1);
     for (int b = 0; (c->knobs & BENCH_KNOB_SKIN) && b < 4 && n < cap; ++b)
         if (differs(skin_sweep[b], BENCH_DEFAULT_SKIN_OVER_D))
-            ks[n++] = knobs_at(c, &l, -1, -1, b, -1, -1);
+            ks[n++] = knobs_at(c, &l, -1, -1, b, -1, -1, -1);
     for (int t = 0; (c->knobs & BENCH_KNOB_TC) && t < n_tc && n < cap; ++t)
         if (differs(l.tc[t], bench_case_default(c, BENCH_KNOB_TC)))
-            ks[n++] = knobs_at(c, &l, -1, -1, -1, t, -1);
+            ks[n++] = knobs_at(c, &l, -1, -1, -1, t, -1, -1);
     for (int q = 0; (c->knobs & BENCH_KNOB_CELL) && q < n_cell && n < cap; ++q)
         if (differs(l.cell[q], bench_case_default(c, BENCH_KNOB_CELL)))
-            ks[n++] = knobs_at(c, &l, -1, q, -1, -1, -1);
+            ks[n++] = knobs_at(c, &l, -1, q, -1, -1, -1, -1);
     for (int r = 0; (c->knobs & BENCH_KNOB_RETRACT) && r < n_ret && n < cap; ++r)
         if (differs(l.retract[r], bench_case_default(c, BENCH_KNOB_RETRACT)))
-            ks[n++] = knobs_at(c, &l, -1, -1, -1, -1, r);
+            ks[n++] = knobs_at(c, &l, -1, -1, -1, -1, r, -1);
+    for (int f = 0; (c->knobs & BENCH_KNOB_FLUID_CFL) && f < n_cfl && n < cap; ++f)
+        if (differs(l.cfl[f], bench_case_default(c, BENCH_KNOB_FLUID_CFL)))
+            ks[n++] = knobs_at(c, &l, -1, -1, -1, -1, -1, f);
     return n;
 }
 
