@@ -553,6 +553,11 @@ static gf_status measure_settling(gf_ctx *ctx, const bench_knobs *k, int full, b
 #define SETTLING_TERMINAL_REFERENCE \
     "Schiller & Naumann 1933 with C_D Re^2 = (4/3) Ar: 1.244 (Izard 2014 eq. (2.35))", "|u_T/u_SN - 1| (1)", 0.03
 #define SETTLING_TERMINAL_AUX "time of the largest speed, sqrt(D/g) (1)"
+/* The resolved sphere against the fluid step (bench_tiers.c), one forcing per case. */
+#define SETTLING_STEP_CASE(name, forcing, measure)                                                                    \
+    {name, "terminal velocity u_T/sqrt(gD), resolved D/dx 8, 4 D x 12 D box, " forcing " (1)",                         \
+     SETTLING_TERMINAL_REFERENCE, BENCH_KNOB_FLUID_CFL, 0, bench_resolved_available, measure, NULL, NULL, 0, 0,       \
+     SETTLING_TERMINAL_AUX, NULL, 0, 0, 1, NULL, 0, bench_step_cfl, 3}
 
 static const bench_case cases[] = {
     {"restitution", "restitution of a normal collision, clipped law, eps_max 0.5 (1)",
@@ -598,14 +603,8 @@ static const bench_case cases[] = {
      SETTLING_TERMINAL_REFERENCE,
      BENCH_KNOB_CELL, 0, bench_resolved_available, bench_tiers_measure_tenneti, NULL, bench_tiers_unresolved_cells, 0,
      3, SETTLING_TERMINAL_AUX, NULL, 0, 0, 2, NULL, 0, NULL, 0},
-    {"settling_terminal_step", "terminal velocity u_T/sqrt(gD), resolved D/dx 8, 4 D x 12 D box, smoothed forcing (1)",
-     SETTLING_TERMINAL_REFERENCE,
-     BENCH_KNOB_FLUID_CFL, 0, bench_resolved_available, bench_step_measure_smoothed, NULL, NULL, 0, 0,
-     SETTLING_TERMINAL_AUX, NULL, 0, 0, 1, NULL, 0, bench_step_cfl, 3},
-    {"settling_terminal_step_markers", "the same with the surface markers (fluid.ibm_forcing: markers, r_d 0.3) (1)",
-     SETTLING_TERMINAL_REFERENCE,
-     BENCH_KNOB_FLUID_CFL, 0, bench_resolved_available, bench_step_measure_markers, NULL, NULL, 0, 0,
-     SETTLING_TERMINAL_AUX, NULL, 0, 0, 1, NULL, 0, bench_step_cfl, 3},
+    SETTLING_STEP_CASE("settling_terminal_step", "smoothed forcing", bench_step_measure_smoothed),
+    SETTLING_STEP_CASE("settling_terminal_step_markers", "surface markers, r_d 0.3", bench_step_measure_markers),
     {"hindered_settling_tiers", "settling velocity U/U_T, random suspension phi 0.1, Ar 20, 6 D cube, both tiers (1)",
      "Richardson & Zaki 1954: (1 - phi)^n, n = 4.4 Re_T^-0.03, U_T Schiller-Naumann", "|U/U_RZ - 1| (1)", 0.10,
      BENCH_KNOB_CELL, 0, bench_resolved_available, bench_suspension_measure, NULL, bench_suspension_cells, 0, 4, NULL,
