@@ -188,6 +188,18 @@ int main(int argc, char **argv)
     }
     int n_cases;
     const bench_case *cases = bench_cases(&n_cases);
+    for (int q = 0; q < n_only; ++q) {
+        int known = 0;
+        for (int c = 0; c < n_cases; ++c)
+            known |= strcmp(only[q], cases[c].name) == 0;
+        if (!known) {
+            fprintf(stderr, "gf-bench-accuracy: --case %s: no such case; the cases:", only[q]);
+            for (int c = 0; c < n_cases; ++c)
+                fprintf(stderr, " %s", cases[c].name);
+            fprintf(stderr, "\n");
+            return 2;
+        }
+    }
     bench_point *pts = calloc(1024, sizeof *pts);
     if (!pts) {
         fprintf(stderr, "gf-bench-accuracy: out of memory\n");
