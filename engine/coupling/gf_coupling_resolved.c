@@ -434,15 +434,22 @@ static gf_status fluid_substep(gf_resolved *c, const gf_particles *p, const gf_n
     return GF_OK;
 }
 
-/* Index of grain i among the last fluid step's grains (held_id), -1 when it was not there. */
-static long last_index(const gf_resolved *c, const gf_particles *p, size_t i)
+/* 1 when the store is in the order of the last fluid step's grains (held_id). */
+static int held_in_order(const gf_resolved *c, const gf_particles *p)
 {
-    if (c->held_epoch_known && c->held_epoch == p->order_epoch && c->n_held == p->n_local)
-        return (long)i;
-    for (size_t h = 0; h < c->n_held; ++h)
-        if (c->held_id[h] == p->id[i])
-            return (long)h;
-    return -1;
+    return c->held_epoch_known && c->held_epoch == p->order_epoch && c->n_held == p->n_local;
+}
+
+/* Index of grain i among the last fluid step's grains (held_id): i while the order holds, else matched by id
+ * (few grains: a linear search); n_held when it was not there. */
+static size_t held_slot(const gf_resolved *c, const gf_particles *p, size_t i)
+{
+    if (held_in_order(c, p))
+        return i;
+    size_t h = 0;
+    while (h < c->n_held && c->held_id[h] != p->id[i])
+        ++h;
+    return h;
 }
 
 /* Markers (coupling/gf_ibm_markers.h): the fraction for the fields, and each grain's internal momentum at the
@@ -456,8 +463,8 @@ static void begin_internal_momentum(gf_resolved *c, const gf_particles *p)
     const double *const u[3] = {c->fluid->u[0], c->fluid->u[1], c->fluid->u[2]};
     gf_ibm_momentum(&c->map, g, p, u, c->P0, c->L0);
     for (size_t i = 0; c->last_known && i < p->n_local; ++i) {
-        long h = last_index(c, p, i);
-        for (int d = 0; h >= 0 && d < 3; ++d)
+        size_t h = held_slot(c, p, i);
+        for (int d = 0; h < c->n_held && d < 3; ++d)
             c->P0[3 * i + d] = c->P_last[3 * h + d], c->L0[3 * i + d] = c->L_last[3 * h + d];
     }
 }
@@ -533,7 +540,7 @@ static void add_held(const gf_resolved *c, size_t h, gf_particles *p, size_t i)
 static int resolved_forces_in_order(const gf_coupling *cc, const gf_particles *p)
 {
     const gf_resolved *c = CR(cc);
-    return c->first_step || (c->held_epoch_known && c->held_epoch == p->order_epoch && c->n_held == p->n_local);
+    return c->first_step || held_in_order(c, p);
 }
 
 static void resolved_add_forces_range(gf_coupling *cc, gf_particles *p, size_t i0, size_t i1)
@@ -543,16 +550,6 @@ static void resolved_add_forces_range(gf_coupling *cc, gf_particles *p, size_t i
         return;
     for (size_t i = i0; i < i1; ++i)
         add_held(c, i, p, i);
-}
-
-/* Where grain i's force is held, once the store was reordered since the fluid step: matched by id
- * (few grains: a linear search); n_held when none. */
-static size_t held_slot_by_id(const gf_resolved *c, const gf_particles *p, size_t i)
-{
-    size_t h = 0;
-    while (h < c->n_held && c->held_id[h] != p->id[i])
-        ++h;
-    return h;
 }
 
 static gf_status resolved_add_forces(gf_coupling *cc, gf_particles *p)
@@ -565,7 +562,7 @@ static gf_status resolved_add_forces(gf_coupling *cc, gf_particles *p)
         return GF_OK;
     }
     for (size_t i = 0; i < p->n_local; ++i) {
-        size_t h = held_slot_by_id(c, p, i);
+        size_t h = held_slot(c, p, i);
         if (h < c->n_held)
             add_held(c, h, p, i);
     }
@@ -577,7 +574,7 @@ static int resolved_grain_force(const gf_coupling *cc, const gf_particles *p, si
     const gf_resolved *c = CR(cc);
     if (c->first_step)
         return 0; /* before the first fluid step: nothing held */
-    size_t h = resolved_forces_in_order(cc, p) ? i : held_slot_by_id(c, p, i);
+    size_t h = held_slot(c, p, i);
     if (h >= c->n_held)
         return 0;
     for (int d = 0; d < 3; ++d)
