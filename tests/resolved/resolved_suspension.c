@@ -25,6 +25,10 @@
  *     two boxes, where that grid error largely cancels, within 3 % (+1.6 %).
  *     Arguments dx, retract, box0, box1 change the grid, the forcing radius's
  *     retraction and the cubes; ibm=markers the forcing (fluid.ibm_forcing).
+ * check=hasimoto: the one-grain part alone; with ibm=markers (default suite,
+ *   retract=0.3: measured -2.7 %, -2.5 %, ratio -0.3 %) without the momentum
+ *   bound, which counts the grain's inner fluid rigid (the markers force the
+ *   surface only: 3.8e-2 measured, docs/notes/resolved-settling.md).
  *
  * check=hindered (`slow`): the hindered settling of a random suspension (the
  * scene's arrangement 1; random=0 the jittered lattice) at phi = 0.05, 0.1,
@@ -158,7 +162,7 @@ static double hasimoto(double phi)
     return 1.0 - 1.7601 * c + phi - 1.5593 * phi * phi + 3.9799 * pow(c, 8) - 3.0734 * pow(c, 10);
 }
 
-static void check_periodic(double box0, double box1)
+static void check_mixture_momentum(void)
 {
     run_result r;
     const run_case mix = {"resolved", NULL, 1, 4.1, 0.2, 20.0, 2.0, 1.0};
@@ -168,6 +172,13 @@ static void check_periodic(double box0, double box1)
            r.cpu_s);
     GF_CHECK(fabs(r.p_offset) <= 1.0);
     GF_CHECK(r.p_max < 1e-3);
+}
+
+/* One grain in two periodic cubes against Hasimoto's array. rigid_inner: also the momentum with the grain's inner
+ * fluid counted rigid (the smoothed forcing makes it so; the markers force the surface only). */
+static void check_hasimoto(double box0, double box1, int rigid_inner)
+{
+    run_result r;
     const double boxes[2] = {box0, box1};
     double ratio[2];
     double us = (RATIO - 1.0) * RHO * G * D * D / (18.0 * gf_test_suspension_viscosity(3.6));
@@ -179,7 +190,7 @@ static void check_periodic(double box0, double box1)
                "max |P - P(t1)| %.1e, %.1f CPU-s\n", boxes[b], r.phi, ratio[b], hasimoto(r.phi),
                100.0 * (ratio[b] / hasimoto(r.phi) - 1.0), RHO * r.U * D / gf_test_suspension_viscosity(3.6), r.p_max, r.cpu_s);
         GF_CHECK_REL(ratio[b], hasimoto(r.phi), 0.12);
-        GF_CHECK(r.p_max < 1e-3);
+        GF_CHECK(!rigid_inner || r.p_max < 1e-3);
     }
     double ph[2] = {M_PI / 6.0 / pow(boxes[0], 3), M_PI / 6.0 / pow(boxes[1], 3)};
     double want = hasimoto(ph[0]) / hasimoto(ph[1]);
@@ -246,9 +257,13 @@ int main(int argc, char **argv)
     int hindered = strcmp(check, "hindered") == 0;
     if (RANDOM < 0)
         RANDOM = hindered;
-    if (hindered)
+    if (hindered) {
         check_hindered(t_end, phi_one, box_one, resolved_only, ar);
-    else
-        check_periodic(box0, box1);
+    } else if (strcmp(check, "hasimoto") == 0) {
+        check_hasimoto(box0, box1, strcmp(IBM, "markers") != 0);
+    } else {
+        check_mixture_momentum();
+        check_hasimoto(box0, box1, 1);
+    }
     return gf_test_finish();
 }
