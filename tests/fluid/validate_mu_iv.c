@@ -31,31 +31,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/gf_boyer.h"
 #include "core/gf_groups.h"
 #include "gf_sim.h"
 #include "gf_test.h"
 #include "scenes/gf_measure.h"
 
 enum { NS = 24 };
-
-static const double MU1 = 0.32, MU2 = 0.7, I0 = 0.005, PHI_M = 0.585;
-
-static double boyer_mu_contact(double iv) { return MU1 + (MU2 - MU1) / (1.0 + I0 / iv); }
-static double boyer_mu(double iv) { return boyer_mu_contact(iv) + iv + 2.5 * PHI_M * sqrt(iv); }
-
-/* I_v at which law(I_v) = mu, by bisection on log I_v (law increasing). */
-static double invert(double (*law)(double), double mu)
-{
-    double lo = 1e-8, hi = 1.0;
-    for (int it = 0; it < 200; ++it) {
-        double m = sqrt(lo * hi);
-        if (law(m) < mu)
-            lo = m;
-        else
-            hi = m;
-    }
-    return sqrt(lo * hi);
-}
 
 static void measure(const char *drag, double theta_deg)
 {
@@ -120,11 +102,12 @@ static void measure(const char *drag, double theta_deg)
             slog += log(iv), phib += phi_acc[k], ++nb;
     }
     double iv_meas = nb ? exp(slog / nb) : 0.0;
-    double mu = tan(th), iv_boyer = invert(boyer_mu, mu), iv_contact = invert(boyer_mu_contact, mu);
+    const gf_boyer_law *b = &GF_BOYER_2011;
+    double mu = tan(th), iv_boyer = gf_boyer_Iv(b, mu, 0), iv_contact = gf_boyer_Iv(b, mu, 1);
     printf("%s, theta %.1f deg: mu = tan(theta) %.3f, bulk I_v %.3g (phi %.3f), Boyer I_v(mu) %.3g (contact part "
            "only %.3g), ratio measured/Boyer %.3g; Boyer mu(measured I_v) %.3f, phi(I_v) %.3f\n",
            drag, theta_deg, mu, iv_meas, nb ? phib / nb : NAN, iv_boyer, iv_contact, iv_meas / iv_boyer,
-           boyer_mu(iv_meas), PHI_M / (1.0 + sqrt(iv_boyer)));
+           gf_boyer_mu(b, iv_meas, 0), gf_boyer_phi(b, iv_boyer));
     GF_CHECK(nb >= 2);
     GF_CHECK(iv_meas > 0.5 * iv_boyer && iv_meas < 2.0 * iv_boyer);
     gf_sim_destroy(&sim);
