@@ -65,6 +65,7 @@ const gf_post_col gf_summary_columns[] = {
     {"T_over_Tv", 0, "1", "flow time over the viscous time T_v"},
     {"T_over_Ti", 0, "1", "flow time over the inertial time T_i"},
     {"T_over_Tff", 0, "1", "flow time over the free-fall time T_ff"},
+    {"T_over_Tv_boyer", 0, "1", "avalanche: T/T_v of the run's bed under the mu(I_v) of Boyer et al. (2011)"},
     {"Tv_s", 0, "s", "viscous time T_v"},
     {"Ti_s", 0, "s", "inertial time T_i"},
     {"Tff_s", 0, "s", "free-fall time T_ff"},

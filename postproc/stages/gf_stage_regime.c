@@ -18,6 +18,9 @@
  *   Q_g = (1/L) ∫ α U dV, T = L ∫α dV / ∫ αU dV = L / Ū_g: the time the mean
  *   grain takes to cross the periodic cell, as in the thesis. Label by
  *   gf_regime_classify (nearest scale in decades; transitional rule).
+ *   T_over_Tv_boyer: the T/T_v that Boyer, Guazzelli & Pouliquen (2011)'s
+ *   μ(I_v) gives the run's own steady bed depth and drive (gf_boyer.h), the
+ *   dense-suspension reference for the viscous plateau.
  *
  * Column collapse: Bougouin & Lacaze, PRF 3, 064305 (2018) classify immersed
  *   collapses from the collapse duration in units of T_ff, T_v and T_i
@@ -42,6 +45,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "core/gf_boyer.h"
 #include "stages/gf_post_rate.h"
 #include "stages/gf_post_stats.h"
 #include "stages/gf_regime.h"
@@ -56,6 +60,29 @@ static void put_labels(gf_post_row *row, double T, const gf_scales *sc, const gf
     gf_post_row_set(row, "T_over_Tv", sc->t_viscous_s > 0 ? T / sc->t_viscous_s : NAN);
     gf_post_row_set(row, "T_over_Ti", sc->t_inertial_s > 0 ? T / sc->t_inertial_s : NAN);
     gf_post_row_set(row, "T_over_Tff", sc->t_freefall_s > 0 ? T / sc->t_freefall_s : NAN);
+}
+
+/* T/T_v that Boyer et al. (2011)'s μ(I_v) gives this run's bed (core/gf_boyer.h): its steady mean depth
+ * bed_height, cell length, incline and the grains' downslope drive (ρ_p/Δρ)^n of the scene's
+ * slope_gravity_exponent n. NaN for a dry run or when an attribute is missing. */
+static double boyer_T_over_Tv(gf_ctx *ctx, const gf_ncr *d, size_t i0)
+{
+    const double D = gf_ncr_att_double_or(d, "grain_diameter_m", NAN);
+    const double L = gf_ncr_att_double_or(d, "scene_param_length_over_D", NAN);
+    const double th = gf_ncr_att_double_or(d, "incline_deg", NAN) * M_PI / 180.0;
+    const double n = gf_ncr_att_double_or(d, "scene_param_slope_gravity_exponent", 0.0);
+    const double rp = gf_ncr_att_double_or(d, "grain_density_kg_m3", NAN);
+    const double rf = gf_ncr_att_double_or(d, "fluid_density_kg_m3", 0.0);
+    double *h = NULL, out = NAN;
+    size_t nh = 0;
+    if (rf > 0.0 && rf < rp && gf_ncr_has_var(d, "bed_height") && gf_ncr_var_1d(ctx, d, "bed_height", &h, &nh) == GF_OK &&
+        i0 < nh) {
+        double mh, sh;
+        gf_stats_mean_std(h + i0, nh - i0, &mh, &sh);
+        out = gf_boyer_layer_T_over_Tv(&GF_BOYER_2011, tan(th) * pow(rp / (rp - rf), n), tan(th), mh / D, L, 0);
+    }
+    free(h);
+    return out;
 }
 
 /* φ̄ L W h̄ over the samples from i0 on (NaN if anything is missing). */
@@ -119,6 +146,7 @@ static gf_status avalanche(gf_ctx *ctx, const gf_stage_in *in, const gf_ncr *d, 
     GF_TRY(gf_regime_classify(ctx, T, sc, &res));
     put_labels(row, T, sc, &res);
     gf_post_row_set(row, "Vg_m3", Vg);
+    gf_post_row_set(row, "T_over_Tv_boyer", boyer_T_over_Tv(ctx, d, s.i_start));
     return GF_OK;
 }
 

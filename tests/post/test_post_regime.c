@@ -40,6 +40,9 @@
  *    V_g = φ̄ L W h̄ from bed_packing_fraction = 0.58, bed_height = 8 D and
  *    L = W = 5 D (scene_param_* attributes); Q_g set from that volume so that
  *    T = T_i: T/T_i = 1 within 1 %.
+ *    The same run's T_over_Tv_boyer (the μ(I_v) reference, gf_boyer.h) with
+ *    slope_gravity_exponent 2: the layer's value for 8 D, 5 D, 25° and the
+ *    drive (2500/1500)^2, to 1e-9 (the stage passes the right inputs).
  * 4. Stage regime on a synthetic collapse: front x(t) = R0 + ΔR (1 + tanh((t −
  *    t_c)/τ))/2 with t_rest (front within D/2 of final) placed exactly at the
  *    viscous scale over H0, T_v (H0/D): label viscous, t_rest within one
@@ -51,6 +54,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/gf_boyer.h"
 #include "core/gf_groups.h"
 #include "core/gf_rng.h"
 #include "gf_post_synth.h"
@@ -194,6 +198,8 @@ static void hand_scales_and_avalanche(void)
     nc_redef(ncid);
     nc_put_att_double(ncid, NC_GLOBAL, "scene_param_length_over_D", NC_DOUBLE, 1, &five);
     nc_put_att_double(ncid, NC_GLOBAL, "scene_param_width_over_D", NC_DOUBLE, 1, &five);
+    const double two = 2.0;
+    nc_put_att_double(ncid, NC_GLOBAL, "scene_param_slope_gravity_exponent", NC_DOUBLE, 1, &two);
     GF_CHECK(nc_close(ncid) == NC_NOERR);
     gf_post_row_init(&row, dir);
     GF_CHECK_OK(synth_stage(&ctx, gf_stage_regime, dir, "avalanche", 0, &row), &ctx);
@@ -202,6 +208,13 @@ static void hand_scales_and_avalanche(void)
            gf_post_row_get_text(&row, "regime"));
     GF_CHECK_REL(gf_post_row_get(&row, "Vg_m3"), Vb, 1e-9);
     GF_CHECK_REL(gf_post_row_get(&row, "T_over_Ti"), 1.0, 0.01);
+    /* the μ(I_v) reference for this bed: depth 8 D, cell 5 D, 25°, drive (2500/1500)^2 (exponent 2) */
+    const double th = 25.0 * M_PI / 180.0;
+    const double boyer = gf_boyer_layer_T_over_Tv(&GF_BOYER_2011, tan(th) * pow(2500.0 / 1500.0, 2.0), tan(th), 8.0,
+                                                  5.0, 0);
+    printf("avalanche without particles.nc: mu(I_v) T/T_v %.5g (expected %.5g)\n",
+           gf_post_row_get(&row, "T_over_Tv_boyer"), boyer);
+    GF_CHECK_REL(gf_post_row_get(&row, "T_over_Tv_boyer"), boyer, 1e-9);
     free(hb), free(pb);
     free(rad), free(x), free(y), free(glued), free(t), free(q), free(e);
 }
