@@ -14,7 +14,8 @@ are counted:
 T of the run is T_over_Tv x T_v, with T_v = T_ff/(2 St) and
 T_ff = sqrt(2 rho_p D/(drho g sin(theta))) at D = 5 mm, rho_p = 2500 kg/m3,
 theta = 25 degrees (the campaign's set-up; gf_groups.h). With several files,
-the first that holds a point is used.
+the first that holds a point is used. The same 24 points are in
+tests/post/table42.h; tests/post/test_regime_score.py checks this script.
 """
 import csv
 import math

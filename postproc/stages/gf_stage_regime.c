@@ -62,10 +62,21 @@ static void put_labels(gf_post_row *row, double T, const gf_scales *sc, const gf
     gf_post_row_set(row, "T_over_Tff", sc->t_freefall_s > 0 ? T / sc->t_freefall_s : NAN);
 }
 
+/* Mean of diagnostics variable `name` over the samples from i0 on; NaN if it is missing or shorter. */
+static double steady_mean(gf_ctx *ctx, const gf_ncr *d, const char *name, size_t i0)
+{
+    double *v = NULL, m = NAN, sd;
+    size_t n = 0;
+    if (gf_ncr_has_var(d, name) && gf_ncr_var_1d(ctx, d, name, &v, &n) == GF_OK && i0 < n)
+        gf_stats_mean_std(v + i0, n - i0, &m, &sd);
+    free(v);
+    return m;
+}
+
 /* T/T_v that Boyer et al. (2011)'s μ(I_v) gives this run's bed (core/gf_boyer.h): its steady mean depth
- * bed_height, cell length, incline and the grains' downslope drive (ρ_p/Δρ)^n of the scene's
- * slope_gravity_exponent n. NaN for a dry run or when an attribute is missing. */
-static double boyer_T_over_Tv(gf_ctx *ctx, const gf_ncr *d, size_t i0)
+ * h̄ (bed_height), cell length, incline and the grains' downslope drive (ρ_p/Δρ)^n of the scene's
+ * slope_gravity_exponent n (scenes/gf_scene_avalanche.c). NaN for a dry run or when anything is missing. */
+static double boyer_T_over_Tv(const gf_ncr *d, double h)
 {
     const double D = gf_ncr_att_double_or(d, "grain_diameter_m", NAN);
     const double L = gf_ncr_att_double_or(d, "scene_param_length_over_D", NAN);
@@ -73,36 +84,18 @@ static double boyer_T_over_Tv(gf_ctx *ctx, const gf_ncr *d, size_t i0)
     const double n = gf_ncr_att_double_or(d, "scene_param_slope_gravity_exponent", 0.0);
     const double rp = gf_ncr_att_double_or(d, "grain_density_kg_m3", NAN);
     const double rf = gf_ncr_att_double_or(d, "fluid_density_kg_m3", 0.0);
-    double *h = NULL, out = NAN;
-    size_t nh = 0;
-    if (rf > 0.0 && rf < rp && gf_ncr_has_var(d, "bed_height") && gf_ncr_var_1d(ctx, d, "bed_height", &h, &nh) == GF_OK &&
-        i0 < nh) {
-        double mh, sh;
-        gf_stats_mean_std(h + i0, nh - i0, &mh, &sh);
-        out = gf_boyer_layer_T_over_Tv(&GF_BOYER_2011, tan(th) * pow(rp / (rp - rf), n), tan(th), mh / D, L, 0);
-    }
-    free(h);
-    return out;
+    if (!(rf > 0.0 && rf < rp && h > 0.0))
+        return NAN;
+    return gf_boyer_layer_T_over_Tv(&GF_BOYER_2011, tan(th) * pow(rp / (rp - rf), n), tan(th), h / D, L, 0);
 }
 
-/* φ̄ L W h̄ over the samples from i0 on (NaN if anything is missing). */
-static double bed_volume(gf_ctx *ctx, const gf_ncr *d, size_t i0)
+/* φ̄ L W h̄ (NaN if anything is missing). */
+static double bed_volume(const gf_ncr *d, double h, double phi)
 {
     const double D = gf_ncr_att_double_or(d, "grain_diameter_m", NAN);
     const double L = gf_ncr_att_double_or(d, "scene_param_length_over_D", NAN) * D;
     const double W = gf_ncr_att_double_or(d, "scene_param_width_over_D", NAN) * D;
-    double *h = NULL, *phi = NULL, V = NAN;
-    size_t nh = 0, np = 0;
-    if (gf_ncr_has_var(d, "bed_height") && gf_ncr_has_var(d, "bed_packing_fraction") &&
-        gf_ncr_var_1d(ctx, d, "bed_height", &h, &nh) == GF_OK &&
-        gf_ncr_var_1d(ctx, d, "bed_packing_fraction", &phi, &np) == GF_OK && nh == np && i0 < nh) {
-        double mh, sh, mp, sp;
-        gf_stats_mean_std(h + i0, nh - i0, &mh, &sh);
-        gf_stats_mean_std(phi + i0, np - i0, &mp, &sp);
-        V = mp * L * W * mh;
-    }
-    free(h), free(phi);
-    return V;
+    return phi * L * W * h;
 }
 
 static gf_status avalanche(gf_ctx *ctx, const gf_stage_in *in, const gf_ncr *d, const gf_scales *sc, gf_post_row *row)
@@ -123,9 +116,10 @@ static gf_status avalanche(gf_ctx *ctx, const gf_stage_in *in, const gf_ncr *d, 
     free(q);
     if (st != GF_OK)
         return st;
+    const double h = steady_mean(ctx, d, "bed_height", s.i_start);
     double Vg = gf_ncr_att_double_or(d, "grain_volume_m3", NAN);
     if (!(Vg > 0.0) && !gf_stage_has_file(in, "particles.nc")) {
-        Vg = bed_volume(ctx, d, s.i_start);
+        Vg = bed_volume(d, h, steady_mean(ctx, d, "bed_packing_fraction", s.i_start));
         if (!(Vg > 0.0))
             return GF_FAIL(ctx, GF_ERR_IO, "%s: no particles.nc, and no bed_height, bed_packing_fraction and "
                                            "scene_param_length_over_D/width_over_D to estimate the grain volume",
@@ -146,7 +140,7 @@ static gf_status avalanche(gf_ctx *ctx, const gf_stage_in *in, const gf_ncr *d, 
     GF_TRY(gf_regime_classify(ctx, T, sc, &res));
     put_labels(row, T, sc, &res);
     gf_post_row_set(row, "Vg_m3", Vg);
-    gf_post_row_set(row, "T_over_Tv_boyer", boyer_T_over_Tv(ctx, d, s.i_start));
+    gf_post_row_set(row, "T_over_Tv_boyer", boyer_T_over_Tv(d, h));
     return GF_OK;
 }
 

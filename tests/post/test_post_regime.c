@@ -62,30 +62,12 @@
 #include "stages/gf_regime.h"
 #include "stages/gf_stage.h"
 #include "synth_stage.h"
-
-typedef struct table_pt {
-    double ratio, St, T_ms;
-    int ambiguous;   /* 1 boundary, 2 r ~ 4, 3 pairing */
-} table_pt;
-
-static const table_pt table42[] = {
-    {2.7, 0.03, 130, 3}, {2.7, 95, 25, 0},   {3, 28, 24, 0},     {4, 0.05, 605, 0},  {4, 155, 24, 0},
-    {5, 0.05, 589, 0},   {5, 51, 21, 0},     {6, 62, 21, 0},     {7, 0.15, 182, 0},  {7, 23, 23, 0},
-    {7.5, 79, 21, 2},    {10, 0.4, 71, 0},   {10, 107, 18, 2},   {15, 10, 28, 0},    {16, 0.7, 43, 1},
-    {16, 0.75, 28, 1},   {20, 220, 32, 0},   {30, 20, 32, 0},    {30, 330, 28, 0},   {40, 0.2, 243, 0},
-    {40, 177, 33, 0},    {75, 843, 31, 0},   {100, 0.04, 1200, 0}, {100, 111, 38, 0}};
-
-static gf_regime_label expected(double St, double r)
-{
-    if (r >= 4.0)
-        return St < 1.0 ? GF_REGIME_VISCOUS : GF_REGIME_FREE_FALL;
-    return St < r / 4.0 ? GF_REGIME_VISCOUS : GF_REGIME_INERTIAL;
-}
+#include "table42.h"
 
 static void table_check(void)
 {
     const double D = 5e-3, g = 9.81, s = sin(25.0 * M_PI / 180.0), rho_p = 2500.0;
-    const int n = (int)(sizeof table42 / sizeof table42[0]);
+    const int n = TABLE42_N;
     int agree_nearest = 0, agree_strict = 0, unamb = 0, unamb_agree = 0, unamb_strict = 0, unamb_02 = 0;
     printf("%6s %6s %8s %7s %9s %9s %9s  %-9s %-9s %-12s %s\n", "rho_p/rho", "r", "St", "T(ms)", "T/Tv", "T/Ti",
            "T/Tff", "expected", "nearest", "strict", "note");
@@ -102,7 +84,7 @@ static void table_check(void)
         const double T = p->T_ms * 1e-3;
         gf_regime_result res;
         GF_CHECK_OK(gf_regime_classify(&ctx, T, &sc, &res), &ctx);
-        const gf_regime_label want = expected(p->St, r);
+        const gf_regime_label want = table42_expected(p->St, r);
         agree_nearest += res.nearest == want;
         agree_strict += res.label == want;
         if (!p->ambiguous) {
