@@ -8,12 +8,15 @@
    thesis' label): 24/24 labels and 24/24 times. Then four labels made wrong
    and five times moved by factors 2.5, 0.3 (outside a factor 2) and 1.9, 0.6
    (inside): 20/24 labels, 21/24 times. One row removed: found 23.
+3. Its 24 points are those of tests/post/table42.h, which the C tests use
+   (the two copies must not drift apart).
 """
 import csv
 import importlib.util
 import io
 import math
 import os
+import re
 import sys
 import tempfile
 from contextlib import redirect_stdout
@@ -51,6 +54,14 @@ def score(rows):
     os.unlink(path)
     return out.getvalue().strip().splitlines()[-1]
 
+
+with open(os.path.join(here, "table42.h")) as f:
+    header = f.read()
+body = header[header.index("table42[] = {"):header.index("};", header.index("table42[] = {"))]
+points = [tuple(float(v) for v in m.groups())
+          for m in re.finditer(r"\{\s*([-\d.eE]+),\s*([-\d.eE]+),\s*([-\d.eE]+),\s*\d+\s*\}", body)]
+check(points == [tuple(float(v) for v in p) for p in rs.TABLE42],
+      "regime_score.py's TABLE42 differs from tests/post/table42.h (%d points there)" % len(points))
 
 check(abs(rs.t_viscous(2.5, 1.0) / 3.170195e-2 - 1) < 1e-5, "T_v %g" % rs.t_viscous(2.5, 1.0))
 
