@@ -15,9 +15,9 @@ double gf_boyer_Iv(const gf_boyer_law *law, double mu, int contact_only)
 {
     if (!(mu > law->mu1))
         return 0.0;
-    if (contact_only && !(mu < law->mu2))
-        return INFINITY;
-    /* bisection on log I_v: mu(I_v) increases monotonically */
+    if (contact_only) /* mu1 + (mu2 - mu1)/(1 + I0/I_v) = mu, solved for I_v */
+        return mu < law->mu2 ? law->I0 * (mu - law->mu1) / (law->mu2 - mu) : INFINITY;
+    /* full law: bisection on log I_v, mu(I_v) increasing monotonically */
     double lo = 1e-14, hi = 1e6;
     for (int it = 0; it < 200; ++it) {
         double m = sqrt(lo * hi);

@@ -38,6 +38,7 @@ static void law_checks(void)
     const double mu = tan(25.0 * M_PI / 180.0);
     GF_CHECK_REL(gf_boyer_Iv(b, mu, 1), b->I0 * (mu - b->mu1) / (b->mu2 - mu), 1e-9);
     GF_CHECK_REL(gf_boyer_Iv(b, mu, 1), 3.13036e-3, 1e-5);
+    GF_CHECK_REL(gf_boyer_mu(b, gf_boyer_Iv(b, mu, 1), 1), mu, 1e-12); /* the inverse inverts */
     double iv = gf_boyer_Iv(b, mu, 0);
     GF_CHECK_REL(gf_boyer_mu(b, iv, 0), mu, 1e-12);
     GF_CHECK(gf_boyer_Iv(b, 0.3, 0) == 0.0);  /* below mu1: no flow */
