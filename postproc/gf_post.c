@@ -240,7 +240,8 @@ static void read_identity(gf_post_row *row)
                                              {"realised_St", "realised_St"},
                                              {"realised_r", "realised_r"},
                                              {"phi_initial_measured", "phi_initial_measured"},
-                                             {"phi_initial_local", "phi_initial_local"}};
+                                             {"phi_initial_local", "phi_initial_local"},
+                                             {"seed", "seed"}};
         for (size_t m = 0; m < sizeof map / sizeof map[0]; ++m)
             gf_post_row_set(row, map[m][1], gf_ncr_att_double_or(&f, map[m][0], NAN));
         if (gf_ncr_att_double_or(&f, "column_length_m", 0.0) > 0.0) { /* a released column */

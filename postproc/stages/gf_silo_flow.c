@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "stages/gf_post_replicates.h"
 #include "stages/gf_post_stats.h"
 #include "stages/gf_stage_util.h"
 
@@ -149,48 +150,82 @@ int gf_silo_fit_saturation(const double *H, const double *Q, int n, double *Q0, 
     return 1;
 }
 
+/* The campaign's points: one per replicate set of silo runs (gf_post_replicates.h),
+ * the mean of its runs' D, Q, H and phi_out, and count[p] runs in it. On return
+ * set[i] is row i's point, -1 for a row without a steady discharge. point_of
+ * is scratch of n_rows. Returns the number of points, -1 when out of memory. */
+static int silo_points(gf_post_row *rows, int n_rows, int *set, int *point_of, double *D, double *Qnd, double *H,
+                       double *Q, double *phi, int *count)
+{
+    if (gf_post_replicate_groups(rows, n_rows, set) < 0)
+        return -1;
+    int n = 0;
+    for (int i = 0; i < n_rows; ++i)
+        point_of[i] = -1;
+    for (int i = 0; i < n_rows; ++i) {
+        const gf_post_row *r = &rows[i];
+        const int first = set[i]; /* still the first run of i's set: only rows before i are rewritten */
+        if (!isfinite(gf_post_row_get(r, "silo_Q_nd"))) {
+            set[i] = -1;
+            continue;
+        }
+        if (point_of[first] < 0) {
+            point_of[first] = n++;
+            int p = point_of[first];
+            D[p] = Qnd[p] = H[p] = Q[p] = phi[p] = 0.0, count[p] = 0;
+        }
+        const int p = set[i] = point_of[first];
+        D[p] += gf_post_row_get(r, "silo_D_over_d"), Qnd[p] += gf_post_row_get(r, "silo_Q_nd");
+        H[p] += gf_post_row_get(r, "silo_H_over_d"), Q[p] += gf_post_row_get(r, "silo_Q");
+        phi[p] += gf_post_row_get(r, "silo_phi_out");
+        ++count[p];
+    }
+    for (int p = 0; p < n; ++p)
+        D[p] /= count[p], Qnd[p] /= count[p], H[p] /= count[p], Q[p] /= count[p], phi[p] /= count[p];
+    return n;
+}
+
 void gf_silo_campaign_fits(gf_post_row *rows, int n_rows)
 {
     double *buf = calloc(5 * (size_t)(n_rows + 1), sizeof *buf);
-    int *idx = malloc((size_t)(n_rows + 1) * sizeof *idx);
-    if (!buf || !idx) {
-        free(buf), free(idx);
+    int *set = malloc(3 * (size_t)(n_rows + 1) * sizeof *set);
+    if (!buf || !set) {
+        free(buf), free(set);
         return;
     }
     double *D = buf, *Qnd = D + n_rows + 1, *H = Qnd + n_rows + 1, *Q = H + n_rows + 1, *phi = Q + n_rows + 1;
-    int n = 0;
-    for (int i = 0; i < n_rows; ++i) {
-        const gf_post_row *r = &rows[i];
-        if (!isfinite(gf_post_row_get(r, "silo_Q_nd")))
-            continue;
-        idx[n] = i;
-        D[n] = gf_post_row_get(r, "silo_D_over_d"), Qnd[n] = gf_post_row_get(r, "silo_Q_nd");
-        H[n] = gf_post_row_get(r, "silo_H_over_d"), Q[n] = gf_post_row_get(r, "silo_Q");
-        phi[n] = gf_post_row_get(r, "silo_phi_out");
-        ++n;
+    int *count = set + n_rows + 1, *point_of = count + n_rows + 1;
+    const int n = silo_points(rows, n_rows, set, point_of, D, Qnd, H, Q, phi, count);
+    if (n < 0) {
+        free(buf), free(set);
+        return;
     }
-    double k, C, R2, Q0, H0, a, b;
-    if (gf_silo_fit_beverloo(D, Qnd, n, &k, &C, &R2))
-        for (int j = 0; j < n; ++j) {
-            gf_post_row_set(&rows[idx[j]], "beverloo_k", k);
-            gf_post_row_set(&rows[idx[j]], "beverloo_C", C);
-            gf_post_row_set(&rows[idx[j]], "beverloo_R2", R2);
-        }
-    if (distinct(D, n, 1e-9) == 1 && distinct(H, n, 1.0) >= 3 && gf_silo_fit_saturation(H, Q, n, &Q0, &H0, &R2))
-        for (int j = 0; j < n; ++j) {
-            gf_post_row_set(&rows[idx[j]], "saturation_Q0", Q0);
-            gf_post_row_set(&rows[idx[j]], "saturation_H0_over_d", H0);
-            gf_post_row_set(&rows[idx[j]], "saturation_R2", R2);
-        }
+    double k = NAN, C = NAN, R2b = NAN, Q0 = NAN, H0 = NAN, R2s = NAN, a, b = NAN, R2q = NAN;
+    if (!gf_silo_fit_beverloo(D, Qnd, n, &k, &C, &R2b))
+        k = C = R2b = NAN;
+    if (!(distinct(D, n, 1e-9) == 1 && distinct(H, n, 1.0) >= 3 && gf_silo_fit_saturation(H, Q, n, &Q0, &H0, &R2s)))
+        Q0 = H0 = R2s = NAN;
     if (n >= 3 && distinct(D, n, 1e-9) == 1 && gf_stats_linfit(phi, Qnd, (size_t)n, &a, &b)) {
         double *p = H; /* reused: the saturation fit is done */
         for (int j = 0; j < n; ++j)
             p[j] = a + b * phi[j];
-        R2 = r_squared(Qnd, p, n);
-        for (int j = 0; j < n; ++j) {
-            gf_post_row_set(&rows[idx[j]], "Q_phi_slope", b);
-            gf_post_row_set(&rows[idx[j]], "Q_phi_R2", R2);
-        }
+        R2q = r_squared(Qnd, p, n);
+    } else {
+        b = NAN;
     }
-    free(buf), free(idx);
+    for (int i = 0; i < n_rows; ++i) {
+        if (set[i] < 0)
+            continue;
+        gf_post_row *r = &rows[i];
+        gf_post_row_set(r, "silo_replicates", count[set[i]]);
+        if (isfinite(k))
+            gf_post_row_set(r, "beverloo_k", k), gf_post_row_set(r, "beverloo_C", C),
+                gf_post_row_set(r, "beverloo_R2", R2b);
+        if (isfinite(H0))
+            gf_post_row_set(r, "saturation_Q0", Q0), gf_post_row_set(r, "saturation_H0_over_d", H0),
+                gf_post_row_set(r, "saturation_R2", R2s);
+        if (isfinite(b))
+            gf_post_row_set(r, "Q_phi_slope", b), gf_post_row_set(r, "Q_phi_R2", R2q);
+    }
+    free(buf), free(set);
 }

@@ -11,7 +11,11 @@
  * phi_out and the fill height averaged over the same window. The orifice
  * size is the hydraulic diameter D = 2 Ltx Lty / (Ltx + Lty) (thesis §3.4.2).
  *
- * Over a campaign (each law when its runs are there):
+ * Over a campaign (each law when its runs are there), through one point per
+ * experiment: runs that differ only by their seed (gf_post_replicates.h) are
+ * one point, the mean of their D, Q, H and phi_out (silo_replicates in each
+ * row says how many), so that seeds drawn again sharpen a law as a longer run
+ * would, and are not counted as points of their own:
  *  - Beverloo (Beverloo, Leniger & van de Velde 1961; thesis (3.16)):
  *    Q = C rho_n sqrt(g) (D - k d)^(5/2), rho_n = phi (6 / pi d^3), so that
  *    Q^(2/5) is linear in D: the line a + b D through (D/d, (Q sqrt(d/g))^(2/5))
@@ -21,7 +25,7 @@
  *    linear in Q0 for a given H0, which a golden-section search finds over
  *    [0.1 d, 100 d]; R^2. Three distinct H (1 d apart) at least.
  *  - Q against phi_out (thesis §3.4.3-3.4.4): the line Q = a + b phi_out and
- *    its R^2, over every silo run. Three runs at least.
+ *    its R^2, over the points. Three points at least.
  */
 #ifndef GF_SILO_FLOW_H
 #define GF_SILO_FLOW_H

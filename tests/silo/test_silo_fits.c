@@ -8,9 +8,16 @@
  *  - saturation Q = Q0 (1 - exp(-H/H0)), H0 = 5.7 d (thesis §3.4.1): H0 and
  *    Q0 to 1e-6 (golden section), R^2 = 1; too few heights refused;
  *  - Gaussian A exp(-(x - xc)^2 / (4 b z)) (Nedderman & Tuzun 1979) sampled
- *    on bins of d/2: b to 1e-9; a flat profile has no Gaussian (NaN).
+ *    on bins of d/2: b to 1e-9; a flat profile has no Gaussian (NaN);
+ *  - replicates: a study of Q against phi_out drawn with two seeds, each
+ *    pair scattered about the line by +-delta, is fitted through the pairs'
+ *    means (R^2 = 1, silo_replicates 2), while a run whose spec differs by
+ *    more than its seed stays a point of its own (R^2 < 1).
  */
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <sys/stat.h>
 
 #include "gf_test.h"
 #include "stages/gf_silo_flow.h"
@@ -58,10 +65,59 @@ static void test_gaussian(void)
     GF_CHECK(isnan(gf_silo_fit_gaussian(x, v, N, z, &R2)));
 }
 
+/* A run directory whose run.yaml differs from its study's only where asked. */
+static void silo_row(gf_post_row *row, const char *root, int k, double e_n, int seed, double end_time, double phi,
+                     double Q_nd)
+{
+    char dir[512], p[600];
+    snprintf(dir, sizeof dir, "%s/run%02d", root, k);
+    mkdir(dir, 0700);
+    snprintf(p, sizeof p, "%s/run.yaml", dir);
+    FILE *f = fopen(p, "w");
+    GF_CHECK(f != NULL);
+    if (f) {
+        fprintf(f, "# resolved spec of run%02d\nname: silo_restitution\nseed: %d\nend_time: %g\nscene:\n"
+                   "  name: silo\ncontact:\n  restitution: %g\n  friction: 0.5\n",
+                k, seed, end_time, e_n);
+        fclose(f);
+    }
+    gf_post_row_init(row, dir);
+    gf_post_row_set(row, "silo_D_over_d", 6.0);
+    gf_post_row_set(row, "silo_H_over_d", 15.0);
+    gf_post_row_set(row, "silo_Q", Q_nd * 140.07);
+    gf_post_row_set(row, "silo_Q_nd", Q_nd);
+    gf_post_row_set(row, "silo_phi_out", phi);
+}
+
+static void test_replicates(void)
+{
+    char root[] = "/tmp/gf_silo_replicates_XXXXXX";
+    GF_CHECK(mkdtemp(root) != NULL);
+    enum { N = 7 };
+    gf_post_row *rows = calloc(N, sizeof *rows);
+    const double e_n[3] = {0.1, 0.5, 0.9}, phi[3] = {0.394, 0.390, 0.385}, delta = 0.3;
+    for (int i = 0; i < 3; ++i) /* Q sqrt(d/g) = 32 + 400 (phi - 0.39) on the pairs' means */
+        for (int s = 0; s < 2; ++s)
+            silo_row(&rows[2 * i + s], root, 2 * i + s, e_n[i], s + 1, 600.0, phi[i],
+                     32.0 + 400.0 * (phi[i] - 0.39) + (s ? -delta : delta));
+    gf_silo_campaign_fits(rows, 2 * 3);
+    GF_CHECK_ABS(gf_post_row_get(&rows[0], "Q_phi_R2"), 1.0, 1e-12);
+    GF_CHECK_REL(gf_post_row_get(&rows[5], "Q_phi_slope"), 400.0, 1e-9);
+    GF_CHECK_ABS(gf_post_row_get(&rows[3], "silo_replicates"), 2.0, 0.0);
+    /* a shorter run of e_n = 0.1 is another experiment: a point of its own, off the line */
+    silo_row(&rows[6], root, 6, 0.1, 3, 120.0, 0.394, 32.0 + 400.0 * 0.004 + 1.0);
+    gf_silo_campaign_fits(rows, N);
+    GF_CHECK_ABS(gf_post_row_get(&rows[6], "silo_replicates"), 1.0, 0.0);
+    GF_CHECK(gf_post_row_get(&rows[0], "Q_phi_R2") < 0.99);
+    free(rows);
+    gf_test_remove_tree(root);
+}
+
 int main(void)
 {
     test_beverloo();
     test_saturation();
     test_gaussian();
+    test_replicates();
     return gf_test_finish();
 }
