@@ -2,18 +2,22 @@
 #include "continuum/gf_continuum_collapse.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "continuum/gf_continuum.h"
 #include "core/gf_groups.h"
 #include "continuum/gf_continuum_run.h"
 #include "io/gf_nc.h"
+#include "scenes/gf_measure.h"
 #include "scenes/gf_scene.h"
 
 static const gf_var_info collapse_diag[] = {
     {"front_position", "m", "front position from the back wall", NULL},
     {"deposit_height", "m", "maximum height of the deposit", NULL},
     {"packing_fraction", "1", "solid fraction of the initial column region", NULL},
+    {"deposit_extent_1D", "m", "x where the deposit's material height first falls below 1 D", NULL},
+    {"deposit_extent_2D", "m", "x where the deposit's material height first falls below 2 D", NULL},
 };
 
 typedef struct collapse_geom {
@@ -76,14 +80,14 @@ static double column_height(const gf_continuum *s, int i)
 double gf_continuum_collapse_extent(const gf_continuum *s, double depth_m)
 {
     const gf_grid *g = gf_continuum_grid(s);
-    double threshold = depth_m, dx = g->h_m[0], h_prev = 0.0;
-    for (int i = 0; i < g->n[0]; ++i) {
-        double h = column_height(s, i);
-        if (h < threshold)
-            return i == 0 ? 0.0 : (i - 0.5) * dx + dx * (h_prev - threshold) / (h_prev - h);
-        h_prev = h;
-    }
-    return g->n[0] * dx;
+    double *h = malloc((size_t)g->n[0] * sizeof *h);
+    if (!h)
+        return NAN;
+    for (int i = 0; i < g->n[0]; ++i)
+        h[i] = column_height(s, i);
+    double x = gf_measure_profile_extent(h, g->n[0], g->h_m[0], depth_m);
+    free(h);
+    return x;
 }
 
 double gf_continuum_collapse_front(const gf_continuum *s, double phi, double D)
@@ -114,16 +118,19 @@ typedef struct collapse_run {
     double phi, volume0_m2;
 } collapse_run;
 
-/* front_position, deposit_height, packing_fraction (a gf_continuum_sampler; user: the collapse_run) */
+/* front_position, deposit_height, packing_fraction, deposit_extent_1D and _2D (a gf_continuum_sampler;
+ * user: the collapse_run). The material height is the column's: the continuum is at phi throughout. */
 static void sample_record(const gf_continuum *s, void *user, double *values)
 {
     const collapse_run *cr = user;
     double front, height, volume, height_max;
     measure(s, &cr->cg, cr->phi, &front, &height, &volume, &height_max);
     values[0] = front, values[1] = height_max, values[2] = cr->phi;
+    values[3] = gf_continuum_collapse_extent(s, cr->cg.D);
+    values[4] = gf_continuum_collapse_extent(s, 2.0 * cr->cg.D);
 }
 
-static const gf_continuum_diagnostics collapse_diagnostics = {collapse_diag, 3, sample_record};
+static const gf_continuum_diagnostics collapse_diagnostics = {collapse_diag, 5, sample_record};
 
 /* The column R0 x H0 against the back wall, and its volume (user: the collapse_run). */
 static void fill_column(gf_continuum *s, void *user)

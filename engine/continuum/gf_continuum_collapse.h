@@ -10,7 +10,8 @@
  * campaign runs both methods on the same column; the law and the grid from
  * the spec's continuum section.
  * Writes diagnostics.nc (front_position, deposit_height, packing_fraction,
- * the names of the DEM scene) every output.interval_nd when output_dir is set.
+ * deposit_extent_1D and _2D: the names and measures of the DEM scene) every
+ * output.interval_nd when output_dir is set.
  */
 #ifndef GF_CONTINUUM_COLLAPSE_H
 #define GF_CONTINUUM_COLLAPSE_H
@@ -30,7 +31,8 @@ typedef struct gf_continuum_collapse_result {
 } gf_continuum_collapse_result;
 
 /* The farthest x of the deposit, contiguous from the back wall x = 0, whose depth sum_j c h_y is at
- * least depth_m, interpolated linearly between column centres where it crosses depth_m. */
+ * least depth_m, interpolated linearly between column centres where it crosses depth_m
+ * (gf_measure_profile_extent); NaN when out of memory. */
 double gf_continuum_collapse_extent(const gf_continuum *s, double depth_m);
 /* The front as the DEM scene measures it (gf_scene_column_collapse.c): the farthest x of the
  * deposit, contiguous from the back wall x = 0, whose solid height phi sum_j c h_y is at least

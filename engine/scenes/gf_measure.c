@@ -234,6 +234,14 @@ gf_status gf_measure_deposit_profile(gf_ctx *ctx, const gf_particles *p, const g
     return GF_OK;
 }
 
+double gf_measure_profile_extent(const double *h, int n, double dx, double depth)
+{
+    for (int i = 0; i < n; ++i)
+        if (h[i] < depth)
+            return i == 0 ? 0.0 : (i - 0.5) * dx + dx * (h[i - 1] - depth) / (h[i - 1] - h[i]);
+    return n * dx;
+}
+
 gf_status gf_measure_fit_mu_of_I(gf_ctx *ctx, const double *I, const double *mu, int n, double I0, double *mu1,
                                  double *mu2)
 {

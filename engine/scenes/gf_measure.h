@@ -110,6 +110,14 @@ gf_status gf_measure_deposit_profile(gf_ctx *ctx, const gf_particles *p, const g
                                      double dx_m, int n_bins, double min_solid_height_m, int max_gap,
                                      double *top_m, double *solid_m, gf_measure_deposit *out);
 
+/* Extent of a deposit profile h[0..n) on bins (cells) of dx from the back
+ * wall x = 0: the x where h first falls below depth_m, linear between the
+ * centres of the last bin at or above it and the first below (0 when the
+ * first bin is below, n dx when none is). The same measure for the grains'
+ * binned heights and the continuum's columns, so that their deposits are
+ * compared point for point (docs/continuum.md, "Column collapse"). */
+double gf_measure_profile_extent(const double *h_m, int n, double dx_m, double depth_m);
+
 /* Least-squares mu1, mu2 of mu(I) = mu1 + (mu2 - mu1) I/(I0 + I) at fixed I0.
  * Errors: fewer than 2 points or all at the same I. */
 gf_status gf_measure_fit_mu_of_I(gf_ctx *ctx, const double *I, const double *mu, int n, double I0, double *mu1,

@@ -46,7 +46,12 @@
  * bins of dx = D (a single saltating grain in a bin carries 0.17 D at W = 3D
  * and does not count; gaps of one bin are tolerated); deposit_height, the
  * highest grain top among those bins; packing_fraction, the sampled solid
- * fraction of the initial column box [1.5D, R0 - 1.5D] x [1.5D, H0 - 1.5D].
+ * fraction of the initial column box [1.5D, R0 - 1.5D] x [1.5D, H0 - 1.5D];
+ * deposit_extent_1D and _2D, the x where the material height first falls
+ * below 1 D and 2 D (gf_measure_profile_extent, bins of D): the solid height
+ * over the column's own packing, phi_col = sum V_i / (R0 H0 W) of the mobile
+ * grains (conserved), the height a continuum at phi_col gives the same mass,
+ * so that the continuum's deposit is compared with the same measure.
  * done(): after t > 2 T0 (T0 = sqrt(2 H0/g), the free-fall time of §5.3),
  * the mean kinetic energy per mobile grain is below rest_energy x m g D
  * (1e-4 by default: a grain at rest energy moves at ~0.014 sqrt(gD)).
@@ -93,6 +98,8 @@ static const gf_var_info column_diag[] = {
     {"front_position", "m", "front position from the back wall", NULL},
     {"deposit_height", "m", "maximum height of the deposit", NULL},
     {"packing_fraction", "1", "solid fraction of the initial column region", NULL},
+    {"deposit_extent_1D", "m", "x where the deposit's material height first falls below 1 D", NULL},
+    {"deposit_extent_2D", "m", "x where the deposit's material height first falls below 2 D", NULL},
 };
 
 typedef struct column_geom {
@@ -222,19 +229,39 @@ static double column_region_phi(gf_sim *sim, const column_geom *g)
     return gf_measure_solid_fraction_box(gf_sim_particles(sim), &d, lo, hi, g->D / 8.0, 0);
 }
 
+/* Solid volume of the mobile grains over R0 H0 W: the column's packing, the same at every time. */
+static double column_phi(gf_sim *sim, const column_geom *g)
+{
+    const gf_particles *p = gf_sim_particles(sim);
+    double vol = 0.0;
+    for (size_t i = 0; i < p->n_local; ++i)
+        if (!(p->flags[i] & GF_P_GLUED))
+            vol += sphere_volume(p->radius_m[i]);
+    return vol / (g->R0 * g->H0 * g->W);
+}
+
 static gf_status column_diagnose(gf_sim *sim, double *v)
 {
     column_geom g;
     column_geom_of(gf_sim_spec(sim), &g);
     gf_measure_domain d = column_domain(sim);
     int n_bins = (int)ceil(g.L / g.D);
+    double *solid = malloc((size_t)n_bins * sizeof *solid);
+    if (!solid)
+        return GF_FAIL(gf_sim_ctx(sim), GF_ERR_NOMEM, "column_collapse: cannot allocate %d bins", n_bins);
     gf_measure_deposit dep;
-    GF_TRY(gf_measure_deposit_profile(gf_sim_ctx(sim), gf_sim_particles(sim), &d, 0.0, g.D, n_bins, 0.25 * g.D, 1,
-                                      NULL, NULL, &dep));
-    v[0] = dep.front_m;
-    v[1] = dep.height_m;
-    v[2] = column_region_phi(sim, &g);
-    return GF_OK;
+    gf_status st = gf_measure_deposit_profile(gf_sim_ctx(sim), gf_sim_particles(sim), &d, 0.0, g.D, n_bins,
+                                              0.25 * g.D, 1, NULL, solid, &dep);
+    if (st == GF_OK) {
+        const double phi_col = column_phi(sim, &g);
+        v[0] = dep.front_m;
+        v[1] = dep.height_m;
+        v[2] = column_region_phi(sim, &g);
+        v[3] = gf_measure_profile_extent(solid, n_bins, g.D, phi_col * g.D);
+        v[4] = gf_measure_profile_extent(solid, n_bins, g.D, phi_col * 2.0 * g.D);
+    }
+    free(solid);
+    return st;
 }
 
 static int column_done(gf_sim *sim)

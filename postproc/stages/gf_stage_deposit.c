@@ -17,6 +17,12 @@
  * within D/2 of its final position.
  * Writes post_deposit.nc: time, front_position, (x_front − R0)/R0, and the
  * final envelope deposit_height(x_bin).
+ * Both methods (grains and continuum): the last record of the diagnostics'
+ * front_position, deposit_extent_1D and deposit_extent_2D, as (x − R0)/R0,
+ * the measures the engine makes the same way for the two (solid height at
+ * least D/4; material height, the solid height over the column's packing, at
+ * least 1 D and 2 D: gf_scene_column_collapse.c), so that a campaign of
+ * `method: dem` and `method: continuum` runs compares them column by column.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -71,6 +77,27 @@ static gf_status deposit_from_diagnostics(gf_ctx *ctx, const gf_stage_in *in, gf
     return st;
 }
 
+/* front_D4_norm, extent_1D_norm, extent_2D_norm from the diagnostics' last record, when it has them. */
+static void extents_from_diagnostics(const gf_stage_in *in, gf_post_row *row)
+{
+    static const char *const var[3] = {"front_position", "deposit_extent_1D", "deposit_extent_2D"};
+    static const char *const col[3] = {"front_D4_norm", "extent_1D_norm", "extent_2D_norm"};
+    gf_ctx c = {0};
+    gf_ncr d;
+    if (!gf_stage_has_file(in, "diagnostics.nc") || gf_stage_open(&c, in, "diagnostics.nc", &d) != GF_OK)
+        return;
+    double R0, H0;
+    gf_stage_column(&d, &R0, &H0);
+    for (int k = 0; k < 3 && R0 > 0.0; ++k) {
+        double *x = NULL;
+        size_t n = 0;
+        if (gf_ncr_has_var(&d, var[k]) && gf_ncr_var_1d(&c, &d, var[k], &x, &n) == GF_OK && n > 0)
+            gf_post_row_set(row, col[k], (x[n - 1] - R0) / R0);
+        free(x);
+    }
+    gf_ncr_close(&d);
+}
+
 /* 1 when diagnostics.nc says it was written by the continuum (its "stages"
  * attribute): the heap is then its deposit_height and front_position. A grain
  * run without particles.nc (output.particles: false) is not one: its heap's
@@ -94,6 +121,7 @@ gf_status gf_stage_deposit(gf_ctx *ctx, const gf_stage_in *in, const gf_stage_op
 {
     if (!gf_stage_is_column(in))
         return GF_ERR_UNSUPPORTED;   /* only a released column leaves a heap against a back wall */
+    extents_from_diagnostics(in, out->row);
     if (!gf_stage_has_file(in, "particles.nc") && heap_in_diagnostics(in))
         return deposit_from_diagnostics(ctx, in, out);
     gf_ncr p;

@@ -20,9 +20,10 @@ const gf_stage_info gf_stage_table[] = {
      "bed_packing_fraction or front_position; particles.nc: "
      "radius, glued",
      "summary row"},
-    {"deposit", 1, gf_stage_deposit,
+    {"deposit", 2, gf_stage_deposit,
      "attribute column_length_m > 0 (a released column); particles.nc: x, y, radius, glued (all frames); "
-     "diagnostics.nc: front_position, deposit_height (continuum runs: stages = continuum)",
+     "diagnostics.nc: front_position, deposit_height (continuum runs: stages = continuum), "
+     "deposit_extent_1D, deposit_extent_2D (both methods, when written)",
      "summary row, post_deposit.nc"},
     {"pore_pressure", 1, gf_stage_pore_pressure,
      "probes.nc: excess_pore_pressure, station_name, x, y; attribute column_length_m (the gauge at 13/16 R0)",

@@ -110,6 +110,26 @@ static void small_collapse(gf_ctx *ctx, const method_run *m)
     GF_CHECK(fabs(r.mass_drift) < 1e-3);
     GF_CHECK(r.front_m > R0 + D);
     GF_CHECK_ABS(r.height_m, H0, D);
+    /* the extents the DEM scene writes too: at t = 0 the step of the column read between the centres of
+     * its last cell and the next, R0 + D/2 - D depth/H0 (cell D); at the end, deeper is shorter */
+    gf_ncr f;
+    double *e1 = NULL, *e2 = NULL, *xf = NULL;
+    size_t n1 = 0, n2 = 0, nf = 0;
+    GF_CHECK_OK(gf_ncr_open(ctx, path, &f), ctx);
+    GF_CHECK_OK(gf_ncr_var_1d(ctx, &f, "deposit_extent_1D", &e1, &n1), ctx);
+    GF_CHECK_OK(gf_ncr_var_1d(ctx, &f, "deposit_extent_2D", &e2, &n2), ctx);
+    GF_CHECK_OK(gf_ncr_var_1d(ctx, &f, "front_position", &xf, &nf), ctx);
+    gf_ncr_close(&f);
+    if (n1 > 1 && n1 == n2 && n1 == nf) {
+        GF_CHECK_ABS(e1[0], R0 + 0.5 * D - D * D / H0, 1e-9 * D);
+        GF_CHECK_ABS(e2[0], R0 + 0.5 * D - 2.0 * D * D / H0, 1e-9 * D);
+        printf("extents at the end: (x - R0)/R0 = %.3f (1 D deep), %.3f (2 D), front %.3f\n", (e1[n1 - 1] - R0) / R0,
+               (e2[n1 - 1] - R0) / R0, (xf[n1 - 1] - R0) / R0);
+        GF_CHECK(e2[n1 - 1] < e1[n1 - 1] && e1[n1 - 1] < xf[n1 - 1] && e1[n1 - 1] > R0);
+    } else {
+        GF_CHECK(!"deposit_extent_1D, _2D and front_position: same length, two records at least");
+    }
+    free(e1), free(e2), free(xf);
 }
 
 static double last_flow_rate(gf_ctx *ctx, const char *run_dir)

@@ -399,7 +399,7 @@ static int run_collapse(const run_args *a, int verbose, collapse_run *r)
     const gf_scene_desc *sc = gf_scene_find("column_collapse");
     sc->initial_packing(sim, &r->phi_m, &r->phi_l);
     gf_particles *p = gf_sim_particles(sim);
-    double m_mean = mean_mobile_mass(p, &r->n_grains), v[3], pb[N_GAUGE];
+    double m_mean = mean_mobile_mass(p, &r->n_grains), v[5], pb[N_GAUGE];
     double t_end = a->end_tv * t_visq, dt = gf_sim_dt_s(sim);
     long n_chunk = (long)ceil(50.0 * t_visq / dt);
     unsigned char *mobile = mobile_mask(p);

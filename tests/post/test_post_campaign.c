@@ -1,7 +1,8 @@
 /*
  * Lab notebook — gf_post_campaign on a synthetic campaign of five runs:
  *   a_collapse   column collapse, done: particles (40 frames), diagnostics
- *                (front_position, ecx_per_grain), probes (two gauges)
+ *                (front_position, deposit_extent_1D and _2D, ecx_per_grain),
+ *                probes (two gauges)
  *   b_avalanche  avalanche, done: particles, diagnostics (grain_flow_rate,
  *                fluid_flow_rate, ecx_per_grain)
  *   c_failed     status "failed: ..." (no analysis, reason in the row)
@@ -43,7 +44,7 @@ static void collapse_run(const char *dir, const char *id, int with_ecx)
         for (int j = 0; (j + 1.0) * D <= h + 0.5 * D && n < NMAX; ++j)
             x[n] = xc, y[n] = (j + 0.5) * D, r[n++] = 0.5 * D;
     }
-    double front[NT], ecx[NT];
+    double front[NT], ecx[NT], ext1[NT], ext2[NT];
     for (int k = 0; k < NT; ++k) {
         t[k] = 0.05 * k;
         const double S = k == NT - 1 ? 1.0 : 0.5 * (1.0 + tanh((t[k] - 0.8) / 0.2));
@@ -51,13 +52,14 @@ static void collapse_run(const char *dir, const char *id, int with_ecx)
         for (size_t i = 0; i < n; ++i)
             X[i * NT + k] = x[i] * f, Y[i * NT + k] = y[i];
         front[k] = R0 + (R - R0) * S;
+        ext1[k] = front[k] - 2.0 * D, ext2[k] = front[k] - 4.0 * D; /* the engine's deposit_extent_1D, _2D */
         ecx[k] = 1e-6 * exp(-(t[k] - 0.8) * (t[k] - 0.8) / 0.04);
     }
     synth_particles(dir, &m, n, NT, t, r, NULL, X, Y, NULL, NULL);
-    const char *names[] = {"front_position", "ecx_per_grain"};
-    const char *units[] = {"m", "J"};
-    const double *vals[] = {front, ecx};
-    synth_diagnostics(dir, &m, NT, t, with_ecx ? 2 : 1, names, units, vals);
+    const char *names[] = {"front_position", "deposit_extent_1D", "deposit_extent_2D", "ecx_per_grain"};
+    const char *units[] = {"m", "m", "m", "J"};
+    const double *vals[] = {front, ext1, ext2, ecx};
+    synth_diagnostics(dir, &m, NT, t, with_ecx ? 4 : 3, names, units, vals);
     double P[2 * NT];
     for (int k = 0; k < NT; ++k) {
         P[k] = 5.0 * exp(-(t[k] - 0.7) * (t[k] - 0.7) / 0.02);
@@ -241,6 +243,13 @@ int main(void)
         GF_CHECK(v[0] != '\0');
         csv_field(csv, "a_collapse", "deposit_shape", v, sizeof v);
         GF_CHECK(strcmp(v, "trapezoid") == 0);
+        /* the engine's measures, the same for grains and continuum: (x - R0)/R0 at the last record, R = 24 D */
+        csv_field(csv, "a_collapse", "front_D4_norm", v, sizeof v);
+        GF_CHECK_ABS(atof(v), 0.5, 1e-12);
+        csv_field(csv, "a_collapse", "extent_1D_norm", v, sizeof v);
+        GF_CHECK_ABS(atof(v), 0.375, 1e-12);
+        csv_field(csv, "a_collapse", "extent_2D_norm", v, sizeof v);
+        GF_CHECK_ABS(atof(v), 0.25, 1e-12);
         csv_field(csv, "a_collapse", "Pb_station", v, sizeof v);
         GF_CHECK(strcmp(v, "x13D") == 0);
         csv_field(csv, "a_collapse", "Pb_min_Pa", v, sizeof v);

@@ -64,14 +64,19 @@ static void collapse(double a, unsigned seed, double *runout, double *h_over_r0,
     }
     double t1 = runner_now_s();
     const gf_scene_desc *d = gf_scene_find("column_collapse");
-    double phi_m, phi_l;
+    double phi_m, phi_l, v[5]; /* the scene's diagnostics (gf_scene_column_collapse.c) */
     d->initial_packing(sim, &phi_m, &phi_l);
     *phi_i = phi_l;
+    /* at t = 0 the material height is the column's H0 over bins of D up to R0 = 16 D: its extents are
+     * the continuum's, R0 + D/2 - D depth/H0 (test_continuum_method), to the packing's grain-scale
+     * unevenness (0.1 D) */
+    const double D = spec.grains.diameter_m, R0 = 16 * D, H0 = a * R0;
+    GF_CHECK_OK(d->diagnose(sim, v), &ctx);
+    GF_CHECK_ABS(v[3], R0 + 0.5 * D - D * D / H0, 0.1 * D);
+    GF_CHECK_ABS(v[4], R0 + 0.5 * D - 2.0 * D * D / H0, 0.1 * D);
     double T0_nd = sqrt(2.0 * a * 16.0);
     long steps = runner_until_done(sim, 10.0 * T0_nd + 40.0, 1.0);
-    double v[3];
     GF_CHECK_OK(d->diagnose(sim, v), &ctx);
-    double D = spec.grains.diameter_m, R0 = 16 * D;
     *runout = (v[0] - R0) / R0;
     *h_over_r0 = v[1] / R0;
     /* the final profile, for the notebook: envelope (top of grains) and solid height per D bin */

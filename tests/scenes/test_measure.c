@@ -109,6 +109,20 @@ static void test_front_ignores_saltating_grain(void)
     gf_particles_destroy(&p);
 }
 
+/* Extent of a profile: exact on a linear flank (the interpolation is linear),
+ * 0 when the first bin is below the depth, the whole length when none is. */
+static void test_profile_extent(void)
+{
+    enum { N = 40 };
+    const double dx = 0.01, L = 30.3 * dx, H = 12.0 * dx;
+    double h[N];
+    for (int i = 0; i < N; ++i)
+        h[i] = fmax(0.0, H * (1.0 - (i + 0.5) * dx / L));
+    GF_CHECK_ABS(gf_measure_profile_extent(h, N, dx, 2.0 * dx), L * (1.0 - 2.0 / 12.0), 1e-12);
+    GF_CHECK_ABS(gf_measure_profile_extent(h, N, dx, 13.0 * dx), 0.0, 0.0);
+    GF_CHECK_ABS(gf_measure_profile_extent(h, N, dx, -1.0), N * dx, 0.0);
+}
+
 /* mu(I) with I0 fixed is linear in (mu1, mu2): exact recovery of Jop et al.
  * (2006) glass-bead values from noiseless points. */
 static void test_mu_of_I_fit_recovers_jop(void)
@@ -231,6 +245,7 @@ int main(void)
     test_sampled_fraction_of_jittered_lattice();
     test_profile_of_sheared_lattice();
     test_front_ignores_saltating_grain();
+    test_profile_extent();
     test_mu_of_I_fit_recovers_jop();
     test_janssen_fit_recovers_lambda();
     test_runout_fit();

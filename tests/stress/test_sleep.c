@@ -61,7 +61,7 @@ static double collapse(double sleep, double dt_over_tc, double *runout, double *
     GF_CHECK_OK(gf_sim_advance(sim, steps), &ctx);
     double wall = runner_now_s() - t0;
     const gf_scene_desc *d = gf_scene_find("column_collapse");
-    double v[3];
+    double v[5]; /* the scene's diagnostics (gf_scene_column_collapse.c) */
     GF_CHECK_OK(d->diagnose(sim, v), &ctx);
     *runout = (v[0] - R0) / R0;
     *h_over_r0 = v[1] / R0;
