@@ -229,13 +229,14 @@ static double column_region_phi(gf_sim *sim, const column_geom *g)
     return gf_measure_solid_fraction_box(gf_sim_particles(sim), &d, lo, hi, g->D / 8.0, 0);
 }
 
-/* Solid volume of the mobile grains over R0 H0 W: the column's packing, the same at every time. */
-static double column_phi(gf_sim *sim, const column_geom *g)
+/* Solid volume of the mobile grains at x < x_max over R0 H0 W (Rondon et al. 2011's estimate of the
+ * column's packing); over every x it is the same at every time. */
+static double column_phi(gf_sim *sim, const column_geom *g, double x_max)
 {
     const gf_particles *p = gf_sim_particles(sim);
     double vol = 0.0;
     for (size_t i = 0; i < p->n_local; ++i)
-        if (!(p->flags[i] & GF_P_GLUED))
+        if (!(p->flags[i] & GF_P_GLUED) && p->x_m[i] < x_max)
             vol += sphere_volume(p->radius_m[i]);
     return vol / (g->R0 * g->H0 * g->W);
 }
@@ -253,7 +254,7 @@ static gf_status column_diagnose(gf_sim *sim, double *v)
     gf_status st = gf_measure_deposit_profile(gf_sim_ctx(sim), gf_sim_particles(sim), &d, 0.0, g.D, n_bins,
                                               0.25 * g.D, 1, NULL, solid, &dep);
     if (st == GF_OK) {
-        const double phi_col = column_phi(sim, &g);
+        const double phi_col = column_phi(sim, &g, INFINITY);
         v[0] = dep.front_m;
         v[1] = dep.height_m;
         v[2] = column_region_phi(sim, &g);
@@ -279,12 +280,7 @@ static gf_status column_initial_packing(gf_sim *sim, double *phi_measured, doubl
 {
     column_geom g;
     column_geom_of(gf_sim_spec(sim), &g);
-    const gf_particles *p = gf_sim_particles(sim);
-    double vol = 0.0;
-    for (size_t i = 0; i < p->n_local; ++i)
-        if (!(p->flags[i] & GF_P_GLUED) && p->x_m[i] < g.R0)
-            vol += sphere_volume(p->radius_m[i]);
-    *phi_measured = vol / (g.R0 * g.H0 * g.W); /* Rondon et al. 2011 estimate: solid volume / R0 H0 W */
+    *phi_measured = column_phi(sim, &g, g.R0);
     *phi_local = column_region_phi(sim, &g);
     return GF_OK;
 }

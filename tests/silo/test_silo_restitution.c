@@ -6,7 +6,7 @@
  * The effect is small (Q falls 8 % from e_n = 0.1 to 0.95, phi_out by
  * 0.009) and phi_out's own noise over a window of 600 sqrt(d/g) is 0.0012,
  * so the study is run as docs/silo.md gives it: the campaign
- * configs/silo_restitution.yaml in the 15 d silo (6 d orifice, whose Q is the
+ * configs/silo_restitution.yaml (read from GF_SOURCE_DIR) in the 15 d silo (6 d orifice, whose Q is the
  * thesis silo's), 600 sqrt(d/g) of discharge a run, drawn with seeds 1, 2
  * and 3 (18 runs, about 4.2 CPU-h), through the scheduler and
  * `grainflow post`, whose fits go through one point per e_n, the mean of
@@ -28,36 +28,14 @@
 #include "gf_post.h"
 #include "gf_summary.h"
 #include "gf_test.h"
-#include "gf_test_campaign.h"
 #include "schedule/gf_sched.h"
 
-/* configs/silo_restitution.yaml with the docs' 15 d silo and window, seeds 1-3 (the same run ids) */
-static const char *campaign_text =
-    "name: silo_restitution\nseed: 1\nend_time: 600\n"
-    "scene: {name: silo, width_x_over_d: 15, width_z_over_d: 15, height_over_d: 30, fill_height_over_d: 15,\n"
-    "        reinject_height_over_d: 25, orifice_x_over_d: 6, orifice_z_over_d: 6, settle_time_nd: 10}\n"
-    "grains: {diameter_m: 0.5e-3, polydispersity: 0.0, density_kg_m3: 2500}\n"
-    "contact: {t_contact_nd: 0.00497, restitution: 0.885, friction: 0.5, wall_friction: 0.5, kt_over_kn: 0.2857}\n"
-    "output: {interval_nd: 0.5, particles: false, fields: false, probes: false}\n"
-    "variants:\n"
-    "  - {label: e0.1-s1, contact.restitution: 0.1, seed: 1}\n"
-    "  - {label: e0.3-s1, contact.restitution: 0.3, seed: 1}\n"
-    "  - {label: e0.5-s1, contact.restitution: 0.5, seed: 1}\n"
-    "  - {label: e0.7-s1, contact.restitution: 0.7, seed: 1}\n"
-    "  - {label: e0.885-s1, contact.restitution: 0.885, seed: 1}\n"
-    "  - {label: e0.95-s1, contact.restitution: 0.95, seed: 1}\n"
-    "  - {label: e0.1-s2, contact.restitution: 0.1, seed: 2}\n"
-    "  - {label: e0.3-s2, contact.restitution: 0.3, seed: 2}\n"
-    "  - {label: e0.5-s2, contact.restitution: 0.5, seed: 2}\n"
-    "  - {label: e0.7-s2, contact.restitution: 0.7, seed: 2}\n"
-    "  - {label: e0.885-s2, contact.restitution: 0.885, seed: 2}\n"
-    "  - {label: e0.95-s2, contact.restitution: 0.95, seed: 2}\n"
-    "  - {label: e0.1-s3, contact.restitution: 0.1, seed: 3}\n"
-    "  - {label: e0.3-s3, contact.restitution: 0.3, seed: 3}\n"
-    "  - {label: e0.5-s3, contact.restitution: 0.5, seed: 3}\n"
-    "  - {label: e0.7-s3, contact.restitution: 0.7, seed: 3}\n"
-    "  - {label: e0.885-s3, contact.restitution: 0.885, seed: 3}\n"
-    "  - {label: e0.95-s3, contact.restitution: 0.95, seed: 3}\n";
+/* docs/silo.md's command: configs/silo_restitution.yaml in the 15 d silo over 600 sqrt(d/g), once per seed */
+static const char *const docs_sets[] = {"scene.width_x_over_d=15",        "scene.width_z_over_d=15",
+                                        "scene.height_over_d=30",         "scene.fill_height_over_d=15",
+                                        "scene.reinject_height_over_d=25", "end_time=600",
+                                        NULL /* seed=N */};
+enum { N_SETS = sizeof docs_sets / sizeof docs_sets[0] };
 
 enum { N_EN = 6, N_SEEDS = 3 };
 static const double e_n[N_EN] = {0.1, 0.3, 0.5, 0.7, 0.885, 0.95};
@@ -79,8 +57,8 @@ static const gf_post_row *row_of(const gf_post_row *rows, int n, const char *run
     return NULL;
 }
 
-/* Mean Q and phi_out per e_n over the seeds, from the summary's rows. */
-static void points(const gf_campaign *c, const gf_post_row *rows, int n_rows, double *Q, double *phi, int *count)
+/* Adds each run's Q and phi_out over N_SEEDS to its e_n's point, from the summary's rows. */
+static void add_points(const gf_campaign *c, const gf_post_row *rows, int n_rows, double *Q, double *phi, int *count)
 {
     for (int r = 0; r < c->n_runs; ++r) {
         const gf_run_spec *s = &c->runs[r].spec;
@@ -96,12 +74,29 @@ static void points(const gf_campaign *c, const gf_post_row *rows, int n_rows, do
     }
 }
 
+/* The study with seed `seed`, as `grainflow campaign ... --set seed=N --resume` runs it; NULL when refused. */
+static gf_campaign *study(gf_ctx *ctx, const char *src, int seed)
+{
+    char path[1100], seed_set[32];
+    const char *sets[N_SETS];
+    snprintf(path, sizeof path, "%s/configs/silo_restitution.yaml", src);
+    snprintf(seed_set, sizeof seed_set, "seed=%d", seed);
+    for (int k = 0; k + 1 < N_SETS; ++k)
+        sets[k] = docs_sets[k];
+    sets[N_SETS - 1] = seed_set;
+    gf_campaign *c = NULL;
+    GF_CHECK_OK(gf_campaign_load_file(ctx, path, sets, N_SETS, &c), ctx);
+    return c;
+}
+
 int main(void)
 {
     gf_ctx ctx = {0};
-    gf_campaign *c = gf_test_campaign(&ctx, "silo_restitution.yaml", campaign_text);
-    if (!c)
-        return gf_test_finish();
+    const char *src = getenv("GF_SOURCE_DIR");
+    gf_campaign *c[N_SEEDS] = {NULL};
+    for (int k = 0; k < N_SEEDS; ++k)
+        if (!(c[k] = study(&ctx, src ? src : ".", k + 1)))
+            return gf_test_finish();
     char tmp[] = "/tmp/gf_silo_restitution_XXXXXX", campaign_dir[1200], summary[1300];
     const char *out = getenv("GF_TEST_RUNS");
     if (!out) {
@@ -110,10 +105,12 @@ int main(void)
     }
     const int jobs = getenv("GF_TEST_JOBS") ? atoi(getenv("GF_TEST_JOBS")) : 2;
     gf_sched_opts so = {.out_dir = out, .n_jobs = jobs, .resume = 1};
-    gf_sched_counts counts;
-    GF_CHECK_OK(gf_sched_run(&ctx, c, &so, &counts), &ctx);
-    GF_CHECK(counts.n_failed == 0);
-    snprintf(campaign_dir, sizeof campaign_dir, "%s/silo_restitution", out);
+    for (int k = 0; k < N_SEEDS; ++k) {
+        gf_sched_counts counts;
+        GF_CHECK_OK(gf_sched_run(&ctx, c[k], &so, &counts), &ctx);
+        GF_CHECK(counts.n_failed == 0);
+    }
+    snprintf(campaign_dir, sizeof campaign_dir, "%s/%s", out, c[0]->name);
     gf_post_options po = {.stage = NULL, .n_jobs = 1, .figures = 0, .quiet = 1};
     GF_CHECK_OK(gf_post_campaign(&ctx, campaign_dir, &po), &ctx);
     snprintf(summary, sizeof summary, "%s/summary.nc", campaign_dir);
@@ -122,8 +119,8 @@ int main(void)
     GF_CHECK_OK(gf_summary_read(&ctx, summary, &rows, &n_rows), &ctx);
     double Q[N_EN] = {0}, phi[N_EN] = {0};
     int count[N_EN] = {0};
-    if (rows)
-        points(c, rows, n_rows, Q, phi, count);
+    for (int k = 0; rows && k < N_SEEDS; ++k)
+        add_points(c[k], rows, n_rows, Q, phi, count);
     int q_down = 1, phi_down = 1;
     for (int k = 0; k < N_EN; ++k) {
         printf("e_n %.3f: Q %.1f grains/s, phi_out %.4f (mean of %d seeds)\n", e_n[k], Q[k], phi[k], count[k]);
@@ -139,6 +136,7 @@ int main(void)
     GF_CHECK(phi_down);
     GF_CHECK(R2 > 0.9);
     free(rows);
-    gf_campaign_destroy(&c);
+    for (int k = 0; k < N_SEEDS; ++k)
+        gf_campaign_destroy(&c[k]);
     return out == tmp ? gf_test_finish_removing(tmp) : gf_test_finish();
 }
