@@ -65,6 +65,9 @@ typedef struct gf_fluid_spec {
                                  on R - this x dx (Breugem, J. Comput. Phys. 2012); 0: on R (Izard 2014) */
     char ibm_forcing[GF_NAME_LEN]; /* resolved tier: "smoothed" (Izard 2014) or "markers" (Uhlmann 2005,
                                       Breugem 2012; coupling/gf_ibm_markers.h) */
+    int ibm_contact_correction; /* resolved tier, smoothed forcing: 1 (default) adds rho/(rho_p - rho) x the last fluid
+                                   step's mean contact and lubrication force, so that they act in full; 0: Izard 2014
+                                   eq. (2.32) alone, under which they act at (rho_p - rho)/rho_p (gf_coupling_resolved.c) */
 } gf_fluid_spec;
 
 /* The continuum method (method: continuum; engine/continuum): the mu(I) law and the grid. */

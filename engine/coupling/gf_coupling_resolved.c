@@ -109,6 +109,11 @@ typedef struct gf_resolved {
     double *P0, *L0, *P1, *L1; /* markers: each grain's internal momentum and angular momentum, before and after */
     double *P_last, *L_last;   /* markers: P1, L1 of the last fluid step, in held_id's order */
     int last_known;            /* P_last, L_last hold the last step's (0: the first step, or an older checkpoint) */
+    int contact_correction;    /* spec.fluid.ibm_contact_correction, with the smoothed forcing (contact_correction_*) */
+    double *U_last, *W_last;   /* contact correction: each grain's velocity and spin at the last fluid step (held_id's order) */
+    double *corr_F, *corr_T;   /* contact correction: this step's, in the grains' present order */
+    double *corr_F_last, *corr_T_last; /* contact correction: the last step's (held_id's order) */
+    double dt_last;            /* contact correction: the last fluid step, s (0: none yet) */
     size_t n_held, cap_held;
     uint64_t held_epoch;
     int held_epoch_known;
@@ -241,6 +246,7 @@ static void resolved_destroy(gf_coupling *cc)
         free(c->fields[v]);
     free(c->held_id), free(c->held_F), free(c->held_T), free(c->sub_F), free(c->sub_T);
     free(c->P0), free(c->L0), free(c->P1), free(c->L1), free(c->P_last), free(c->L_last);
+    free(c->U_last), free(c->W_last), free(c->corr_F), free(c->corr_T), free(c->corr_F_last), free(c->corr_T_last);
     free(c);
 }
 
@@ -264,6 +270,7 @@ static gf_status resolved_create(gf_ctx *ctx, const gf_run_spec *spec, const gf_
     c->n_threads = 1;
     c->scheme = scheme, c->advection = form;
     c->forcing = forcing;
+    c->contact_correction = forcing == GF_IBM_SMOOTHED && spec->fluid.ibm_contact_correction;
     /* markers: the retraction moves the markers; the fraction (internal momentum, fields) stays on R */
     c->map.retraction_cells = forcing == GF_IBM_MARKERS ? 0.0 : spec->fluid.ibm_retraction_dx;
     c->markers.retraction_cells = spec->fluid.ibm_retraction_dx;
@@ -381,6 +388,8 @@ static gf_status reserve_held(gf_resolved *c, size_t n)
     ok &= grow(&c->sub_T, 3 * cap);
     ok &= grow(&c->P0, 3 * cap) && grow(&c->L0, 3 * cap) && grow(&c->P1, 3 * cap) && grow(&c->L1, 3 * cap);
     ok &= grow(&c->P_last, 3 * cap) && grow(&c->L_last, 3 * cap);
+    ok &= grow(&c->U_last, 3 * cap) && grow(&c->W_last, 3 * cap) && grow(&c->corr_F, 3 * cap) && grow(&c->corr_T, 3 * cap);
+    ok &= grow(&c->corr_F_last, 3 * cap) && grow(&c->corr_T_last, 3 * cap);
     if (!ok)
         return GF_FAIL(c->ctx, GF_ERR_NOMEM, "resolved tier: out of memory for %zu grains", n);
     c->cap_held = cap;
@@ -489,6 +498,63 @@ static void add_internal_momentum(gf_resolved *c, const gf_particles *p, double 
     c->last_known = 1;
 }
 
+/* The contact correction (fluid.ibm_contact_correction, smoothed forcing). Izard's force (2.32),
+ * F = -(rho rho_p/(rho_p - rho)) int f, takes the fictitious inner fluid's momentum rate out of the forcing
+ * integral by assuming that every acceleration of the grain is hydrodynamic. The inner fluid follows the grain
+ * whatever accelerates it, so a contact or lubrication force N costs the forcing the inner fluid's share too,
+ * and the formula scales that share up with the rest: over more than one fluid step the grain obeys
+ *   m dU/dt = F' + (m - rho V) g + ((rho_p - rho)/rho_p) N          (F' the true surface force)
+ * (Uhlmann's (2005) rigid inner fluid, rho V dU/dt = F' + rho int f), and a grain at rest on a wall presses on
+ * it with its dry weight m g (tests/resolved/test_resolved_rest.c). The correction X added to the held force
+ * restores m dU/dt = F' + (m - rho V) g + N once X = (rho/(rho_p - rho)) N. It is taken from the last fluid
+ * step, where the grain's momentum balance gives the part of its acceleration that the formula did not
+ * supply, R = m dU/dt - F_Izard - m g = N + X_last, as
+ *   X = (rho/rho_p) R = (rho/rho_p) (N + X_last),
+ * whose fixed point is that X, reached geometrically at the ratio rho/rho_p. Written with X_last inside, a
+ * grain resting in contact (N = -(F_Izard + X_last + m g)) gets X = -(rho/rho_p)(F_Izard + m g) with no
+ * feedback from the last X: X = (rho/(rho_p - rho)) N applied at once oscillates undamped at rho_p/rho = 2
+ * and diverges below. Over a collision the X's add up to (rho/(rho_p - rho)) J, the inner fluid's catch-up
+ * of the impulse J that the formula charges to the grain. With no contact, R = X_last and X decays to 0: free
+ * grains are unchanged. The torque likewise, with I. The markers' force (Kempe & Froehlich 2012: the inner
+ * momentum's measured rate) needs no correction. */
+static void contact_correction_begin(gf_resolved *c, const gf_particles *p)
+{
+    const double rho = c->fluid->rho_kg_m3, *g = c->setup.gravity_m_s2;
+    for (size_t i = 0; i < p->n_local; ++i) {
+        double *cf = c->corr_F + 3 * i, *ct = c->corr_T + 3 * i;
+        cf[0] = cf[1] = cf[2] = ct[0] = ct[1] = ct[2] = 0.0;
+        size_t h = c->dt_last > 0.0 ? held_slot(c, p, i) : c->n_held;
+        if (h >= c->n_held || (p->flags[i] & GF_P_GLUED))
+            continue;
+        const double R = p->radius_m[i], m = p->mass_kg[i], I = p->inertia_kg_m2[i];
+        const double k = rho * 4.0 / 3.0 * M_PI * R * R * R / m; /* rho / rho_p */
+        const double v[3] = {p->vx_m_s[i], p->vy_m_s[i], p->vz_m_s[i]};
+        const double w[3] = {p->wx_rad_s[i], p->wy_rad_s[i], p->wz_rad_s[i]};
+        for (int d = 0; d < 3; ++d) {
+            const double F_izard = c->held_F[3 * h + d] - c->corr_F_last[3 * h + d];
+            const double T_izard = c->held_T[3 * h + d] - c->corr_T_last[3 * h + d];
+            cf[d] = k * (m * (v[d] - c->U_last[3 * h + d]) / c->dt_last - F_izard - m * g[d]);
+            ct[d] = k * (I * (w[d] - c->W_last[3 * h + d]) / c->dt_last - T_izard);
+        }
+    }
+}
+
+/* Adds this step's correction to the held force and torque; keeps it and the grains' velocities for the next. */
+static void contact_correction_end(gf_resolved *c, const gf_particles *p, double dt_s)
+{
+    for (size_t i = 0; i < p->n_local; ++i) {
+        const double v[3] = {p->vx_m_s[i], p->vy_m_s[i], p->vz_m_s[i]};
+        const double w[3] = {p->wx_rad_s[i], p->wy_rad_s[i], p->wz_rad_s[i]};
+        for (int d = 0; d < 3; ++d) {
+            c->held_F[3 * i + d] += c->corr_F[3 * i + d], c->held_T[3 * i + d] += c->corr_T[3 * i + d];
+            c->U_last[3 * i + d] = v[d], c->W_last[3 * i + d] = w[d];
+        }
+    }
+    memcpy(c->corr_F_last, c->corr_F, 3 * p->n_local * sizeof(double));
+    memcpy(c->corr_T_last, c->corr_T, 3 * p->n_local * sizeof(double));
+    c->dt_last = dt_s;
+}
+
 /* The step's substeps; the grains' held force and torque are the sum of the substeps' (each substep forces
  * the fluid by dt f_k: the step's impulse on the fluid is dt sum_k int f_k). */
 static gf_status resolved_fluid_step(gf_coupling *cc, const gf_particles *p, double dt_s)
@@ -503,6 +569,8 @@ static gf_status resolved_fluid_step(gf_coupling *cc, const gf_particles *p, dou
     mean_pressure_gradient(c, p, b);
     if (c->forcing == GF_IBM_MARKERS)
         begin_internal_momentum(c, p);
+    if (c->contact_correction)
+        contact_correction_begin(c, p);
     const gf_ns2_substep *sub;
     int n_sub = gf_fluid_ns2_substeps(c->scheme, &sub);
     for (int k = 0; k < n_sub; ++k) {
@@ -514,6 +582,8 @@ static gf_status resolved_fluid_step(gf_coupling *cc, const gf_particles *p, dou
     }
     if (c->forcing == GF_IBM_MARKERS)
         add_internal_momentum(c, p, dt_s);
+    if (c->contact_correction)
+        contact_correction_end(c, p, dt_s);
     for (size_t i = 0; i < p->n_local; ++i)
         c->held_id[i] = p->id[i];
     c->n_held = p->n_local;
@@ -700,6 +770,13 @@ static gf_status resolved_save(const gf_coupling *cc, gf_restart *r)
         GF_TRY(gf_restart_put_f64(r, "resolved_last_P", 3 * c->n_held, c->P_last));
         GF_TRY(gf_restart_put_f64(r, "resolved_last_L", 3 * c->n_held, c->L_last));
     }
+    if (c->contact_correction && c->dt_last > 0.0) { /* the velocities the next correction differences against */
+        GF_TRY(gf_restart_put_f64(r, "resolved_last_U", 3 * c->n_held, c->U_last));
+        GF_TRY(gf_restart_put_f64(r, "resolved_last_W", 3 * c->n_held, c->W_last));
+        GF_TRY(gf_restart_put_f64(r, "resolved_dt_last", 1, &c->dt_last));
+        GF_TRY(gf_restart_put_f64(r, "resolved_last_XF", 3 * c->n_held, c->corr_F_last));
+        GF_TRY(gf_restart_put_f64(r, "resolved_last_XT", 3 * c->n_held, c->corr_T_last));
+    }
     return gf_restart_put_f64(r, "resolved_held_T", 3 * c->n_held, c->held_T);
 }
 
@@ -725,6 +802,14 @@ static gf_status resolved_load(gf_coupling *cc, gf_restart *r)
     if (c->last_known) {
         GF_TRY(gf_restart_get_f64(r, "resolved_last_P", 3 * n, c->P_last));
         GF_TRY(gf_restart_get_f64(r, "resolved_last_L", 3 * n, c->L_last));
+    }
+    c->dt_last = 0.0;
+    if (c->contact_correction && gf_restart_has(r, "resolved_dt_last")) {
+        GF_TRY(gf_restart_get_f64(r, "resolved_last_U", 3 * n, c->U_last));
+        GF_TRY(gf_restart_get_f64(r, "resolved_last_W", 3 * n, c->W_last));
+        GF_TRY(gf_restart_get_f64(r, "resolved_dt_last", 1, &c->dt_last));
+        GF_TRY(gf_restart_get_f64(r, "resolved_last_XF", 3 * n, c->corr_F_last));
+        GF_TRY(gf_restart_get_f64(r, "resolved_last_XT", 3 * n, c->corr_T_last));
     }
     c->n_held = n;
     c->held_epoch_known = 0; /* matched by id at the first substep */

@@ -165,6 +165,28 @@ double gf_particles_kinetic_energy(const gf_particles *p)
     return e;
 }
 
+double gf_particles_ecx_per_grain(const gf_particles *p)
+{
+    double e = 0.0;
+    size_t n = 0;
+    for (size_t i = 0; i < p->n_local; ++i) {
+        if (p->flags[i] & GF_P_GLUED)
+            continue;
+        e += 0.5 * p->mass_kg[i] * p->vx_m_s[i] * p->vx_m_s[i];
+        ++n;
+    }
+    return n ? e / (double)n : 0.0;
+}
+
+double gf_particles_mobile_volume(const gf_particles *p, double density_kg_m3)
+{
+    double m = 0.0;
+    for (size_t i = 0; i < p->n_local; ++i)
+        if (!(p->flags[i] & GF_P_GLUED))
+            m += p->mass_kg[i];
+    return m / density_kg_m3;
+}
+
 void gf_particles_momentum(const gf_particles *p, double out[3])
 {
     out[0] = out[1] = out[2] = 0.0;

@@ -61,6 +61,10 @@ void gf_particles_clear_forces(gf_particles *p);
 void gf_particles_clear_forces_from(gf_particles *p, size_t first);
 /* Total kinetic energy (translation + rotation) of mobile locals, J. */
 double gf_particles_kinetic_energy(const gf_particles *p);
+/* Horizontal (x) translational kinetic energy per mobile local, J: E_cx of Izard (2014) §5.3. */
+double gf_particles_ecx_per_grain(const gf_particles *p);
+/* Solid volume of the mobile locals, m^3 (mass over density). */
+double gf_particles_mobile_volume(const gf_particles *p, double density_kg_m3);
 /* Total momentum of mobile locals, kg m/s. */
 void gf_particles_momentum(const gf_particles *p, double out[3]);
 /* GF_ERR_NUMERIC with the first bad index if any position/velocity is not finite. */

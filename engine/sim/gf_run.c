@@ -44,26 +44,13 @@ typedef struct run_out {
     int suspend;          /* interrupted with a checkpoint written: keep the files as .partial */
 } run_out;
 
-static double ecx_per_grain(const gf_particles *p)
-{
-    double e = 0.0;
-    size_t n = 0;
-    for (size_t i = 0; i < p->n_local; ++i) {
-        if (p->flags[i] & GF_P_GLUED)
-            continue;
-        e += 0.5 * p->mass_kg[i] * p->vx_m_s[i] * p->vx_m_s[i];
-        ++n;
-    }
-    return n ? e / (double)n : 0.0;
-}
-
 static gf_status write_record(gf_sim *s, run_out *o)
 {
     gf_timer_start(&s->timers, GF_T_OUTPUT);
     gf_status st = GF_OK;
     if (o->diag) {
         o->values[0] = gf_particles_kinetic_energy(s->p);
-        o->values[1] = ecx_per_grain(s->p);
+        o->values[1] = gf_particles_ecx_per_grain(s->p);
         o->values[2] = (double)s->n_contacts;
         o->values[3] = s->max_overlap_m / s->spec.grains.diameter_m;
         if (s->scene->diagnose && s->scene->n_diag > 0)

@@ -79,6 +79,9 @@ static const gf_spec_field fields[] = {
       "resolved tier: advective (u.grad)u or divergence div(uu), the energy-conserving form"),
     N("fluid", "ibm_forcing", fluid.ibm_forcing, gf_ibm_forcing_names,
       "resolved tier: smoothed (solid fraction, Izard 2014) or markers (surface markers, Uhlmann 2005)"),
+    B("fluid", "ibm_contact_correction", fluid.ibm_contact_correction,
+      "resolved tier, smoothed forcing: contacts and lubrication act in full (1, default), or at (rho_p - rho)/rho_p "
+      "as under Izard's force formula alone (0)"),
     D("output", "interval_nd", output.interval_nd, 0, 1e7, 1, "1", "output interval in sqrt(D/g)"),
     B("output", "particles", output.particles, "write particles.nc"),
     B("output", "fields", output.fields, "write fields.nc"),

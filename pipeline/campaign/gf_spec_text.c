@@ -75,6 +75,10 @@ size_t gf_spec_text(const gf_run_spec *spec, char *buf, size_t n)
                     continue;
                 if (strcmp(f[i].key, "ibm_forcing") == 0 && strcmp(spec->fluid.ibm_forcing, "smoothed") == 0)
                     continue;
+                /* written for every resolved run, so that those made before it existed (without the
+                 * correction) do not pass for runs with it */
+                if (strcmp(f[i].key, "ibm_contact_correction") == 0 && strcmp(spec->fluid.model, "resolved") != 0)
+                    continue;
                 /* the resolved tier's numerics only where it runs: its runs before the keys existed used
                  * another advection form, so their ids change with them, and no other run's does */
                 if ((strcmp(f[i].key, "time_scheme") == 0 || strcmp(f[i].key, "advection") == 0) &&

@@ -40,7 +40,7 @@
  * R = 6.35 mm): Izard and Mongruel et al. span the experimental dispersion with
  * 5e-5 <= eta_e/R <= 5e-4, which moves V_m by -6 %/+11 % in this harness (R = 6.35 mm,
  * D/dx = 8); the thesis is 4 % below the experiment.
- * Usage: resolved_approach [R=mm] [dx=D/dx] [box=D] [height=D] [depth=D] [eta_e=] [flat=] [xmax=]
+ * Usage: resolved_approach [R=mm] [dx=D/dx] [box=D] [height=D] [depth=D] [eta_e=] [flat=] [xmax=] [correct=0|1]
  *        [end=s] [cfl=] [threads=n] [check=mongruel]
  */
 #include <math.h>
@@ -58,19 +58,20 @@ enum { AP_T, AP_V, AP_GAP, AP_FY, AP_N };
 static const double RHO_P = 7800.0, RHO_F = 978.0, ETA = 0.978, G = 9.81;
 
 typedef struct options {
-    double R_mm, dx, box, height, depth, eta_e, flat, x_max, end_s, threads, cfl;
+    double R_mm, dx, box, height, depth, eta_e, flat, x_max, end_s, threads, cfl, correct;
     int check;
 } options;
 
 static void parse(int argc, char **argv, options *o)
 {
     *o = (options){.R_mm = 6.35, .dx = 8, .box = 5, .height = 14, .depth = 2, .eta_e = 2e-4, .flat = 0.05,
-                   .x_max = 0.06, .end_s = 2.0, .cfl = 0.0};
+                   .x_max = 0.06, .end_s = 2.0, .cfl = 0.0, .correct = 1};
     const harness_arg table[] = {{"R", &o->R_mm},         {"dx", &o->dx},       {"box", &o->box},
                                  {"height", &o->height},  {"depth", &o->depth}, {"eta_e", &o->eta_e},
                                  {"flat", &o->flat},      {"end", &o->end_s},   {"threads", &o->threads},
-                                 {"xmax", &o->x_max},     {"cfl", &o->cfl}};
-    harness_parse(argc, argv, table, 11);
+                                 {"xmax", &o->x_max},     {"cfl", &o->cfl},
+                                 {"correct", &o->correct}};
+    harness_parse(argc, argv, table, 12);
     const char *check = harness_text(argc, argv, "check");
     o->check = check && !strcmp(check, "mongruel");
 }
@@ -89,6 +90,7 @@ static gf_run_spec approach_spec(gf_ctx *ctx, const options *o)
     harness_resolved_fluid(&spec, RHO_F, ETA, o->eta_e, o->dx);
     if (o->cfl > 0.0)
         spec.fluid.cfl = o->cfl;   /* the fluid step (and with it how long the resolved force is held) */
+    spec.fluid.ibm_contact_correction = o->correct != 0.0; /* correct=1: fluid.ibm_contact_correction */
     spec.end_time_nd = o->end_s / sqrt(D / G);
     const char *keys[] = {"box_over_D", "height_over_D", "release_depth_over_D"};
     const double values[] = {o->box, o->height, o->depth};

@@ -17,7 +17,7 @@
  *   St = (rho_p + rho/2) V_T D / (9 eta) (Izard eq. (3.19)), St_I = rho_p V_I D / (9 eta)
  *   (Gondret et al. 2002), e = V_R/V_I, eps = V_R/V_T, the contact time (gap <= 0 during
  *   the first contact).
- * Usage: resolved_bounce [dx=D/dx] [box=] [height=] [depth=] [end=] [ratio=] [Ar=] [eta_e=] [lub=0|1] [overlap_off=0|1]
+ * Usage: resolved_bounce [dx=D/dx] [box=] [height=] [depth=] [end=] [ratio=] [Ar=] [eta_e=] [lub=0|1] [overlap_off=0|1] [correct=0|1]
  *        [threads=n] [ibm=smoothed|markers] [retract=c] [check=st60]
  *   ibm, retract: fluid.ibm_forcing and fluid.ibm_retraction_dx (coupling/gf_ibm_markers.h).
  *   check=st60: eps within +-0.05 of the thesis' 0.63 (slow, label open until it passes).
@@ -59,14 +59,15 @@ static int trace_push(trace *tr, double t, double v, double gap)
 
 typedef struct args {
     double dx, box, height, depth, end, ratio, Ar, eta_e, retract;
-    int lub, overlap_off, threads;            /* threads: OpenMP threads of the run (0: the library default) */
+    int lub, overlap_off, threads; /* threads: OpenMP threads of the run (0: the library default) */
+    int correct;                   /* fluid.ibm_contact_correction */
     char check[16], ibm[16];
 } args;
 
 static void parse(int argc, char **argv, args *a)
 {
     *a = (args){.dx = 8, .box = 6, .height = 24, .depth = 4, .end = 24, .ratio = 8, .Ar = 3700, .eta_e = 4e-4,
-                .lub = 1};
+                .lub = 1, .correct = 1};
     snprintf(a->check, sizeof a->check, "none");
     snprintf(a->ibm, sizeof a->ibm, "smoothed");
     const gf_test_arg keys[] = {
@@ -74,7 +75,7 @@ static void parse(int argc, char **argv, args *a)
         {.key = "depth", .number = &a->depth}, {.key = "end", .number = &a->end}, {.key = "ratio", .number = &a->ratio},
         {.key = "Ar", .number = &a->Ar}, {.key = "eta_e", .number = &a->eta_e}, {.key = "lub", .integer = &a->lub},
         {.key = "overlap_off", .integer = &a->overlap_off}, {.key = "threads", .integer = &a->threads},
-        {.key = "check", .text = a->check, .text_size = sizeof a->check},
+        {.key = "correct", .integer = &a->correct}, {.key = "check", .text = a->check, .text_size = sizeof a->check},
         {.key = "ibm", .text = a->ibm, .text_size = sizeof a->ibm}, {.key = "retract", .number = &a->retract}};
     gf_test_parse_args(argc, argv, keys, sizeof keys / sizeof keys[0]);
 }
@@ -102,6 +103,7 @@ int main(int argc, char **argv)
     spec.fluid.lub_overlap_off = a.overlap_off;
     spec.fluid.d_over_dx = a.dx;
     spec.fluid.ibm_retraction_dx = a.retract;
+    spec.fluid.ibm_contact_correction = a.correct;
     snprintf(spec.fluid.ibm_forcing, sizeof spec.fluid.ibm_forcing, "%s", a.ibm);
     spec.end_time_nd = a.end;
     GF_CHECK_OK(gf_run_spec_set_param(&ctx, &spec, "box_over_D", a.box), &ctx);

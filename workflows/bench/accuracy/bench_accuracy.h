@@ -107,6 +107,15 @@ gf_status bench_step_measure_markers(gf_ctx *ctx, const bench_knobs *k, int full
 extern const double bench_suspension_cells[];
 gf_status bench_suspension_measure(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out);
 
+/* avalanche_{viscous,inertial,free_fall}_tiers and collapse_case_a_tiers (bench_regime_tiers.c): the thesis'
+ * resolved scenes (Table 4.2's three regimes, Table 5.1's case A) through both tiers */
+extern const double bench_regime_cells[];
+int bench_regime_available(const char **why);
+gf_status bench_regime_viscous(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out);
+gf_status bench_regime_inertial(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out);
+gf_status bench_regime_free_fall(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out);
+gf_status bench_collapse_tiers(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out);
+
 /* Default of a knob for case c: the common default, or the first of the
  * case's own list when that list does not hold the common default. */
 double bench_case_default(const bench_case *c, unsigned knob);

@@ -559,6 +559,13 @@ static gf_status measure_settling(gf_ctx *ctx, const bench_knobs *k, int full, b
      SETTLING_TERMINAL_REFERENCE, BENCH_KNOB_FLUID_CFL, 0, bench_resolved_available, measure, NULL, NULL, 0, 0,       \
      SETTLING_TERMINAL_AUX, NULL, 0, 0, 1, NULL, 0, bench_step_cfl, 3}
 
+/* The avalanche at one Table 4.2 point through both tiers, drive (4.6), 100 sqrt(D/g) (bench_regime_tiers.c). */
+#define REGIME_CASE(name, point, t_thesis, fn, scale)                                                               \
+    {name, "T/T_thesis, immersed avalanche, " point ", drive (4.6), both tiers (1)",                              \
+     "Izard (2014) Table 4.2: T = " t_thesis, "max(T/T_th, T_th/T) - 1 (1)", 1.0, BENCH_KNOB_CELL, 1,             \
+     bench_regime_available, fn, NULL, bench_regime_cells, 0, 2, scale " of the thesis' regime (1)", NULL, 0, 0, 2, \
+     NULL, 0, NULL, 0}
+
 static const bench_case cases[] = {
     {"restitution", "restitution of a normal collision, clipped law, eps_max 0.5 (1)",
      "closed form of the clipped oscillator, 0.550 (Schaefer et al. 1996)", "worst |e/e_closed - 1| over onset phases (1)",
@@ -609,6 +616,14 @@ static const bench_case cases[] = {
      "Richardson & Zaki 1954: (1 - phi)^n, n = 4.4 Re_T^-0.03, U_T Schiller-Naumann", "|U/U_RZ - 1| (1)", 0.10,
      BENCH_KNOB_CELL, 0, bench_resolved_available, bench_suspension_measure, NULL, bench_suspension_cells, 0, 4, NULL,
      NULL, 0, 0, 2, NULL, 0, NULL, 0},
+    REGIME_CASE("avalanche_viscous_tiers", "viscous, rho_p/rho 4, St 0.05", "605 ms", bench_regime_viscous, "T/T_v"),
+    REGIME_CASE("avalanche_inertial_tiers", "inertial, rho_p/rho 3, St 28", "24 ms", bench_regime_inertial, "T/T_i"),
+    REGIME_CASE("avalanche_free_fall_tiers", "free fall, rho_p/rho 20, St 220", "32 ms", bench_regime_free_fall,
+                "T/T_ff"),
+    {"collapse_case_a_tiers", "E_cx^max/(m g D), immersed collapse case A (a 0.5, R0 16 D, L 50 D), both tiers (1)",
+     "Izard (2014) Table 5.1: 0.023", "|E/0.023 - 1| (1)", 0.30, BENCH_KNOB_CELL, 1, bench_regime_available,
+     bench_collapse_tiers, NULL, bench_regime_cells, 0, 2, "dominant P_b at x = 13/16 R0 / (drho g H0) (1)", NULL, 0,
+     0, 2, NULL, 0, NULL, 0},
 };
 
 const bench_case *bench_cases(int *n)
