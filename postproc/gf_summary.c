@@ -251,3 +251,11 @@ gf_status gf_summary_read(gf_ctx *ctx, const char *path, gf_post_row **rows_out,
     *n_out = (int)n;
     return GF_OK;
 }
+
+const gf_post_row *gf_summary_find(const gf_post_row *rows, int n_rows, const char *run_id)
+{
+    for (int i = 0; i < n_rows; ++i)
+        if (strcmp(rows[i].run_id, run_id) == 0)
+            return &rows[i];
+    return NULL;
+}

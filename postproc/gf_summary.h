@@ -21,4 +21,7 @@ gf_status gf_summary_write(gf_ctx *ctx, const char *dir, const gf_post_row *rows
 /* Reads summary.nc back into rows (the figures are drawn from it). *rows is malloc'ed. */
 gf_status gf_summary_read(gf_ctx *ctx, const char *path, gf_post_row **rows, int *n_rows);
 
+/* The row of run_id among rows[0..n_rows), NULL if absent. */
+const gf_post_row *gf_summary_find(const gf_post_row *rows, int n_rows, const char *run_id);
+
 #endif

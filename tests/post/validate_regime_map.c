@@ -28,7 +28,7 @@
 #include "gf_post.h"
 #include "gf_summary.h"
 #include "gf_test.h"
-#include "schedule/gf_sched.h"
+#include "gf_test_runs.h"
 #include "table42.h"
 
 enum { MAX_SETS = 16, TARGET = 20 };
@@ -43,14 +43,6 @@ static int run_at(const gf_campaign *c, double St, double ratio)
             return i;
     }
     return -1;
-}
-
-static const gf_post_row *row_of(const gf_post_row *rows, int n, const char *run_id)
-{
-    for (int i = 0; i < n; ++i)
-        if (strcmp(rows[i].run_id, run_id) == 0)
-            return &rows[i];
-    return NULL;
 }
 
 /* GF_TEST_SETS split at ';' into sets (pointers into buf). */
@@ -78,16 +70,8 @@ int main(void)
     GF_CHECK_OK(gf_campaign_load_file(&ctx, path, sets, n_sets, &c), &ctx);
     if (!c)
         return gf_test_finish();
-    const char *out = getenv("GF_TEST_RUNS");
-    if (!out) {
-        GF_CHECK(mkdtemp(tmp) != NULL);
-        out = tmp;
-    }
-    const int jobs = getenv("GF_TEST_JOBS") ? atoi(getenv("GF_TEST_JOBS")) : 2;
-    gf_sched_opts so = {.out_dir = out, .n_jobs = jobs, .resume = 1};
-    gf_sched_counts counts;
-    GF_CHECK_OK(gf_sched_run(&ctx, c, &so, &counts), &ctx);
-    GF_CHECK(counts.n_failed == 0);
+    const char *out = gf_test_runs_dir(tmp);
+    gf_test_run_campaign(&ctx, c, out);
     snprintf(campaign_dir, sizeof campaign_dir, "%s/%s", out, c->name);
     gf_post_options po = {.stage = NULL, .n_jobs = 1, .figures = 1, .quiet = 1};
     GF_CHECK_OK(gf_post_campaign(&ctx, campaign_dir, &po), &ctx);
@@ -99,7 +83,7 @@ int main(void)
     for (int k = 0; k < TABLE42_N; ++k) {
         const table_pt *pt = &table42[k];
         const int i = run_at(c, pt->St, pt->ratio);
-        const gf_post_row *row = i >= 0 ? row_of(rows, n_rows, c->runs[i].spec.run_id) : NULL;
+        const gf_post_row *row = i >= 0 ? gf_summary_find(rows, n_rows, c->runs[i].spec.run_id) : NULL;
         GF_CHECK(row != NULL);
         if (!row)
             continue;

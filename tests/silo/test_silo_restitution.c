@@ -28,7 +28,7 @@
 #include "gf_post.h"
 #include "gf_summary.h"
 #include "gf_test.h"
-#include "schedule/gf_sched.h"
+#include "gf_test_runs.h"
 
 /* docs/silo.md's command: configs/silo_restitution.yaml in the 15 d silo over 600 sqrt(d/g), once per seed */
 static const char *const docs_sets[] = {"scene.width_x_over_d=15",        "scene.width_z_over_d=15",
@@ -48,22 +48,13 @@ static int e_index(double e)
     return -1;
 }
 
-/* The summary's row of a run id, NULL if absent. */
-static const gf_post_row *row_of(const gf_post_row *rows, int n, const char *run_id)
-{
-    for (int i = 0; i < n; ++i)
-        if (strcmp(rows[i].run_id, run_id) == 0)
-            return &rows[i];
-    return NULL;
-}
-
 /* Adds each run's Q and phi_out over N_SEEDS to its e_n's point, from the summary's rows. */
 static void add_points(const gf_campaign *c, const gf_post_row *rows, int n_rows, double *Q, double *phi, int *count)
 {
     for (int r = 0; r < c->n_runs; ++r) {
         const gf_run_spec *s = &c->runs[r].spec;
         const int k = e_index(s->contact.restitution);
-        const gf_post_row *row = row_of(rows, n_rows, s->run_id);
+        const gf_post_row *row = gf_summary_find(rows, n_rows, s->run_id);
         GF_CHECK(k >= 0 && row != NULL);
         if (k < 0 || !row)
             continue;
@@ -98,18 +89,9 @@ int main(void)
         if (!(c[k] = study(&ctx, src ? src : ".", k + 1)))
             return gf_test_finish();
     char tmp[] = "/tmp/gf_silo_restitution_XXXXXX", campaign_dir[1200], summary[1300];
-    const char *out = getenv("GF_TEST_RUNS");
-    if (!out) {
-        GF_CHECK(mkdtemp(tmp) != NULL);
-        out = tmp;
-    }
-    const int jobs = getenv("GF_TEST_JOBS") ? atoi(getenv("GF_TEST_JOBS")) : 2;
-    gf_sched_opts so = {.out_dir = out, .n_jobs = jobs, .resume = 1};
-    for (int k = 0; k < N_SEEDS; ++k) {
-        gf_sched_counts counts;
-        GF_CHECK_OK(gf_sched_run(&ctx, c[k], &so, &counts), &ctx);
-        GF_CHECK(counts.n_failed == 0);
-    }
+    const char *out = gf_test_runs_dir(tmp);
+    for (int k = 0; k < N_SEEDS; ++k)
+        gf_test_run_campaign(&ctx, c[k], out);
     snprintf(campaign_dir, sizeof campaign_dir, "%s/%s", out, c[0]->name);
     gf_post_options po = {.stage = NULL, .n_jobs = 1, .figures = 0, .quiet = 1};
     GF_CHECK_OK(gf_post_campaign(&ctx, campaign_dir, &po), &ctx);

@@ -1,0 +1,39 @@
+/*
+ * Campaign-scale tests (the slow validations that run a repository campaign
+ * through the scheduler, then `grainflow post`): where the runs go and how
+ * they are run.
+ *   GF_TEST_RUNS=DIR keeps the runs in DIR and reuses those already done there
+ *   (`grainflow campaign --resume`); without it they go to a temporary
+ *   directory that the test removes when every check passes.
+ *   GF_TEST_JOBS=N runs N at a time (default 2).
+ */
+#ifndef GF_TEST_RUNS_H
+#define GF_TEST_RUNS_H
+
+#include <stdlib.h>
+
+#include "campaign/gf_campaign.h"
+#include "gf_test.h"
+#include "schedule/gf_sched.h"
+
+/* $GF_TEST_RUNS, else tmp (a mkdtemp template ending in XXXXXX) made. */
+static inline const char *gf_test_runs_dir(char *tmp)
+{
+    const char *out = getenv("GF_TEST_RUNS");
+    if (out)
+        return out;
+    GF_CHECK(mkdtemp(tmp) != NULL);
+    return tmp;
+}
+
+/* Runs c into out as `grainflow campaign --resume --jobs N` would; checks that no run failed. */
+static inline void gf_test_run_campaign(gf_ctx *ctx, const gf_campaign *c, const char *out)
+{
+    const int jobs = getenv("GF_TEST_JOBS") ? atoi(getenv("GF_TEST_JOBS")) : 2;
+    gf_sched_opts so = {.out_dir = out, .n_jobs = jobs, .resume = 1};
+    gf_sched_counts counts;
+    GF_CHECK_OK(gf_sched_run(ctx, c, &so, &counts), ctx);
+    GF_CHECK(counts.n_failed == 0);
+}
+
+#endif
