@@ -31,7 +31,6 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "bench_accuracy.h"
 #include "campaign/gf_campaign.h"
@@ -144,7 +143,7 @@ static gf_status regime_measure(gf_ctx *ctx, const bench_knobs *k, const regime_
     if (fabs(ratio / pt->ratio - 1.0) > 0.02 || fabs(spec.stokes_St / pt->St - 1.0) > 1e-3)
         return GF_FAIL(ctx, GF_ERR_CONFIG, "avalanche_regime_quick.yaml point %d: rho_p/rho %g, St %g, not Table 4.2's %g, %g",
                        pt->index, ratio, spec.stokes_St, pt->ratio, pt->St);
-    static double t[MAX_SAMPLES], q[MAX_SAMPLES];
+    double t[MAX_SAMPLES], q[MAX_SAMPLES];
     size_t n = 0;
     gf_sim *sim = NULL;
     double t0 = gf_bench_cpu_time_s();
