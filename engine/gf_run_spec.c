@@ -30,6 +30,7 @@ void gf_run_spec_defaults(gf_run_spec *s)
     snprintf(s->fluid.time_scheme, sizeof s->fluid.time_scheme, "ab2");
     snprintf(s->fluid.advection, sizeof s->fluid.advection, "divergence");
     snprintf(s->fluid.ibm_forcing, sizeof s->fluid.ibm_forcing, "smoothed");
+    snprintf(s->fluid.lub_overlap, sizeof s->fluid.lub_overlap, "clamp");
     s->fluid.ibm_contact_correction = 1;
     s->output = (gf_output_spec){.interval_nd = 1.0, .particles = 1, .fields = 1, .probes = 1,
                                  .diagnostics = 1, .checkpoint_interval_nd = 0.0};

@@ -57,8 +57,9 @@ typedef struct gf_fluid_spec {
     double roughness_over_R;  /* eta_e / R, seed 1e-4 .. 4e-4 */
     double lub_cutoff_over_R; /* lubrication active for 0 <= gap <= cutoff R, seed 1/2 */
     double d_over_dx;         /* resolved tier: grid cells per grain diameter D/dx (8-20); 0: 16 */
-    int lub_overlap_off;      /* 1: no lubrication while surfaces overlap (contact law alone);
-                                 0: gap clamped at 0 (constant damping 6 pi eta R_eff^2 / eta_e) */
+    char lub_overlap[GF_NAME_LEN]; /* lubrication while surfaces overlap (contact/gf_lubrication.h): "clamp" (gap
+                                      0: damping 6 pi eta R_eff^2/eta_e), "off" (the contact law alone), "film" (the
+                                      elastic film of Izard 2014 eq. (3.28)) */
     char time_scheme[GF_NAME_LEN]; /* resolved tier: "ab2" or "rk3" (fluid/gf_fluid_ns2.h) */
     char advection[GF_NAME_LEN];   /* resolved tier: "advective" or "divergence" form (fluid/gf_fluid_ns2.h) */
     double ibm_retraction_dx; /* resolved tier: the solid fraction's profile (markers: the markers' sphere) centred

@@ -66,7 +66,8 @@ gf_status gf_sim_setup_lubrication(gf_sim *s)
     s->lub_eta_Pa_s = f->viscosity_Pa_s;
     s->lub_roughness_m = f->roughness_over_R * R;
     s->lub_cutoff_m = f->lub_cutoff_over_R * R;
-    s->lub_in_overlap = !f->lub_overlap_off;
+    if (gf_lub_overlap_from_name(f->lub_overlap, &s->lub_overlap) != 0)
+        return GF_FAIL(s->ctx, GF_ERR_CONFIG, "fluid.lub_overlap: unknown mode '%s' (clamp, off or film)", f->lub_overlap);
     s->nb.extra_m = s->lub_cutoff_m; /* the neighbour reach covers the lubrication range */
     return GF_OK;
 }

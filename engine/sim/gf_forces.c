@@ -16,11 +16,12 @@
  * Lubrication (Brenner 1961 with effective roughness eta_e; Izard 2014 (2.36),
  * (3.18)), normal only, on i:
  *     F = -6 pi eta_f ((u_i - u_j).n) / (gap + eta_e) (R_i R_j/(R_i+R_j))^2 n
- * active for gap <= cutoff (lub_cutoff_over_R x mean R); during overlap either
- * the gap is clamped at 0 (constant damping 6 pi eta R_eff^2/eta_e, the damping
- * rebound model of Izard 2014 §3.1 assumes in contact, eq. (3.26); the default) or,
- * with fluid.lub_overlap_off, the force is off and the contact law acts alone;
- * wall: R_eff^2 -> R_i^2.
+ * active for gap <= cutoff (lub_cutoff_over_R x mean R); during overlap the
+ * gap is clamped at 0 (constant damping 6 pi eta R_eff^2/eta_e, the damping the
+ * rebound model of Izard 2014 §3.1 assumes in contact, eq. (3.26); the default),
+ * the force is off (the contact law alone) or the gap is the elastic film's
+ * (eq. (3.28)), as fluid.lub_overlap says (gf_lubrication.h); wall:
+ * R_eff^2 -> R_i^2.
  *
  * OpenMP: a half list races on j, so the rows are cut into one pair-balanced
  * chunk per configured thread. Each chunk adds into the particle store the
@@ -135,9 +136,12 @@ static inline __attribute__((always_inline)) void pair_rows_impl(gf_sim *s, size
                 touching[k] = 0;
             }
             if (lub_cut > 0.0) {
-                double gap = g.overlap_m > 0.0 ? 0.0 : -g.overlap_m;
-                if (gap <= lub_cut && (s->lub_in_overlap || g.overlap_m <= 0.0)) {
-                    double reff = ri * R[j] / rsum;
+                double reff = ri * R[j] / rsum;
+                double gap = g.overlap_m > 0.0 ? gf_lubrication_overlap_gap(s->lub_overlap, reff, s->lub_eta_Pa_s,
+                                                                            cp.k_n_N_m, pair_meff[k], g.v_n_m_s,
+                                                                            g.overlap_m)
+                                               : -g.overlap_m;
+                if (gap <= lub_cut && (s->lub_overlap != GF_LUB_OVERLAP_OFF || g.overlap_m <= 0.0)) {
                     double c = -gf_lubrication_damping(s->dt_s, 6.0 * M_PI * s->lub_eta_Pa_s * reff * reff / (gap + s->lub_roughness_m),
                                             pair_meff[k]) * g.v_n_m_s;
                     F[0] += c * g.n[0], F[1] += c * g.n[1], F[2] += c * g.n[2];

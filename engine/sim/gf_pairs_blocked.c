@@ -186,7 +186,7 @@ static inline __attribute__((always_inline)) void compute_impl(const gf_sim *s, 
     const double *restrict wx = p->wx_rad_s, *restrict wy = p->wy_rad_s, *restrict wz = p->wz_rad_s;
     const double *restrict sqrt_mk = v->sqrt_mk, *restrict meff = v->meff;
     const double lub_cut = s->lub_cutoff_m, eta = s->lub_eta_Pa_s, rough = s->lub_roughness_m;
-    const int in_overlap = s->lub_in_overlap;
+    const int in_overlap = s->lub_overlap == GF_LUB_OVERLAP_CLAMP; /* film: the generic loop (gf_sim.c) */
     double *restrict hx = v->hist, *restrict hy = hx + 1, *restrict hz = hx + 2; /* disjoint elements */
     const double dt = s->dt_s, mu = s->cp.mu_grain, k_n = s->cp.k_n_N_m, two_zeta = 2.0 * s->cp.zeta;
     const double k_t = s->cp.kt_over_kn * s->cp.k_n_N_m, inv_k = k_t > 0.0 ? 1.0 / k_t : 0.0;

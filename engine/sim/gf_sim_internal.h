@@ -16,6 +16,7 @@
 #endif
 
 #include "contact/gf_contact.h"
+#include "contact/gf_lubrication.h"
 #include "contact/gf_nlist.h"
 #include "gf_neighbours.h"
 #include "coupling/gf_coupling.h"
@@ -114,7 +115,7 @@ struct gf_sim {
         gf_contact_params cp;
         int lubrication;
         double lub_eta_Pa_s, lub_roughness_m, lub_cutoff_m;
-        int lub_in_overlap;         /* 1: gap clamped at 0 in overlap (default); 0: off while overlapping */
+        gf_lub_overlap lub_overlap; /* the film in overlap: clamped gap (default), off, elastic (gf_lubrication.h) */
     };
     gf_neighbours nb;               /* neighbour upkeep (gf_neighbours.h; its pieces: gf_sim_neighbours.c) */
     gf_step_state stepper;          /* where the step loop stands (gf_step.c) */

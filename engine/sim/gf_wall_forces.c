@@ -84,8 +84,10 @@ void gf_sim_wall_rows(gf_sim *s, size_t i0, size_t i1, double *const f[6], gf_si
             } else if (h[0] != 0.0 || h[1] != 0.0 || h[2] != 0.0) {
                 h[0] = h[1] = h[2] = 0.0;
             }
-            if (lub_cut > 0.0 && (s->lub_in_overlap || overlap <= 0.0)) {
-                double gap = overlap > 0.0 ? 0.0 : -overlap;
+            if (lub_cut > 0.0 && (s->lub_overlap != GF_LUB_OVERLAP_OFF || overlap <= 0.0)) {
+                double gap = overlap > 0.0 ? gf_lubrication_overlap_gap(s->lub_overlap, ri, s->lub_eta_Pa_s,
+                                                                        s->cp.k_n_N_m, p->mass_kg[i], vn, overlap)
+                                           : -overlap;
                 double c = -gf_lubrication_damping(s->dt_s, 6.0 * M_PI * s->lub_eta_Pa_s * ri * ri / (gap + s->lub_roughness_m),
                                         p->mass_kg[i]) * vn;
                 F[0] += c * nw[0], F[1] += c * nw[1], F[2] += c * nw[2];

@@ -17,6 +17,7 @@
 
 #include "contact/gf_contact.h"
 #include "coupling/gf_drag.h"
+#include "contact/gf_lubrication.h"
 #include "coupling/gf_ibm_markers.h"
 #include "fluid/gf_fluid_ns2.h"
 #include "scenes/gf_scene.h"
@@ -68,8 +69,8 @@ static const gf_spec_field fields[] = {
     D("continuum", "phi", continuum.phi, 0, 0.7405, 1, "1", "solid fraction of the continuum"),
     D("continuum", "cell_over_D", continuum.cell_over_D, 0, 10.0, 1, "1", "cell edge / D"),
     D("continuum", "gdot_min_nd", continuum.gdot_min_nd, 0, 1.0, 1, "1", "|gdot| floor x sqrt(D/g)"),
-    B("fluid", "lub_overlap_off", fluid.lub_overlap_off,
-      "no lubrication while surfaces overlap (1), or the gap clamped at 0 (0: constant damping in contact)"),
+    N("fluid", "lub_overlap", fluid.lub_overlap, gf_lub_overlap_names,
+      "lubrication while surfaces overlap: clamp (gap 0), off (contact law alone), film (elastic film, Izard 2014 (3.28))"),
     D("fluid", "d_over_dx", fluid.d_over_dx, 0, 64.0, 0, "1", "resolved tier: grid cells per diameter D/dx (8-20; 0: 16)"),
     D("fluid", "ibm_retraction_dx", fluid.ibm_retraction_dx, 0, 1.0, 0, "1",
       "resolved tier: solid-fraction profile (or markers) centred on R minus this many cells (Breugem 2012; 0: on R)"),

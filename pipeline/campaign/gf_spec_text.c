@@ -69,7 +69,7 @@ size_t gf_spec_text(const gf_run_spec *spec, char *buf, size_t n)
                     continue;
                 if (strcmp(f[i].key, "d_over_dx") == 0 && spec->fluid.d_over_dx == 0.0)
                     continue;
-                if (strcmp(f[i].key, "lub_overlap_off") == 0 && spec->fluid.lub_overlap_off == 0)
+                if (strcmp(f[i].key, "lub_overlap") == 0 && strcmp(spec->fluid.lub_overlap, "clamp") == 0)
                     continue;
                 if (strcmp(f[i].key, "ibm_retraction_dx") == 0 && spec->fluid.ibm_retraction_dx == 0.0)
                     continue;

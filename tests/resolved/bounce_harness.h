@@ -86,7 +86,7 @@ static inline void harness_resolved_fluid(gf_run_spec *spec, double rho_kg_m3, d
     spec->fluid.lubrication = 1;
     spec->fluid.roughness_over_R = eta_e_over_R;
     spec->fluid.lub_cutoff_over_R = 0.5;
-    spec->fluid.lub_overlap_off = 1;
+    snprintf(spec->fluid.lub_overlap, sizeof spec->fluid.lub_overlap, "off");
     spec->fluid.d_over_dx = d_over_dx;
 }
 

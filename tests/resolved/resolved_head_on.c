@@ -22,7 +22,7 @@
  *   restitution) and U_2/U_1 there (the thesis: the target reaches 6.6 %).
  * check=band: eps_B inside the experiments' 0.6-0.8 at this St_B (Yang & Hunt
  * 2006; the thesis finds 0.74).
- * Usage: resolved_head_on [dx=D/dx] [eta=Pa s] [gap=D] [box=D] [length=D] [threads=n] [check=band]
+ * Usage: resolved_head_on [dx=D/dx] [eta=Pa s] [gap=D] [box=D] [length=D] [threads=n] [overlap=clamp|off|film] [check=band]
  */
 #include <math.h>
 #include <stdio.h>
@@ -40,6 +40,7 @@ enum { HO_T, HO_V_REL, HO_GAP, HO_U1, HO_U2, HO_N };
 typedef struct options {
     double dx, eta, gap, box, length, threads;
     int check;
+    const char *overlap; /* fluid.lub_overlap (clamp, off, film); off unless given */
 } options;
 
 static void parse(int argc, char **argv, options *o)
@@ -50,6 +51,7 @@ static void parse(int argc, char **argv, options *o)
     harness_parse(argc, argv, table, 6);
     const char *check = harness_text(argc, argv, "check");
     o->check = check && !strcmp(check, "band");
+    o->overlap = harness_text(argc, argv, "overlap");
 }
 
 /* Izard 2014 §3.2: the sphere, the contact and the launch. */
@@ -65,6 +67,8 @@ static gf_run_spec head_on_spec(gf_ctx *ctx, const options *o)
     spec.contact.t_contact_nd = 2.36e-4 * (D / U_o) / sqrt(D / g);   /* t_c U_o / D = 2.36e-4 */
     spec.contact.friction = spec.contact.wall_friction = 0.25;
     harness_resolved_fluid(&spec, 1000.0, o->eta, 2e-4, o->dx);
+    if (o->overlap)
+        snprintf(spec.fluid.lub_overlap, sizeof spec.fluid.lub_overlap, "%s", o->overlap);
     spec.end_time_nd = 20.0;
     /* the line of centres along y: sphere 1 2 D below the top, the target gap D below it */
     const char *keys[] = {"launch_speed_nd", "target_gap_over_D", "box_over_D", "height_over_D", "release_depth_over_D",

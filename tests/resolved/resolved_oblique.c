@@ -27,7 +27,7 @@
  *   rough-sphere values, which are those of a dry contact (their §5): tested as
  *   |mu_f - mu_c| <= 0.025 on the sliding branch (Psi_out > 0) and mu_f > mu_c at 40°;
  *   beta falls as xi_in grows (partial slip to sliding).
- * Usage: resolved_oblique [check=dry|sweep] [dx=10] [angles=10,20,30,40] [eta_e=1e-4] [threads=n]
+ * Usage: resolved_oblique [check=dry|sweep] [dx=10] [angles=10,20,30,40] [eta_e=1e-4] [threads=n] [overlap=clamp|off|film]
  */
 #include <math.h>
 #include <stdio.h>
@@ -45,6 +45,7 @@ enum { TR_T, TR_VY, TR_GAP, TR_VX, TR_WZ, TR_N };
 typedef struct options {
     int dry, n_angles;
     double dx, eta_e, threads, angles[8];
+    const char *overlap; /* fluid.lub_overlap (clamp, off, film); off unless given */
 } options;
 
 static void parse(int argc, char **argv, options *o)
@@ -54,6 +55,7 @@ static void parse(int argc, char **argv, options *o)
     harness_parse(argc, argv, table, 3);
     const char *check = harness_text(argc, argv, "check"), *v = harness_text(argc, argv, "angles");
     o->dry = !check || strcmp(check, "sweep") != 0;
+    o->overlap = harness_text(argc, argv, "overlap");
     if (v)
         for (o->n_angles = 0; o->n_angles < 8 && *v; ++o->n_angles) {
             char *end;
@@ -73,6 +75,8 @@ static gf_run_spec oblique_spec(gf_ctx *ctx, const options *o, double angle_deg)
     spec.contact.t_contact_nd = 4.4e-3;
     spec.contact.friction = spec.contact.wall_friction = 0.106;
     harness_resolved_fluid(&spec, 1000.0, 0.1, o->eta_e, o->dx);
+    if (o->overlap)
+        snprintf(spec.fluid.lub_overlap, sizeof spec.fluid.lub_overlap, "%s", o->overlap);
     if (o->dry)
         snprintf(spec.fluid.model, sizeof spec.fluid.model, "none");
     spec.end_time_nd = 12.0;

@@ -45,7 +45,7 @@ static double wall_force_at_rest(gf_ctx *ctx, int correction)
     spec.fluid.lubrication = 1; /* the thesis' (Izard 2014 §3.1.2.2): without it the sphere keeps hopping on the wall */
     spec.fluid.roughness_over_R = 4e-4;
     spec.fluid.lub_cutoff_over_R = 0.5;
-    spec.fluid.lub_overlap_off = 1;
+    snprintf(spec.fluid.lub_overlap, sizeof spec.fluid.lub_overlap, "off");
     spec.fluid.d_over_dx = 8.0;
     spec.fluid.ibm_contact_correction = correction;
     spec.end_time_nd = T_END_ND;
