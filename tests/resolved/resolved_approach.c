@@ -41,7 +41,9 @@
  * 5e-5 <= eta_e/R <= 5e-4, which moves V_m by -6 %/+11 % in this harness (R = 6.35 mm,
  * D/dx = 8); the thesis is 4 % below the experiment.
  * Usage: resolved_approach [R=mm] [dx=D/dx] [box=D] [height=D] [depth=D] [eta_e=] [flat=] [xmax=] [correct=0|1]
- *        [end=s] [cfl=] [threads=n] [check=mongruel]
+ *        [end=s] [cfl=] [threads=n] [eta=Pa s] [lub=0|1] [check=mongruel]
+ *   eta, lub: another viscosity (the oil's 0.978 Pa s by default) and the lubrication off (lub=0), e.g. a
+ *   quasi-steady approach of the resolved flow alone, to compare with Brenner's (1961) exact resistance.
  */
 #include <math.h>
 #include <stdio.h>
@@ -55,23 +57,25 @@
 
 enum { AP_T, AP_V, AP_GAP, AP_FY, AP_N };
 
-static const double RHO_P = 7800.0, RHO_F = 978.0, ETA = 0.978, G = 9.81;
+static const double RHO_P = 7800.0, RHO_F = 978.0, G = 9.81;
+static double ETA = 0.978; /* the oil's viscosity (eta=: another fluid, e.g. a quasi-steady approach) */
 
 typedef struct options {
-    double R_mm, dx, box, height, depth, eta_e, flat, x_max, end_s, threads, cfl, correct;
+    double R_mm, dx, box, height, depth, eta_e, flat, x_max, end_s, threads, cfl, correct, eta, lub;
     int check;
 } options;
 
 static void parse(int argc, char **argv, options *o)
 {
     *o = (options){.R_mm = 6.35, .dx = 8, .box = 5, .height = 14, .depth = 2, .eta_e = 2e-4, .flat = 0.05,
-                   .x_max = 0.06, .end_s = 2.0, .cfl = 0.0, .correct = 1};
+                   .x_max = 0.06, .end_s = 2.0, .cfl = 0.0, .correct = 1, .eta = 0.978, .lub = 1};
     const harness_arg table[] = {{"R", &o->R_mm},         {"dx", &o->dx},       {"box", &o->box},
                                  {"height", &o->height},  {"depth", &o->depth}, {"eta_e", &o->eta_e},
                                  {"flat", &o->flat},      {"end", &o->end_s},   {"threads", &o->threads},
                                  {"xmax", &o->x_max},     {"cfl", &o->cfl},
-                                 {"correct", &o->correct}};
-    harness_parse(argc, argv, table, 12);
+                                 {"correct", &o->correct}, {"eta", &o->eta},   {"lub", &o->lub}};
+    harness_parse(argc, argv, table, 14);
+    ETA = o->eta;
     const char *check = harness_text(argc, argv, "check");
     o->check = check && !strcmp(check, "mongruel");
 }
@@ -91,6 +95,7 @@ static gf_run_spec approach_spec(gf_ctx *ctx, const options *o)
     if (o->cfl > 0.0)
         spec.fluid.cfl = o->cfl;   /* the fluid step (and with it how long the resolved force is held) */
     spec.fluid.ibm_contact_correction = o->correct != 0.0; /* correct=1: fluid.ibm_contact_correction */
+    spec.fluid.lubrication = o->lub != 0.0;                /* lub=0: the resolved flow alone */
     spec.end_time_nd = o->end_s / sqrt(D / G);
     const char *keys[] = {"box_over_D", "height_over_D", "release_depth_over_D"};
     const double values[] = {o->box, o->height, o->depth};
@@ -162,7 +167,7 @@ static void run_approach(gf_ctx *ctx, gf_sim *sim, double D, double end_s, bounc
 /* u_p/(delta_n/R) over V_S at a ladder of gaps (the first sample below each), and there the resolved force
  * over the buoyant weight W: the non-gravity force of the last DEM step less Brenner's film force
  * 6 pi eta R^2 u_p/(delta_n + eta_e) (below the cut-off R/2), the contact not yet acting. */
-static void print_ratio_ladder(const bounce_trace *s, double R, double V_S, double eta_e_over_R)
+static void print_ratio_ladder(const bounce_trace *s, double R, double V_S, double eta_e_over_R, int lub)
 {
     static const double ladder[] = {0.5, 0.2, 0.1, 0.05, 0.03, 0.02, 0.01, 0.005, 0.003, 0.002, 0.001, 5e-4, 2e-4};
     const double W = (RHO_P - RHO_F) * G * 4.0 / 3.0 * M_PI * R * R * R;
@@ -174,8 +179,8 @@ static void print_ratio_ladder(const bounce_trace *s, double R, double V_S, doub
         if (k == s->n || s->col[AP_GAP][k] <= 0.0)
             break;
         const double u = -s->col[AP_V][k], gap = s->col[AP_GAP][k];
-        const double lub = gap <= 0.5 * R ? 6.0 * M_PI * ETA * R * R * u / (gap + eta_e_over_R * R) : 0.0;
-        printf(" %g: %.3f (%+.3f)", ladder[j], u * R / (gap * V_S), (s->col[AP_FY][k] - lub) / W);
+        const double f_lub = lub && gap <= 0.5 * R ? 6.0 * M_PI * ETA * R * R * u / (gap + eta_e_over_R * R) : 0.0;
+        printf(" %g: %.3f (%+.3f)", ladder[j], u * R / (gap * V_S), (s->col[AP_FY][k] - f_lub) / W);
     }
     printf("\n");
 }
@@ -205,7 +210,7 @@ static double report(const options *o, const bounce_trace *s, double D, double c
     const double u_sn = schiller_naumann_terminal(D), V_S = 2.0 * drho * G * R * R / (9.0 * ETA);
     const double St_m = RHO_P * a.V_m * a.V_m / (drho * G * R);
     double ode[4];
-    print_ratio_ladder(s, R, V_S, o->eta_e);
+    print_ratio_ladder(s, R, V_S, o->eta_e, o->lub != 0.0);
     ode_check(s, &a, R, St_m, o->eta_e, ode);
     printf("approach: R %g mm, D/dx %g, box %g x %g D, centre released %g D above the wall, eta_e/R %g: u_far %.4f m/s "
            "(Schiller-Naumann %.4f, %+.1f %%; Re %.2f); touched %d at u %.4f m/s; V_m = %.4f m/s, St_m = %.2f "
