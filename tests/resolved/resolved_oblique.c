@@ -40,7 +40,7 @@
 #include "bounce_harness.h"
 #include "stages/gf_bounce_measure.h"
 
-enum { TR_T, TR_VY, TR_GAP, TR_VX, TR_WZ, TR_N };
+enum { TR_T, TR_VY, TR_GAP, TR_VX, TR_WZ, TR_FX, TR_FY, TR_N }; /* TR_F*: the floor's force on the sphere */
 
 typedef struct options {
     int dry, n_angles;
@@ -90,6 +90,7 @@ static gf_run_spec oblique_spec(gf_ctx *ctx, const options *o, double angle_deg)
 typedef struct bounce_result {
     gf_bounce b;
     gf_bounce_oblique o, o_T;   /* at impact (V_I), on approach (V_T) */
+    double J_n, J_t, J_wall_n, J_wall_t; /* impulses from V_I to V_R over m V_I: the sphere's, the floor's share */
     double cpu_s;
 } bounce_result;
 
@@ -118,7 +119,9 @@ static void drop(const options *o, double angle_deg, bounce_result *r)
             GF_CHECK_OK(st, &ctx);
             break;
         }
-        double x[TR_N] = {gf_sim_time_s(sim), p->vy_m_s[0], p->y_m[0] - R, p->vx_m_s[0], p->wz_rad_s[0]};
+        double fw[3];
+        gf_sim_wall_force(sim, 0, fw); /* the floor (the scene's only wall): its load, minus the sphere's force */
+        double x[TR_N] = {gf_sim_time_s(sim), p->vy_m_s[0], p->y_m[0] - R, p->vx_m_s[0], p->wz_rad_s[0], -fw[0], -fw[1]};
         if (bounce_trace_push(&s, x) != 0) {
             GF_CHECK(!"out of memory for the trace");
             break;
@@ -130,6 +133,21 @@ static void drop(const options *o, double angle_deg, bounce_result *r)
     gf_bounce_measure(s.col[TR_T], s.col[TR_VY], s.col[TR_GAP], s.n, R, &r->b);
     gf_bounce_measure_oblique(&r->b, s.col[TR_VX], s.col[TR_WZ], R, GF_BOUNCE_AT_IMPACT, &r->o);
     gf_bounce_measure_oblique(&r->b, s.col[TR_VX], s.col[TR_WZ], R, GF_BOUNCE_AT_APPROACH, &r->o_T);
+    /* where the normal and tangential impulses come from, between the V_I and V_R samples: the whole change of
+     * the sphere's momentum against the floor's contact and lubrication (the rest: the resolved flow's force) */
+    r->J_n = r->J_t = r->J_wall_n = r->J_wall_t = NAN;
+    if (r->b.touched && r->b.rebounded && r->b.V_I > 0.0) {
+        const double m = p->mass_kg[0], k0 = (double)r->b.k_impact, k1 = (double)r->b.k_rebound;
+        double jn = 0.0, jt = 0.0;
+        for (size_t k = (size_t)k0 + 1; k <= (size_t)k1 && k < s.n; ++k) {
+            const double dt = s.col[TR_T][k] - s.col[TR_T][k - 1];
+            jn += s.col[TR_FY][k] * dt, jt += s.col[TR_FX][k] * dt;
+        }
+        const double mv = m * r->b.V_I;
+        r->J_n = m * (s.col[TR_VY][r->b.k_rebound] - s.col[TR_VY][r->b.k_impact]) / mv;
+        r->J_t = m * (s.col[TR_VX][r->b.k_rebound] - s.col[TR_VX][r->b.k_impact]) / mv;
+        r->J_wall_n = jn / mv, r->J_wall_t = jt / mv;
+    }
     r->cpu_s = (double)clock() / CLOCKS_PER_SEC - c0;
     bounce_trace_free(&s);
     gf_sim_destroy(&sim);
@@ -147,6 +165,8 @@ static void print_result(double angle_deg, const bounce_result *r)
            r->b.V_T, r->b.V_I, r->b.V_R, 1e3 * r->b.contact_s, r->cpu_s);
     print_oblique("at impact  ", &r->o);
     print_oblique("on approach", &r->o_T);
+    printf("  impulses V_I -> V_R / (m V_I): normal %.4f (floor %.4f), tangential %+.4f (floor %+.4f): floor's "
+           "|J_t|/J_n %.4f\n", r->J_n, r->J_wall_n, r->J_t, r->J_wall_t, fabs(r->J_wall_t) / r->J_wall_n);
 }
 
 /* beta_0 = -cos(omega_t T): the tangential spring of a stuck contact turned
