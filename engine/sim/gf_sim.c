@@ -342,8 +342,8 @@ static gf_status setup_neighbours(gf_sim *s)
     if (!(s->spec.contact.skin_over_D > 0.0))
         return GF_FAIL(s->ctx, GF_ERR_CONFIG, "contact.skin_over_D: must be > 0 (got %g)", s->spec.contact.skin_over_D);
     nb->skin_m = s->spec.contact.skin_over_D * s->spec.grains.diameter_m;
-    /* the elastic film in overlap (gf_lubrication.h) is in the generic pair loop only */
-    if (s->spec.fluid.lubrication && strcmp(s->spec.fluid.lub_overlap, "film") == 0)
+    /* the elastic film in overlap (gf_lubrication.h) is in the generic pair loop only (lubrication is set up by now) */
+    if (s->lubrication && s->lub_overlap == GF_LUB_OVERLAP_FILM)
         s->opt.tuning.generic_pair_loop = 1;
     const int blocked = s->law->kernel == gf_contact_linear && !tu->generic_pair_loop;
     const double near_skin = tu->near_skin == 0.0 ? GF_SIM_NEAR_SKIN_DEFAULT : fmin(tu->near_skin, 1.0);

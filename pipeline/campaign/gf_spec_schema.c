@@ -16,8 +16,8 @@
 #include <string.h>
 
 #include "contact/gf_contact.h"
-#include "coupling/gf_drag.h"
 #include "contact/gf_lubrication.h"
+#include "coupling/gf_drag.h"
 #include "coupling/gf_ibm_markers.h"
 #include "fluid/gf_fluid_ns2.h"
 #include "scenes/gf_scene.h"
