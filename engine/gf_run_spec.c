@@ -24,7 +24,7 @@ void gf_run_spec_defaults(gf_run_spec *s)
                                    .sleep_speed_nd = 0.0};
     snprintf(s->contact.law, sizeof s->contact.law, "linear");
     s->fluid = (gf_fluid_spec){.density_kg_m3 = 0.0, .viscosity_Pa_s = 0.0, .cell_over_D = 2.0, .cfl = 0.3,
-                               .lubrication = 1, .roughness_over_R = 2e-4, .lub_cutoff_over_R = 0.5};
+                               .diffusion_number = 0.5, .lubrication = 1, .roughness_over_R = 2e-4, .lub_cutoff_over_R = 0.5};
     snprintf(s->fluid.model, sizeof s->fluid.model, "none");
     snprintf(s->fluid.drag, sizeof s->fluid.drag, "di_felice");
     snprintf(s->fluid.time_scheme, sizeof s->fluid.time_scheme, "ab2");

@@ -62,6 +62,8 @@ typedef struct gf_fluid_spec {
                                       elastic film of Izard 2014 eq. (3.28)) */
     char time_scheme[GF_NAME_LEN]; /* resolved tier: "ab2" or "rk3" (fluid/gf_fluid_ns2.h) */
     char advection[GF_NAME_LEN];   /* resolved tier: "advective" or "divergence" form (fluid/gf_fluid_ns2.h) */
+    double diffusion_number;  /* resolved tier: the fluid step's nu dt/dx^2 where viscosity bounds it, in (0, 1];
+                                 0.5 by default (Izard 2014 ran ~1.2 with RK3) */
     double ibm_retraction_dx; /* resolved tier: the solid fraction's profile (markers: the markers' sphere) centred
                                  on R - this x dx (Breugem, J. Comput. Phys. 2012); 0: on R (Izard 2014) */
     char ibm_forcing[GF_NAME_LEN]; /* resolved tier: "smoothed" (Izard 2014) or "markers" (Uhlmann 2005,

@@ -34,6 +34,10 @@
  *   - viscous: nu dt/dx^2 <= 1, the predictor's explicit viscous term (the
  *     one the forcing sees) spreads at most a cell per step; the thesis'
  *     settling run sits at 0.98 (dt sqrt(g/D) = 0.04, D/dx = 20, Ar = 800).
+ *     The step aims at spec.fluid.diffusion_number of it (0.5 by default):
+ *     with the smoothed forcing the answers depend on the step, because each
+ *     forcing moves the shell a fraction alpha towards the grain
+ *     (docs/notes/resolved-settling.md, docs/notes/resolved-multigrain.md).
  *
  * A periodic axis along which gravity acts has no bottom to carry the grains'
  * excess weight: without more, the weight would accelerate the whole fluid.
@@ -169,6 +173,9 @@ static gf_status resolved_check(gf_ctx *ctx, const gf_run_spec *spec)
                        "uses 0.3)", fs->ibm_retraction_dx);
     if (!(fs->cfl > 0.0 && fs->cfl <= 1.0))
         return GF_FAIL(ctx, GF_ERR_CONFIG, "fluid.cfl = %g must be in (0, 1]", fs->cfl);
+    if (!(fs->diffusion_number > 0.0 && fs->diffusion_number <= RESOLVED_VISCOUS_LIMIT))
+        return GF_FAIL(ctx, GF_ERR_CONFIG, "fluid.diffusion_number = %g must be in (0, %g] (nu dt/dx^2, the "
+                       "resolved fluid step's viscous limit)", fs->diffusion_number, RESOLVED_VISCOUS_LIMIT);
     gf_ns2_scheme scheme;
     gf_ns2_advection form;
     gf_ibm_forcing forcing;
@@ -342,7 +349,7 @@ static double resolved_dt_max_s(const gf_coupling *cc, const gf_particles *p)
     double D = c->spec.grains.diameter_m;
     double rate0 = gm > 0.0 ? sqrt(gm * D) / h : 0.0;
     double dt = cfl / fmax(fmax(rate, rate0), 1e-300);
-    return fmin(dt, 0.5 * RESOLVED_VISCOUS_LIMIT * h * h / nu);
+    return fmin(dt, c->spec.fluid.diffusion_number * h * h / nu);
 }
 
 static gf_status check_step(const gf_resolved *c, const gf_particles *p, double dt_s)

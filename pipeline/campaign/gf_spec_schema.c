@@ -76,6 +76,8 @@ static const gf_spec_field fields[] = {
       "resolved tier: solid-fraction profile (or markers) centred on R minus this many cells (Breugem 2012; 0: on R)"),
     N("fluid", "time_scheme", fluid.time_scheme, gf_ns2_scheme_names,
       "resolved tier: ab2 (Adams-Bashforth 2) or rk3 (three-substep Runge-Kutta), Crank-Nicolson viscosity"),
+    D("fluid", "diffusion_number", fluid.diffusion_number, 0, 1.0, 1, "1",
+      "resolved tier: nu dt/dx^2 of the fluid step where viscosity bounds it (0.5; stability limit 1)"),
     N("fluid", "advection", fluid.advection, gf_ns2_advection_names,
       "resolved tier: advective (u.grad)u or divergence div(uu), the energy-conserving form"),
     N("fluid", "ibm_forcing", fluid.ibm_forcing, gf_ibm_forcing_names,

@@ -73,6 +73,8 @@ size_t gf_spec_text(const gf_run_spec *spec, char *buf, size_t n)
                     continue;
                 if (strcmp(f[i].key, "ibm_retraction_dx") == 0 && spec->fluid.ibm_retraction_dx == 0.0)
                     continue;
+                if (strcmp(f[i].key, "diffusion_number") == 0 && spec->fluid.diffusion_number == 0.5)
+                    continue;
                 if (strcmp(f[i].key, "ibm_forcing") == 0 && strcmp(spec->fluid.ibm_forcing, "smoothed") == 0)
                     continue;
                 /* written for every resolved run, so that those made before it existed (without the

@@ -5,8 +5,9 @@
  *   force formula of Izard 2014 eq. (2.32) is singular at 1), and a DEM step
  *   longer than the fluid step's viscous limit nu dt/dx^2 <= 1 (the fluid step
  *   is a whole number of DEM steps); an unknown fluid.time_scheme,
- *   fluid.advection or fluid.ibm_forcing names the ones there are. A good
- *   file loads.
+ *   fluid.advection or fluid.ibm_forcing names the ones there are; a
+ *   fluid.diffusion_number (nu dt/dx^2 of the fluid step) beyond the viscous
+ *   limit 1 is refused. A good file loads.
  */
 #include <stdio.h>
 #include <string.h>
@@ -52,6 +53,8 @@ int main(void)
     expect(SPHERE "  advection: upwind\n", GF_ERR_CONFIG, "t.yaml:9:14:", "divergence");
     expect(SPHERE "  ibm_forcing: markers\n", GF_OK, "", "");
     expect(SPHERE "  ibm_forcing: lagrangian\n", GF_ERR_CONFIG, "t.yaml:9:16:", "markers");
+    expect(SPHERE "  diffusion_number: 1.0\n", GF_OK, "", "");
+    expect(SPHERE "  diffusion_number: 1.2\n", GF_ERR_CONFIG, "t.yaml:9:21:", "out of range");
     expect(SPHERE "  d_over_dx: 40\ncontact:\n  t_contact_nd: 0.9\n", GF_ERR_NUMERIC,
            "t.yaml:11:17: contact.dt_over_tc", "viscous limit nu dt/dx^2 <= 1");
     return gf_test_finish();
