@@ -72,12 +72,7 @@ static int add_contact(void *user, const gf_sim_contact *c)
     const size_t i = c->i, j = c->j;
     if ((p->flags[i] & GF_P_GLUED) && (p->flags[j] & GF_P_GLUED))
         return 0;
-    double d[3] = {p->x_m[i] - p->x_m[j], p->y_m[i] - p->y_m[j], p->z_m[i] - p->z_m[j]};
-    for (int a = 0; a < 3; ++a) /* minimum image: contacts are far shorter than half a period */
-        if (ss->periodic[a]) {
-            double L = ss->hi[a] - ss->lo[a];
-            d[a] -= L * floor(d[a] / L + 0.5);
-        }
+    const double *d = c->branch_m; /* with the pair's image: a narrow period may hold two */
     double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), rsum = p->radius_m[i] + p->radius_m[j];
     if (!(r < rsum) || r <= 0.0)
         return 0;

@@ -24,6 +24,7 @@ void gf_nlist_destroy(gf_nlist **pnl)
     free(nl->i), free(nl->j), free(nl->image), free(nl->hist), free(nl->touching);
     free(nl->cell_start), free(nl->cell_grains), free(nl->grain_cell);
     free(nl->old_row_start), free(nl->old_j), free(nl->old_hist), free(nl->old_row_id), free(nl->row_id);
+    free(nl->pair_d), free(nl->old_pair_d);
     free(nl->id_to_index);
     free(nl->reach_run), free(nl->reach_mark);
     free(nl);
@@ -71,6 +72,12 @@ static gf_status keep_old(gf_ctx *ctx, gf_nlist *nl)
         memcpy(nl->old_j, nl->j, np * sizeof(int32_t));
         memcpy(nl->old_hist, nl->hist, 3 * np * sizeof(double));
     }
+    nl->old_multi_image = nl->multi_image && np;
+    if (nl->old_multi_image) {
+        if (!grow((void **)&nl->old_pair_d, 3 * sizeof(double), np))
+            return GF_FAIL(ctx, GF_ERR_NOMEM, "nlist: cannot keep the old pair vectors (%zu pairs)", np);
+        memcpy(nl->old_pair_d, nl->pair_d, 3 * np * sizeof(double));
+    }
     nl->old_n = n;
     /* the row ids of the list being replaced become the old ones */
     int64_t *t = nl->old_row_id;
@@ -82,15 +89,18 @@ static gf_status keep_old(gf_ctx *ctx, gf_nlist *nl)
 static gf_status setup_cells(gf_ctx *ctx, gf_nlist *nl, const gf_nlist_geom *g, double cell_min)
 {
     nl->n_cells = 1;
+    nl->multi_image = 0;
     for (int a = 0; a < 3; ++a) {
         double L = g->hi_m[a] - g->lo_m[a];
         if (!(L > 0.0))
             return GF_FAIL(ctx, GF_ERR_CONFIG, "nlist: box extent along axis %d must be > 0 (got %g m)", a, L);
-        if (g->periodic[a] && !(L > 2.0 * cell_min))
+        if (g->periodic[a] && !(L > cell_min))
             return GF_FAIL(ctx, GF_ERR_CONFIG,
-                           "nlist: periodic axis %d is %g m long; minimum image needs more than 2 x %g m "
-                           "(2 R_max + lubrication range + skin)",
+                           "nlist: periodic axis %d is %g m long; a grain would reach its own image: it needs "
+                           "more than %g m (2 R_max + lubrication range + skin)",
                            a, L, cell_min);
+        nl->narrow[a] = g->periodic[a] && !(L > 2.0 * cell_min); /* two images of a pair may be within reach */
+        nl->multi_image |= nl->narrow[a];
         long nc = (long)floor(L / cell_min);
         if (nc < 1)
             nc = 1;
@@ -192,7 +202,8 @@ static gf_status push_pair(gf_ctx *ctx, gf_nlist *nl, int32_t i, int32_t j, uint
         size_t cap = nl->cap_pairs ? 2 * nl->cap_pairs : 1024;
         if (!grow((void **)&nl->i, sizeof(int32_t), cap) || !grow((void **)&nl->j, sizeof(int32_t), cap) ||
             !grow((void **)&nl->image, 1, cap) ||
-            !grow((void **)&nl->hist, 3 * sizeof(double), cap) || !grow((void **)&nl->touching, 1, cap))
+            !grow((void **)&nl->hist, 3 * sizeof(double), cap) || !grow((void **)&nl->touching, 1, cap) ||
+            (nl->multi_image && !grow((void **)&nl->pair_d, 3 * sizeof(double), cap)))
             return GF_FAIL(ctx, GF_ERR_NOMEM, "nlist: cannot grow to %zu pairs", cap);
         nl->cap_pairs = cap;
     }
@@ -220,10 +231,42 @@ static void min_image(const gf_nlist *nl, double d[3], int s[3])
     }
 }
 
+/* Every image of pair (i, j) within reach; d: x_i - x_j in the box. Along a
+ * narrow axis the images on both sides are tried (two may be within reach),
+ * along the others the nearest only. Each is a pair of its own, with its
+ * vector kept for the history transfer (carry_history). */
+static gf_status push_images(gf_ctx *ctx, gf_nlist *nl, int32_t i, int32_t j, const double d[3], double reach,
+                             double forced, size_t *touching)
+{
+    int lo[3], hi[3];
+    for (int a = 0; a < 3; ++a) {
+        double L = nl->hi_m[a] - nl->lo_m[a];
+        int s = !nl->periodic[a] ? 0 : d[a] > 0.5 * L ? -1 : d[a] < -0.5 * L ? 1 : 0;
+        lo[a] = nl->narrow[a] ? -1 : s;
+        hi[a] = nl->narrow[a] ? 1 : s;
+    }
+    for (int sx = lo[0]; sx <= hi[0]; ++sx)
+        for (int sy = lo[1]; sy <= hi[1]; ++sy)
+            for (int sz = lo[2]; sz <= hi[2]; ++sz) {
+                int code = (sx + 1) * 9 + (sy + 1) * 3 + (sz + 1);
+                const double *sh = nl->shift_m[code];
+                double e[3] = {d[0] + sh[0], d[1] + sh[1], d[2] + sh[2]};
+                double r2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+                if (r2 < reach * reach) {
+                    GF_TRY(push_pair(ctx, nl, i, j, (uint8_t)code));
+                    memcpy(&nl->pair_d[3 * (nl->n_pairs - 1)], e, sizeof e);
+                }
+                *touching += r2 < forced * forced;
+            }
+    return GF_OK;
+}
+
 static gf_status fill_rows(gf_ctx *ctx, gf_nlist *nl, const gf_nlist_geom *g, size_t n, const double *x,
                            const double *y, const double *z, const double *r, const uint8_t *wall_contacts)
 {
     nl->n_pairs = 0;
+    if (nl->multi_image && !grow((void **)&nl->pair_d, 3 * sizeof(double), nl->cap_pairs))
+        return GF_FAIL(ctx, GF_ERR_NOMEM, "nlist: cannot allocate pair vectors for %zu pairs", nl->cap_pairs);
     int nb[27];
     size_t touching = 0;
     for (size_t i = 0; i < n; ++i) {
@@ -239,10 +282,14 @@ static gf_status fill_rows(gf_ctx *ctx, gf_nlist *nl, const gf_nlist_geom *g, si
                 if ((size_t)j <= i)
                     continue;
                 double d[3] = {x[i] - x[j], y[i] - y[j], z[i] - z[j]};
+                double reach = r[i] + r[j] + g->extra_m + g->skin_m, forced = r[i] + r[j] + g->extra_m;
+                if (nl->multi_image) {
+                    GF_TRY(push_images(ctx, nl, (int32_t)i, j, d, reach, forced, &touching));
+                    continue;
+                }
                 int s[3];
                 min_image(nl, d, s);
-                double reach = r[i] + r[j] + g->extra_m + g->skin_m;
-                double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2], forced = r[i] + r[j] + g->extra_m;
+                double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
                 if (r2 < reach * reach)
                     GF_TRY(push_pair(ctx, nl, (int32_t)i, j, (uint8_t)((s[0] + 1) * 9 + (s[1] + 1) * 3 + (s[2] + 1))));
                 touching += r2 < forced * forced; /* a force to compute: contact or lubrication */
@@ -253,11 +300,24 @@ static gf_status fill_rows(gf_ctx *ctx, gf_nlist *nl, const gf_nlist_geom *g, si
     return GF_OK;
 }
 
-static int find_in_row(const gf_nlist *nl, size_t row, int32_t j)
+/* Pair vectors of one contact at two builds: equal within the grains' motion
+ * (< skin), while two images differ by a period along a narrow axis. */
+static int same_image(const gf_nlist *nl, const double *a, const double *b)
+{
+    for (int q = 0; q < 3; ++q)
+        if (nl->narrow[q] && fabs(a[q] - b[q]) > 0.5 * (nl->hi_m[q] - nl->lo_m[q]))
+            return 0;
+    return 1;
+}
+
+/* The slot of pair (row, j) in the list: any image (image < 0, d NULL), the
+ * image with that code, or the image whose vector is d's (history transfer). */
+static long find_in_row(const gf_nlist *nl, size_t row, int32_t j, int image, const double *d)
 {
     for (size_t k = nl->row_start[row]; k < nl->row_start[row + 1]; ++k)
-        if (nl->j[k] == j)
-            return (int)(k - nl->row_start[row]);
+        if (nl->j[k] == j && (image < 0 || nl->image[k] == image) &&
+            (!d || !nl->multi_image || same_image(nl, &nl->pair_d[3 * k], d)))
+            return (long)k;
     return -1;
 }
 
@@ -280,27 +340,38 @@ static gf_status map_ids(gf_ctx *ctx, gf_nlist *nl, size_t n, const int64_t *id)
     return GF_OK;
 }
 
-int gf_nlist_set_history(gf_nlist *nl, const int64_t *id, int64_t a, int64_t b, const double h[3])
+/* Pair (id a, id b) seen from a, at image code image (-1: any) or pair
+ * vector d (NULL: any): its history set to h. */
+static int set_history_at(gf_nlist *nl, int64_t a, int64_t b, int image, const double *d, const double h[3])
 {
-    (void)id;
     if (a < 0 || b < 0 || (size_t)a >= nl->id_cap || (size_t)b >= nl->id_cap)
         return 0;
     int64_t ia = nl->id_to_index[a], ib = nl->id_to_index[b];
     if (ia < 0 || ib < 0)
         return 0;
-    double sgn = 1.0;
+    double sgn = 1.0, d_row[3];
     if (ia > ib) { /* the pair lives in the row of the lower index, seen from it */
         int64_t t = ia;
         ia = ib, ib = t, sgn = -1.0;
+        image = image < 0 ? image : 26 - image; /* the opposite shift */
+        if (d) {
+            d_row[0] = -d[0], d_row[1] = -d[1], d_row[2] = -d[2];
+            d = d_row;
+        }
     }
-    int k = find_in_row(nl, (size_t)ia, (int32_t)ib);
-    if (k < 0)
+    long slot = find_in_row(nl, (size_t)ia, (int32_t)ib, image, d);
+    if (slot < 0)
         return 0;
-    size_t slot = nl->row_start[ia] + (size_t)k;
     double *dst = &nl->hist[3 * slot];
     dst[0] = sgn * h[0], dst[1] = sgn * h[1], dst[2] = sgn * h[2];
     nl->touching[slot] = 1;
     return 1;
+}
+
+int gf_nlist_set_history(gf_nlist *nl, const int64_t *id, int64_t a, int64_t b, int image, const double h[3])
+{
+    (void)id;
+    return set_history_at(nl, a, b, image, NULL, h);
 }
 
 void gf_nlist_clear_history(gf_nlist *nl)
@@ -318,7 +389,8 @@ static void carry_history(gf_nlist *nl, const int64_t *id)
             const double *h = &nl->old_hist[3 * k];
             if (h[0] == 0.0 && h[1] == 0.0 && h[2] == 0.0)
                 continue;
-            gf_nlist_set_history(nl, id, nl->old_row_id[r], nl->old_row_id[nl->old_j[k]], h);
+            const double *d = nl->old_multi_image ? &nl->old_pair_d[3 * k] : NULL;
+            set_history_at(nl, nl->old_row_id[r], nl->old_row_id[nl->old_j[k]], -1, d, h);
         }
 }
 

@@ -7,11 +7,17 @@
  *   lubrication range (0 when dry). Rebuilt only when a grain has moved more
  *   than skin/2 since the last build (the sim checks), so no contact is missed:
  *   two grains close by at most skin between builds.
- * - Periodic axes: minimum image. Each pair stores the image it was found in
- *   (a code 0..26 into a table of box shifts), so the force loop adds a shift
- *   instead of rounding; positions are wrapped into the box only at a build
- *   (the shifts would be stale otherwise). Minimum image needs
- *   L > 2 (2 R_max + extra + skin) along every periodic axis (checked).
+ * - Periodic axes: each pair stores the image it was found in (a code 0..26
+ *   into a table of box shifts), so the force loop adds a shift instead of
+ *   rounding; positions are wrapped into the box only at a build (the shifts
+ *   would be stale otherwise). Along an axis longer than 2 (2 R_max + extra +
+ *   skin) a pair is found in one image at most (minimum image). A narrower
+ *   periodic axis (the thesis' 2 D wide column, Izard 2014 Table 5.1) can
+ *   hold the same two grains within reach through two images, one on each
+ *   side: each image is then its own pair (same i and j, another image code),
+ *   and the history follows each by its pair vector across builds. The axis
+ *   must still be longer than 2 R_max + extra + skin, so that no grain
+ *   reaches its own image (checked).
  * - Cells of edge >= 2 R_max + extra + skin; any count per axis (1 or 2 cells
  *   along a periodic axis are handled by de-duplicating neighbour cells).
  *   Building is O(N) (counting sort of grains by cell).
@@ -40,8 +46,11 @@ typedef struct gf_nlist {
     uint8_t *image;          /* index into shift_m */
     double *hist;            /* 3 per pair */
     uint8_t *touching;       /* 1 while the pair is in contact (its history may be non-zero) */
+    int multi_image;         /* a periodic axis is narrow enough for two images of one pair */
+    double *pair_d;          /* 3 per pair, x_i - x_j + shift at the build; only when multi_image */
     double shift_m[27][3];   /* x_i - x_j + shift_m[image] is the pair vector */
     int periodic[3];
+    int narrow[3];           /* periodic and at most 2 (2 R_max + extra + skin) long */
     double lo_m[3], hi_m[3];
     /* cells */
     int nc[3];
@@ -54,6 +63,8 @@ typedef struct gf_nlist {
     size_t *old_row_start;
     int32_t *old_j;
     double *old_hist;
+    double *old_pair_d;      /* the old list's pair vectors (multi_image) */
+    int old_multi_image;
     int64_t *old_row_id;     /* id of the grain of each old row */
     int64_t *row_id;         /* ids of the rows of the current list */
     int64_t *id_to_index;    /* inverse id map, size id_cap */
@@ -90,8 +101,10 @@ gf_status gf_nlist_build(gf_ctx *ctx, gf_nlist *nl, const gf_nlist_geom *g, size
                          const uint8_t *wall_contacts, int n_chunks);
 
 /* Sets the history of pair (id_a, id_b) if it is in the list (restart).
- * Returns 1 when found. Needs the ids passed to the last build. */
-int gf_nlist_set_history(gf_nlist *nl, const int64_t *id, int64_t id_a, int64_t id_b, const double h[3]);
+ * image: the pair's image code seen from id_a (x_a - x_b + shift_m[image]),
+ * or -1 for the first image found (a checkpoint without images: one image a
+ * pair). Returns 1 when found. Needs the ids passed to the last build. */
+int gf_nlist_set_history(gf_nlist *nl, const int64_t *id, int64_t id_a, int64_t id_b, int image, const double h[3]);
 
 /* Forgets every pair's history (restart: the checkpoint's contacts replace
  * whatever the scene's own preparation left, which the next build would

@@ -222,9 +222,16 @@ static gf_status grid_params(gf_ctx *ctx, const gf_run_spec *spec, const gf_coup
         if (n < 1 || fabs(L / n - h) > 0.01 * h)
             return GF_FAIL(ctx, GF_ERR_CONFIG, "resolved tier: box edge %d (%.6g m = %.4g D) is not a whole number of "
                            "cells D/%g", d, L, L / spec->grains.diameter_m, d_over_dx(spec));
-        if (setup->bc[d][0] == GF_BC_PERIODIC && L < spec->grains.diameter_m + 2.0 * GF_IBM_REACH_CELLS * h)
+        if (setup->bc[d][0] == GF_BC_PERIODIC && L < spec->grains.diameter_m + 2.0 * GF_IBM_REACH_CELLS * h) {
+            /* a grain's forcing shell would meet its own image's; a finer grid thins the shell */
+            double D = spec->grains.diameter_m, need = 2.0 * GF_IBM_REACH_CELLS * D / (L - D);
+            if (L > D)
+                return GF_FAIL(ctx, GF_ERR_CONFIG, "resolved tier: periodic box edge %d = %.4g D is shorter than a "
+                               "grain and its forcing shell (D + %.3g dx); it needs fluid.d_over_dx >= %.3g",
+                               d, L / D, 2.0 * GF_IBM_REACH_CELLS, need);
             return GF_FAIL(ctx, GF_ERR_CONFIG, "resolved tier: periodic box edge %d = %.4g D is shorter than a grain "
-                           "and its forcing shell", d, L / spec->grains.diameter_m);
+                           "and its forcing shell", d, L / D);
+        }
         fp->n_cells[d] = (int)n;
         fp->lo_m[d] = setup->lo_m[d];
         fp->hi_m[d] = setup->hi_m[d];

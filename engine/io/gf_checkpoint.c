@@ -79,6 +79,7 @@ static gf_status write_all(gf_restart *r, const gf_checkpoint_view *v, const gf_
     GF_TRY(grain_datasets(r, v, 1));
     GF_TRY(gf_restart_put_i64(r, "contact_ids", 2 * v->n_pairs, v->pair_ids));
     GF_TRY(gf_restart_put_f64(r, "contact_history", 3 * v->n_pairs, v->pair_hist));
+    GF_TRY(gf_restart_put_u8(r, "contact_images", v->n_pairs, v->pair_image));
     if (!coupling)
         return GF_OK;
     GF_TRY(gf_restart_put_i64(r, "fluid_schedule", 2, (const int64_t[2]){next_fluid_step, n_substeps}));
@@ -145,7 +146,13 @@ static gf_status read_pairs(gf_ctx *ctx, gf_restart *r, gf_checkpoint_view *v)
     if (!v->pair_ids || !v->pair_hist)
         return GF_FAIL(ctx, GF_ERR_NOMEM, "restart: cannot allocate contacts");
     GF_TRY(gf_restart_get_i64(r, "contact_ids", 2 * m, v->pair_ids));
-    return gf_restart_get_f64(r, "contact_history", 3 * m, v->pair_hist);
+    GF_TRY(gf_restart_get_f64(r, "contact_history", 3 * m, v->pair_hist));
+    if (!gf_restart_has(r, "contact_images")) /* written before pairs could have two images */
+        return GF_OK;
+    v->pair_image = malloc(m + 1);
+    if (!v->pair_image)
+        return GF_FAIL(ctx, GF_ERR_NOMEM, "restart: cannot allocate contact images");
+    return gf_restart_get_u8(r, "contact_images", m, v->pair_image);
 }
 
 static gf_status read_all(gf_ctx *ctx, gf_restart *r, gf_checkpoint_view *v, double *dt_saved, double *t_end_saved)
@@ -175,7 +182,7 @@ gf_status gf_checkpoint_read(gf_ctx *ctx, const char *path, gf_checkpoint_view *
                              double *t_end_saved_s)
 {
     gf_restart *r = NULL;
-    v->pair_ids = NULL, v->pair_hist = NULL, v->n_pairs = 0;
+    v->pair_ids = NULL, v->pair_hist = NULL, v->pair_image = NULL, v->n_pairs = 0;
     GF_TRY(gf_restart_open(ctx, path, &r));
     gf_status st = read_all(ctx, r, v, dt_saved_s, t_end_saved_s);
     gf_restart_close(&r);

@@ -40,6 +40,8 @@ typedef struct gf_checkpoint_view {
      * arrays the reader allocates (the caller frees them) */
     int64_t *pair_ids;          /* 2 per pair */
     double *pair_hist;          /* 3 per pair */
+    uint8_t *pair_image;        /* 1 per pair: the image code seen from the first id (gf_nlist.h); NULL when
+                                 * read from a checkpoint without it (one image a pair) */
     size_t n_pairs;
 } gf_checkpoint_view;
 

@@ -62,8 +62,9 @@ static gf_status collect_pairs(gf_sim *s, gf_checkpoint_view *v)
         m += nl->hist[3 * k] != 0.0 || nl->hist[3 * k + 1] != 0.0 || nl->hist[3 * k + 2] != 0.0;
     v->pair_ids = malloc((2 * m + 1) * sizeof(int64_t));
     v->pair_hist = malloc((3 * m + 1) * sizeof(double));
+    v->pair_image = malloc(m + 1);
     v->n_pairs = m;
-    if (!v->pair_ids || !v->pair_hist)
+    if (!v->pair_ids || !v->pair_hist || !v->pair_image)
         return GF_FAIL(s->ctx, GF_ERR_NOMEM, "checkpoint: cannot allocate %zu contacts", m);
     size_t q = 0;
     for (size_t i = 0; i < nl->n; ++i)
@@ -73,6 +74,7 @@ static gf_status collect_pairs(gf_sim *s, gf_checkpoint_view *v)
                 continue;
             v->pair_ids[2 * q] = p->id[i], v->pair_ids[2 * q + 1] = p->id[nl->j[k]];
             memcpy(&v->pair_hist[3 * q], hk, 3 * sizeof(double));
+            v->pair_image[q] = nl->image[k];
             ++q;
         }
     return GF_OK;
@@ -87,7 +89,7 @@ gf_status gf_sim_checkpoint(gf_sim *s, const char *path)
     gf_status st = collect_pairs(s, &v);
     if (st == GF_OK)
         st = gf_checkpoint_write(s->ctx, path, &v, s->coupling, s->next_fluid_step, s->n_substeps);
-    free(v.pair_ids), free(v.pair_hist);
+    free(v.pair_ids), free(v.pair_hist), free(v.pair_image);
     return st;
 }
 
@@ -121,7 +123,8 @@ static gf_status apply_pairs(gf_sim *s, const gf_checkpoint_view *v)
     gf_nlist_clear_history(s->nb.nl); /* the preparation's contacts are not the checkpoint's */
     GF_TRY(gf_sim_rebuild_from_ref(s));
     for (size_t q = 0; q < v->n_pairs; ++q)
-        if (!gf_nlist_set_history(s->nb.nl, s->p->id, v->pair_ids[2 * q], v->pair_ids[2 * q + 1], &v->pair_hist[3 * q]))
+        if (!gf_nlist_set_history(s->nb.nl, s->p->id, v->pair_ids[2 * q], v->pair_ids[2 * q + 1],
+                                  v->pair_image ? v->pair_image[q] : -1, &v->pair_hist[3 * q]))
             return GF_FAIL(s->ctx, GF_ERR_IO, "restart: contact (%lld, %lld) of the checkpoint is not a neighbour pair",
                            (long long)v->pair_ids[2 * q], (long long)v->pair_ids[2 * q + 1]);
     return GF_OK;
@@ -139,7 +142,7 @@ gf_status gf_sim_restore(gf_sim *s, const char *path)
         st = GF_FAIL(s->ctx, GF_ERR_CONFIG, "restart: checkpoint dt = %.17g s, spec gives %.17g s", dt_saved, s->dt_s);
     if (st == GF_OK)
         st = apply_pairs(s, &v);
-    free(v.pair_ids), free(v.pair_hist);
+    free(v.pair_ids), free(v.pair_hist), free(v.pair_image);
     s->stepper.phase = GF_STEP_AT_T;
     GF_TRY(st);
     return resort_for_threads(s, v.layout_saved);

@@ -14,7 +14,8 @@
  * re-equilibration before t = 0 (settle_time_nd at its default): the restart
  * rebuilds the scene, settle included, and the checkpoint's contacts must
  * replace every history that settle left (a stale one once changed the first
- * step after the restart).
+ * step after the restart). Again in a 2 D wide slot, where a pair can touch
+ * through two images, each with its own history in the checkpoint.
  */
 #include <math.h>
 #include <stdio.h>
@@ -106,14 +107,18 @@ static void check_threads(gf_ctx *ctx, gf_run_spec *spec, const char *bed, int t
 }
 
 /* Column collapse (a = 1, R0 = 8 D, ~200 grains): 2N steps straight versus N,
- * checkpoint, restart (settle and all), N more; bitwise in every state array. */
-static void check_collapse(gf_ctx *ctx, const char *path)
+ * checkpoint, restart (settle and all), N more; bitwise in every state array.
+ * width_over_D > 0: that slot width (2: the thesis', where pairs touch
+ * through two images and the checkpoint keeps each image's history). */
+static void check_collapse(gf_ctx *ctx, const char *path, double width_over_D)
 {
     const long N = 1500;
     gf_run_spec spec = gf_test_spec("column_collapse");
     spec.aspect_ratio_a = 1.0;
     spec.contact.friction = 0.5;
     gf_run_spec_set_param(ctx, &spec, "column_length_over_D", 8.0);
+    if (width_over_D > 0.0)
+        gf_run_spec_set_param(ctx, &spec, "width_over_D", width_over_D);
     gf_sim *ref = NULL, *b = NULL;
     GF_CHECK_OK(gf_test_sim(ctx, &spec, 1, &ref), ctx);
     if (!ref)
@@ -131,8 +136,8 @@ static void check_collapse(gf_ctx *ctx, const char *path)
         for (size_t i = 0; i < n; ++i)
             if (!(p->flags[i] & GF_P_GLUED))
                 front = fmax(front, p->x_m[i]);
-        printf("column collapse, a = 1: %zu grains, %ld + %ld steps, front at %.2f D: bitwise identical = %d\n", n, N, N,
-               front / spec.grains.diameter_m, ok);
+        printf("column collapse, a = 1, width %g D: %zu grains, %ld + %ld steps, front at %.2f D: bitwise identical = %d\n",
+               width_over_D > 0.0 ? width_over_D : 3.0, n, N, N, front / spec.grains.diameter_m, ok);
         GF_CHECK(ok);
     }
     gf_sim_destroy(&ref);
@@ -158,7 +163,8 @@ int main(void)
     check_threads(&ctx, &bed, path, 1, 3);
     check_threads(&ctx, &bed, path, 2, 3);
     remove(path);
-    check_collapse(&ctx, path);
+    check_collapse(&ctx, path, 0.0);
+    check_collapse(&ctx, path, 2.0);
     /* a missing checkpoint is an I/O error naming the file */
     gf_run_spec spec = gf_test_spec("binary_collision");
     gf_sim_options opt;
