@@ -110,6 +110,7 @@ gf_status bench_suspension_measure(gf_ctx *ctx, const bench_knobs *k, int full, 
 /* avalanche_{viscous,inertial,free_fall}_tiers and collapse_case_a_tiers (bench_regime_tiers.c): the thesis'
  * resolved scenes (Table 4.2's three regimes, Table 5.1's case A) through both tiers */
 extern const double bench_regime_cells[];
+extern const double bench_collapse_cells[];
 int bench_regime_available(const char **why);
 gf_status bench_regime_viscous(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out);
 gf_status bench_regime_inertial(gf_ctx *ctx, const bench_knobs *k, int full, bench_result *out);

@@ -620,9 +620,10 @@ static const bench_case cases[] = {
     REGIME_CASE("avalanche_inertial_tiers", "inertial, rho_p/rho 3, St 28", "24 ms", bench_regime_inertial, "T/T_i"),
     REGIME_CASE("avalanche_free_fall_tiers", "free fall, rho_p/rho 20, St 220", "32 ms", bench_regime_free_fall,
                 "T/T_ff"),
-    {"collapse_case_a_tiers", "E_cx^max/(m g D), immersed collapse case A (a 0.5, R0 16 D, L 50 D), both tiers (1)",
+    {"collapse_case_a_tiers",
+     "E_cx^max/(m g D), immersed collapse case A (a 0.5, R0 16 D, W 2 D, L 50 D), both tiers (1)",
      "Izard (2014) Table 5.1: 0.023", "|E/0.023 - 1| (1)", 0.30, BENCH_KNOB_CELL, 1, bench_regime_available,
-     bench_collapse_tiers, NULL, bench_regime_cells, 0, 2, "dominant P_b at x = 13/16 R0 / (drho g H0) (1)", NULL, 0,
+     bench_collapse_tiers, NULL, bench_collapse_cells, 0, 2, "dominant P_b at x = 13/16 R0 / (drho g H0) (1)", NULL, 0,
      0, 2, NULL, 0, NULL, 0},
 };
 
