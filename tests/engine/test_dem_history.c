@@ -32,39 +32,7 @@
 #include "contact/gf_contact.h"
 #include "contact/gf_nlist.h"
 
-typedef struct pair_h {
-    int64_t a, b;
-    double h[3];
-} pair_h;
-
-typedef struct snapshot_into {
-    const gf_particles *p;
-    pair_h *v;
-    size_t m;
-} snapshot_into;
-
-static int add_pair(void *user, const gf_sim_contact *c)
-{
-    snapshot_into *si = user;
-    const double *h = c->history;
-    if (c->wall >= 0 || (h[0] == 0.0 && h[1] == 0.0 && h[2] == 0.0))
-        return 0;
-    pair_h *q = &si->v[si->m++];
-    q->a = si->p->id[c->i], q->b = si->p->id[c->j];
-    memcpy(q->h, h, sizeof q->h);
-    return 0;
-}
-
-/* The grain pairs with a tangential history (gf_sim_foreach_contact). */
-static size_t snapshot(gf_ctx *ctx, gf_sim *s, pair_h **out)
-{
-    snapshot_into si = {gf_sim_particles(s), malloc((gf_sim_list_counters(s).pairs + 1) * sizeof(pair_h)), 0};
-    GF_CHECK_OK(gf_sim_foreach_contact(s, add_pair, &si), ctx);
-    *out = si.v;
-    return si.m;
-}
-
-static int find(const pair_h *v, size_t m, const pair_h *q)
+static int find(const dem_pair_h *v, size_t m, const dem_pair_h *q)
 {
     for (size_t k = 0; k < m; ++k)
         if (v[k].a == q->a && v[k].b == q->b)
@@ -104,10 +72,10 @@ static void identity_in_a_bed(gf_ctx *ctx)
     gf_sim_set_gravity(b, tilt);
     GF_CHECK_OK(gf_sim_advance(a, 2000), ctx);
     GF_CHECK_OK(gf_sim_advance(b, 2000), ctx);
-    pair_h *before, *after;
-    size_t m0 = snapshot(ctx, a, &before);
+    dem_pair_h *before, *after;
+    size_t m0 = dem_snapshot(ctx, a, &before);
     GF_CHECK_OK(gf_sim_rebuild_neighbours(a), ctx);
-    size_t m1 = snapshot(ctx, a, &after), kept = 0;
+    size_t m1 = dem_snapshot(ctx, a, &after), kept = 0;
     for (size_t k = 0; k < m0; ++k)
         kept += find(after, m1, &before[k]);
     printf("forced rebuild: %zu contacts with history before, %zu after, %zu identical\n", m0, m1, kept);

@@ -83,41 +83,8 @@ static void squeezed_pair(gf_ctx *ctx)
     gf_sim_destroy(&s);
 }
 
-typedef struct pair_h {
-    int64_t a, b;
-    double branch[3], h[3];
-} pair_h;
-
-typedef struct snapshot_into {
-    const gf_particles *p;
-    pair_h *v;
-    size_t m;
-} snapshot_into;
-
-static int add_pair(void *user, const gf_sim_contact *c)
-{
-    snapshot_into *si = user;
-    const double *h = c->history;
-    if (c->wall >= 0 || (h[0] == 0.0 && h[1] == 0.0 && h[2] == 0.0))
-        return 0;
-    pair_h *q = &si->v[si->m++];
-    q->a = si->p->id[c->i], q->b = si->p->id[c->j];
-    memcpy(q->branch, c->branch_m, sizeof q->branch);
-    memcpy(q->h, h, sizeof q->h);
-    return 0;
-}
-
-/* The grain pairs with a tangential history, each image apart. */
-static size_t snapshot(gf_ctx *ctx, gf_sim *s, pair_h **out)
-{
-    snapshot_into si = {gf_sim_particles(s), malloc((gf_sim_list_counters(s).pairs + 1) * sizeof(pair_h)), 0};
-    GF_CHECK_OK(gf_sim_foreach_contact(s, add_pair, &si), ctx);
-    *out = si.v;
-    return si.m;
-}
-
 /* q's pair and image (branch vector within D / 2, images are 2 D apart) in v with the same history. */
-static int kept(const pair_h *v, size_t m, const pair_h *q, double D)
+static int kept(const dem_pair_h *v, size_t m, const dem_pair_h *q, double D)
 {
     for (size_t k = 0; k < m; ++k)
         if (v[k].a == q->a && v[k].b == q->b && fabs(v[k].branch[0] - q->branch[0]) < 0.5 * D &&
@@ -127,7 +94,7 @@ static int kept(const pair_h *v, size_t m, const pair_h *q, double D)
 }
 
 /* Pairs of v present through two images. */
-static size_t two_images(const pair_h *v, size_t m)
+static size_t two_images(const dem_pair_h *v, size_t m)
 {
     size_t n = 0;
     for (size_t k = 0; k < m; ++k)
@@ -155,10 +122,10 @@ static void narrow_bed(gf_ctx *ctx)
     const double g = spec.gravity_m_s2, D = spec.grains.diameter_m;
     GF_CHECK_OK(gf_sim_advance(a, 2000), ctx);
     GF_CHECK_OK(gf_sim_advance(b, 2000), ctx);
-    pair_h *before, *after;
-    size_t m0 = snapshot(ctx, a, &before);
+    dem_pair_h *before, *after;
+    size_t m0 = dem_snapshot(ctx, a, &before);
     GF_CHECK_OK(gf_sim_rebuild_neighbours(a), ctx);
-    size_t m1 = snapshot(ctx, a, &after), same = 0, doubled = two_images(before, m0);
+    size_t m1 = dem_snapshot(ctx, a, &after), same = 0, doubled = two_images(before, m0);
     for (size_t k = 0; k < m0; ++k)
         same += kept(after, m1, &before[k], D);
     printf("column in a 2 D slot: %zu contacts with history, %zu pairs through two images; after a forced rebuild %zu, "
