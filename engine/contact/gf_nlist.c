@@ -238,12 +238,12 @@ static void min_image(const gf_nlist *nl, double d[3], int s[3])
 static gf_status push_images(gf_ctx *ctx, gf_nlist *nl, int32_t i, int32_t j, const double d[3], double reach,
                              double forced, size_t *touching)
 {
-    int lo[3], hi[3];
+    double nearest[3] = {d[0], d[1], d[2]};
+    int s[3], lo[3], hi[3];
+    min_image(nl, nearest, s);
     for (int a = 0; a < 3; ++a) {
-        double L = nl->hi_m[a] - nl->lo_m[a];
-        int s = !nl->periodic[a] ? 0 : d[a] > 0.5 * L ? -1 : d[a] < -0.5 * L ? 1 : 0;
-        lo[a] = nl->narrow[a] ? -1 : s;
-        hi[a] = nl->narrow[a] ? 1 : s;
+        lo[a] = nl->narrow[a] ? -1 : s[a];
+        hi[a] = nl->narrow[a] ? 1 : s[a];
     }
     for (int sx = lo[0]; sx <= hi[0]; ++sx)
         for (int sy = lo[1]; sy <= hi[1]; ++sy)
