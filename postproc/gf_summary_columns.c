@@ -100,6 +100,8 @@ const gf_post_col gf_summary_columns[] = {
     {"Ufront_particles_max_err_m_s", 0, "m s-1", "uncertainty of Ufront_particles_max_m_s"},
     {"t_front_max_speed_s", 0, "s", "time of the maximum front speed"},
     {"t_rest_s", 0, "s", "time after which the front stays within D/2 of its final position"},
+    {"t_half_runout_s", 0, "s",
+     "time the front first reaches R0 + (R_inf - R0)/2: two columns' lag read along the front curve"},
     /* stage pore_pressure (stages/gf_stage_pore_pressure.c) */
     {"Pb_station", 1, "", "gauge reported in the summary"},
     {"Pb_x_m", 0, "m", "gauge position x"},

@@ -188,3 +188,15 @@ double gf_stats_settle_time(const double *t, const double *x, size_t n, double b
         --k;
     return t[k];
 }
+
+double gf_stats_first_reaching(const double *t, const double *x, size_t n, double level)
+{
+    for (size_t k = 0; k < n; ++k) {
+        if (!(x[k] >= level))
+            continue;
+        if (k == 0 || !isfinite(x[k - 1]) || x[k] == x[k - 1])
+            return t[k];
+        return t[k - 1] + (t[k] - t[k - 1]) * (level - x[k - 1]) / (x[k] - x[k - 1]);
+    }
+    return NAN;
+}

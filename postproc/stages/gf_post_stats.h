@@ -47,4 +47,7 @@ void gf_stats_steady(const double *t, const double *x, size_t n, gf_steady *out)
 /* Earliest t_k such that |x_j - x_{n-1}| <= band for every j >= k. */
 double gf_stats_settle_time(const double *t, const double *x, size_t n, double band);
 
+/* First time x reaches level, linear between the samples that bracket it; NAN when it never does. */
+double gf_stats_first_reaching(const double *t, const double *x, size_t n, double level);
+
 #endif

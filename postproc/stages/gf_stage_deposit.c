@@ -71,6 +71,8 @@ static gf_status deposit_from_diagnostics(gf_ctx *ctx, const gf_stage_in *in, gf
             gf_post_row_set(row, "t_front_max_speed_s", u.t_at);
             if (D > 0.0)
                 gf_post_row_set(row, "t_rest_s", gf_stats_settle_time(t, x, nt, 0.5 * D));
+            if (R0 > 0.0 && R > R0)
+                gf_post_row_set(row, "t_half_runout_s", gf_stats_first_reaching(t, x, nt, R0 + 0.5 * (R - R0)));
         }
     }
     free(t), free(x), free(h);
@@ -192,6 +194,9 @@ gf_status gf_stage_deposit(gf_ctx *ctx, const gf_stage_in *in, const gf_stage_op
             gf_post_row_set(row, "Ufront_particles_max_err_m_s", u.sigma);
             gf_post_row_set(row, "t_front_max_speed_s", u.t_at);
             gf_post_row_set(row, "t_rest_s", gf_stats_settle_time(ft, fx, fn, 0.5 * D));
+            if (R0 > 0.0 && dep.runout_m > R0)
+                gf_post_row_set(row, "t_half_runout_s",
+                                gf_stats_first_reaching(ft, fx, fn, R0 + 0.5 * (dep.runout_m - R0)));
         }
     }
     if (st == GF_OK && opts && opts->write_series) {

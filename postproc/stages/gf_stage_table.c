@@ -20,7 +20,7 @@ const gf_stage_info gf_stage_table[] = {
      "bed_packing_fraction or front_position; particles.nc: "
      "radius, glued",
      "summary row"},
-    {"deposit", 2, gf_stage_deposit,
+    {"deposit", 3, gf_stage_deposit,
      "attribute column_length_m > 0 (a released column); particles.nc: x, y, radius, glued (all frames); "
      "diagnostics.nc: front_position, deposit_height (continuum runs: stages = continuum), "
      "deposit_extent_1D, deposit_extent_2D (both methods, when written)",

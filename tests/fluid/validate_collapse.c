@@ -1,7 +1,7 @@
 /*
  * Immersed column collapse, dense vs loose (Rondon, Pouliquen & Aussillous,
  * PoF 23, 2011; Izard 2014 ch. 5), through the full
- * step loop with the unresolved tier. Run by tests/fluid/validate_fluid.sh,
+ * step loop with the unresolved tier (the resolved one with model=resolved). Run by tests/fluid/validate_fluid.sh,
  * which writes docs/notes/validation-fluid.md; mode "check" is the ctest test
  * collapse_dense_loose (labels slow, open).
  *
@@ -34,7 +34,8 @@
  *   2.5; the grain speed bounds the slip), wall time split fluid / DEM.
  * Usage: validate_collapse PHI [END_T_VISQ] [LUBRICATION 0|1] [MODE] [KEY=VALUE...]
  * KEY=VALUE sets a scene parameter, fluid.cell_over_D as cell_over_D=X, the
- * drag closure as drag=NAME, contact.t_contact_nd and contact.friction as
+ * drag closure as drag=NAME, the coupling tier as model=NAME (model=resolved with
+ * d_over_dx=X and diffusion_number=X: the grain-resolved tier, docs/resolved.md), contact.t_contact_nd and contact.friction as
  * t_contact_nd=X and friction=X, the random seed as seed=N, the aspect ratio
  * as a=X; seeds=N (mode check) runs seeds seed .. seed + N - 1 of both columns
  * and applies the criteria to their ensemble (ensemble()); loose=sediment (mode
@@ -152,6 +153,12 @@ static int apply_keys(gf_ctx *ctx, gf_run_spec *spec, int argc, char **argv)
             spec->contact.friction = atof(eq + 1);
         else if (strcmp(key, "seed") == 0)
             spec->seed = (uint64_t)strtoull(eq + 1, NULL, 10);
+        else if (strcmp(key, "model") == 0)
+            snprintf(spec->fluid.model, sizeof spec->fluid.model, "%s", eq + 1);
+        else if (strcmp(key, "d_over_dx") == 0)
+            spec->fluid.d_over_dx = atof(eq + 1);
+        else if (strcmp(key, "diffusion_number") == 0)
+            spec->fluid.diffusion_number = atof(eq + 1);
         else if (gf_run_spec_set_param(ctx, spec, key, atof(eq + 1)) != GF_OK) {
             fprintf(stderr, "validate_collapse: %s\n", ctx->last_msg);
             return 1;

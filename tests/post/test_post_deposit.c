@@ -33,7 +33,8 @@
  * maximum speed x_f (R − R0)/(2 τ R); the time to rest (front within D/2 of
  * its end position) solves x_f (R − R0)(1 − S)/R = D/2. Tolerances: speed 1 %
  * (windows of n/100 frames span 0.13 τ: bias (span/τ)²/12 < 0.2 %), rest
- * time one frame.
+ * time one frame; the time the front reaches half its run-out, R0 + (R_inf − R0)/2
+ * (two columns' lag read along the front curve, Izard 2014 §5.5), one frame.
  */
 #include <math.h>
 #include <stdio.h>
@@ -168,6 +169,12 @@ static void run_heap(const char *name, double H, double plateau, double R, const
         GF_CHECK_REL(gf_post_row_get(&row, "Ufront_particles_max_m_s"), vmax, 0.01);
         GF_CHECK_ABS(gf_post_row_get(&row, "t_front_max_speed_s"), tc, 0.05);
         GF_CHECK_ABS(gf_post_row_get(&row, "t_rest_s"), t_rest, 4.0 / (nt - 1) + 1e-9);
+        /* half run-out: the front edge x_f f + r_f reaches R0 + (R_inf - R0)/2 where S solves
+         * f(S) = (level - r_f)/x_f; the frames are interpolated linearly, so within one frame */
+        const double level = R0 + 0.5 * (Rinf - R0), f_half = (level - hp.r_front_grain) / xf;
+        const double t_half = tc + tau * atanh(2.0 * (f_half * Rl - R0) / (Rl - R0) - 1.0);
+        printf("  half run-out at %.4f s (true %.4f)\n", gf_post_row_get(&row, "t_half_runout_s"), t_half);
+        GF_CHECK_ABS(gf_post_row_get(&row, "t_half_runout_s"), t_half, 4.0 / (nt - 1));
         char p[1100];
         snprintf(p, sizeof p, "%s/post_deposit.nc", dir);
         FILE *f = fopen(p, "rb");
