@@ -44,6 +44,10 @@ typedef struct gf_scene_desc {
     gf_status (*build)(gf_sim *sim, const gf_run_spec *spec);
     /* At t = 0 after build: open the gate, tilt gravity. May be NULL. */
     gf_status (*start)(gf_sim *sim);
+    /* After start, once the fluid is set up, before t = 0 (not on a restart): e.g. a
+     * column settling through the fluid behind its gate; resets the clock when it
+     * advances. May be NULL. */
+    gf_status (*prelude)(gf_sim *sim);
     /* Scene-specific scalar diagnostics (diagnostics.nc), n_diag values. */
     int n_diag;
     const gf_var_info *diag;

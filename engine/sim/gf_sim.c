@@ -403,6 +403,8 @@ static gf_status create_inner(gf_sim *s, const gf_run_spec *spec, const gf_sim_o
         GF_TRY(gf_sim_create_coupling(s));
     if (s->immersed && s->opt.restart_path)
         GF_TRY(gf_sim_restore_coupling(s, s->opt.restart_path));
+    if (!s->opt.restart_path && s->scene->prelude)
+        GF_TRY(s->scene->prelude(s));
     return GF_OK;
 }
 
