@@ -45,8 +45,8 @@
  * MODE "viscous" (default); "held": the gate is put back after start(), to
  * measure how far the column compacts by itself in the fluid (interior Phi at
  * the end is printed); "sediment": the thesis' loose protocol, the column
- * sediments through the fluid behind the gate before t = 0
- * (sediment_behind_gate); "dry": fluid.model = none; "thin": the unresolved tier
+ * sediments through the fluid behind the gate before t = 0 (the scene parameter
+ * sediment_T_visq, its prelude); "dry": fluid.model = none; "thin": the unresolved tier
  * with a fluid of negligible density and viscosity (rho_f = 1e-3 kg/m3,
  * eta_f = 1e-7 Pa s). dry and thin run for END_T_VISQ x T_visq of the viscous
  * case and must give the same run-out within 5 % (issue #4's dry limit): mode
@@ -120,6 +120,7 @@ typedef struct run_args {
 
 static double aspect = 0.5, r0_over_D = 16.0; /* a = H0 / R0 (key a=X), R0 / D (key column_length_over_D=X) */
 static double sediment_tv = 0.0;              /* key sediment_T_visq=X; 0: sediment_T_visq() */
+static double sediment_T_visq(void);
 static double h0_m(void) { return aspect * r0_over_D * D; }
 static double t_visq_s(void) { return ETA / ((RHO_P - RHO_F) * G * h0_m()); }
 
@@ -195,6 +196,10 @@ static int make_spec(gf_ctx *ctx, const run_args *a, gf_run_spec *spec)
         gf_run_spec_set_param(ctx, spec, "relax_preparation", 1.0) != GF_OK)
         return 1;
     if (apply_keys(ctx, spec, a->argc, a->argv))
+        return 1;
+    /* "sediment": the scene's prelude settles the column through the fluid before t = 0 */
+    if (strcmp(a->mode, "sediment") == 0 &&
+        gf_run_spec_set_param(ctx, spec, "sediment_T_visq", sediment_T_visq()) != GF_OK)
         return 1;
     spec->seed += (uint64_t)a->seed_offset;
     return 0;
@@ -331,13 +336,12 @@ static void print_series_line(double t, double front, const double pb[N_GAUGE], 
 }
 
 /*
- * Mode "sediment", the thesis' loose protocol (Izard 2014 §5.2: the grains settle inside the viscous fluid):
- * the prepared column, gate closed, is stretched vertically by SEDIMENT_STRETCH about the floor (solid
- * fraction ~0.37, no contact left), every grain at rest, and sediments through the fluid for
- * sediment_T_visq(); the gate is then removed. The column's height is what the sedimentation leaves
- * (the grain count is the preparation's), so its aspect ratio differs from the requested one.
+ * Mode "sediment", the thesis' loose protocol (Izard 2014 §5.2, §5.5: the grains settle inside the viscous
+ * fluid): the scene parameter sediment_T_visq (engine/scenes/gf_scene_column_collapse.c, its prelude)
+ * stretches the prepared column 1.6-fold behind the gate and lets it settle for sediment_T_visq() before
+ * t = 0. The column's height is what the sedimentation leaves (the grain count is the preparation's), so
+ * its aspect ratio differs from the requested one.
  */
-#define SEDIMENT_STRETCH 1.6
 
 /* The suspension falls 0.6 H0 at its hindered speed u_s (Richardson-Zaki at phi ~0.37: ~0.12 of Stokes'),
  * so the time is 0.6 H0 / u_s, and in T_visq = eta/(drho g H0) it grows as (H0/D)^2: 6000 T_visq at the
@@ -348,18 +352,9 @@ static double sediment_T_visq(void)
     return sediment_tv > 0.0 ? sediment_tv : 6000.0 * h_over_8D * h_over_8D;
 }
 
-static int sediment_behind_gate(gf_sim *sim, double *t_release)
+static void print_sedimented_column(gf_sim *sim)
 {
     gf_particles *p = gf_sim_particles(sim);
-    for (size_t i = 0; i < p->n_local; ++i)
-        if (!(p->flags[i] & GF_P_GLUED)) {
-            p->y_m[i] = 0.5 * D + (p->y_m[i] - 0.5 * D) * SEDIMENT_STRETCH;
-            p->vx_m_s[i] = p->vy_m_s[i] = p->vz_m_s[i] = 0.0;
-            p->wx_rad_s[i] = p->wy_rad_s[i] = p->wz_rad_s[i] = 0.0;
-        }
-    if (gf_sim_rebuild_neighbours(sim) != GF_OK ||
-        gf_sim_advance(sim, (long)ceil(sediment_T_visq() * t_visq_s() / gf_sim_dt_s(sim))) != GF_OK)
-        return 1;
     gf_measure_domain d;
     gf_sim_box(sim, d.lo_m, d.hi_m, d.periodic);
     printf("# sedimented column, solid fraction in slabs of 1 D from the floor (x in [1.5 D, R0 - 1.5 D]):");
@@ -368,8 +363,6 @@ static int sediment_behind_gate(gf_sim *sim, double *t_release)
         printf(" %.3f", gf_measure_solid_fraction_box(p, &d, lo, hi, D / 8.0, 0));
     }
     printf("\n");
-    *t_release = gf_sim_time_s(sim);
-    return gf_sim_set_wall_active(sim, WALL_GATE, 0) != GF_OK;
 }
 
 /* One collapse; prints the series every 500 T_visq when verbose. Returns 0 on success. */
@@ -392,17 +385,14 @@ static int run_collapse(const run_args *a, int verbose, collapse_run *r)
         return 1;
     }
     r->t_build = gf_wtime() - t0;
-    int held = strcmp(a->mode, "held") == 0, sed = strcmp(a->mode, "sediment") == 0;
-    if ((held || sed) && gf_sim_set_wall_active(sim, WALL_GATE, 1) != GF_OK) {
+    int held = strcmp(a->mode, "held") == 0;
+    if (held && gf_sim_set_wall_active(sim, WALL_GATE, 1) != GF_OK) {
         fprintf(stderr, "validate_collapse: %s\n", ctx.last_msg);
         return 1;
     }
-    double t_off = 0.0; /* "sediment": the collapse's t = 0 is the end of the sedimentation */
-    if (sed && sediment_behind_gate(sim, &t_off)) {
-        fprintf(stderr, "validate_collapse: %s\n", ctx.last_msg);
-        gf_sim_destroy(&sim);
-        return 1;
-    }
+    const double t_off = 0.0; /* "sediment": the scene's prelude restarts the clock at the end of it */
+    if (strcmp(a->mode, "sediment") == 0)
+        print_sedimented_column(sim);
     const gf_scene_desc *sc = gf_scene_find("column_collapse");
     sc->initial_packing(sim, &r->phi_m, &r->phi_l);
     gf_particles *p = gf_sim_particles(sim);
