@@ -832,6 +832,49 @@ static gf_status resolved_load(gf_coupling *cc, gf_restart *r)
     return GF_OK;
 }
 
+/* --- cost (gf_coupling_tier.cost) --------------------------------------------------------------- */
+
+/*
+ * CPU of one fluid step on one core: c_cell per grid cell (stencils, Crank-Nicolson, the FFT
+ * projection) and c_grain per cell of each grain's (D/dx)^3 (its maps, forcing and integrals;
+ * docs/notes/resolved-multigrain.md, "Where the time goes"), times the time scheme's factor.
+ * Measured on one thread (Release, no LTO, the other core busy) as the CPU between end_time 0.02
+ * and 1.0 (0.5 for the collapses) sqrt(D/g), per fluid step:
+ *   one sphere settling, D/dx 12, 96^3 cells:                  0.136 s  -> c_cell 1.54e-7 s
+ *   avalanche, viscous point, D/dx 8, 40x160x40, 240 grains:   0.0773 s -> c_grain 3.1e-7 s
+ *   collapse, D/dx 10, 500x300x20, ~338 grains:                0.555 s  -> c_grain 2.8e-7 s
+ *   collapse, D/dx 8, 400x240x24, ~500 grains:                 0.506 s  (the model: 0.446, -12 %)
+ * and rk3 2.3 times ab2 on the avalanche (the maps are built once a step, the rest three times).
+ */
+#define RESOLVED_COST_S_PER_CELL 1.54e-7
+#define RESOLVED_COST_S_PER_GRAIN_CELL 3.0e-7
+#define RESOLVED_COST_RK3_FACTOR 2.3
+
+/* The fluid step as resolved_dt_max_s sizes it at rest (the viscous bound, or the advective one at the
+ * free-fall speed sqrt(gD)), in whole DEM steps (gf_sim_choose_substeps); *advective when the advective
+ * bound is the shorter: a flow faster than sqrt(gD) then shortens the step (the Table 4.2 inertial
+ * avalanche: 0.037 sqrt(D/g) at rest, ~0.005 on average over 100 sqrt(D/g)). */
+static double resolved_step_at_rest_s(const gf_run_spec *spec, int *advective)
+{
+    const double D = spec->grains.diameter_m, h = D / d_over_dx(spec);
+    const double nu = spec->fluid.viscosity_Pa_s / spec->fluid.density_kg_m3, dt_dem = gf_run_spec_dt_s(spec);
+    const double dt_visc = spec->fluid.diffusion_number * h * h / nu;
+    const double dt_adv = spec->gravity_m_s2 > 0.0 ? spec->fluid.cfl * h / sqrt(spec->gravity_m_s2 * D) : INFINITY;
+    *advective = dt_adv < dt_visc;
+    return fmax(floor(fmin(dt_visc, dt_adv) / dt_dem), 1.0) * dt_dem;
+}
+
+static void resolved_cost(const gf_run_spec *spec, const gf_tier_cost_query *q, gf_tier_cost *out)
+{
+    const double n = d_over_dx(spec), h = spec->grains.diameter_m / n;
+    out->cells = round(q->box_m[0] / h) * round(q->box_m[1] / h) * round(q->box_m[2] / h); /* NaN: box unknown */
+    out->fluid_steps = ceil(q->fluid_time_s / resolved_step_at_rest_s(spec, &out->at_least));
+    gf_ns2_scheme scheme = GF_NS2_AB2;
+    gf_fluid_ns2_scheme_from_name(spec->fluid.time_scheme, &scheme);
+    const double per_step = RESOLVED_COST_S_PER_CELL * out->cells + RESOLVED_COST_S_PER_GRAIN_CELL * q->n_grains * n * n * n;
+    out->cpu_s = out->fluid_steps * per_step * (scheme == GF_NS2_RK3 ? RESOLVED_COST_RK3_FACTOR : 1.0);
+}
+
 const gf_coupling_tier gf_coupling_tier_resolved = {
     .name = "resolved",
     .summary = "Navier-Stokes inside the grains too, immersed-boundary direct forcing at D/dx = 8-20",
@@ -853,4 +896,5 @@ const gf_coupling_tier gf_coupling_tier_resolved = {
     .fluid_flow_rate = resolved_flow_rate,
     .fluid_mass_kg = resolved_fluid_mass,
     .grain_force = resolved_grain_force,
+    .cost = resolved_cost,
 };

@@ -23,6 +23,8 @@
  *                    (called by gf_sim_create and by `grainflow check`)
  *   auto_fits        whether `fluid: auto` may choose the tier for a run that
  *                    needs a fluid, and why (one line)
+ *   cost             what the fluid will cost a run, from the spec alone
+ *                    (`grainflow check`, campaign/gf_cost.h)
  * Optional operations are NULL; the dispatcher (gf_coupling.c) gives the
  * default stated beside each.
  */
@@ -42,6 +44,21 @@ struct gf_coupling {
 typedef struct gf_tier_query {
     double stokes_St, density_ratio_r;
 } gf_tier_query;
+
+/* What a tier is told of a run when it estimates its cost (campaign/gf_cost.h). */
+typedef struct gf_tier_cost_query {
+    double n_grains;      /* the scene's estimate (gf_scene_desc.grain_count) */
+    double box_m[3];      /* the box the fluid fills (gf_scene_desc.fluid_box); NaN when the scene gives none */
+    double fluid_time_s;  /* simulated time under the fluid: the scene's prelude and the run */
+} gf_tier_cost_query;
+
+/* The tier's answer: NaN where it cannot say. */
+typedef struct gf_tier_cost {
+    double cpu_s;         /* CPU seconds of the fluid and the coupling on one core, the DEM's excluded */
+    double cells;         /* fluid cells (NaN: the tier's grid is not the question) */
+    double fluid_steps;   /* fluid steps over fluid_time_s */
+    int at_least;         /* the step was sized at rest and shortens as the flow speeds up: cpu_s is a lower bound */
+} gf_tier_cost;
 
 struct gf_coupling_tier {
     const char *name;      /* the value of spec.fluid.model */
@@ -65,6 +82,7 @@ struct gf_coupling_tier {
     double (*fluid_flow_rate)(const gf_coupling *c);                          /* NULL: NaN */
     double (*fluid_mass_kg)(const gf_coupling *c);                            /* NULL: NaN */
     int (*grain_force)(const gf_coupling *c, const gf_particles *p, size_t i, double f_N[3]); /* NULL: not kept */
+    void (*cost)(const gf_run_spec *spec, const gf_tier_cost_query *q, gf_tier_cost *out); /* NULL: unknown */
 };
 
 /* The registry, in the order `fluid: auto` asks (cheapest first). */

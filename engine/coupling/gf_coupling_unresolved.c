@@ -995,6 +995,22 @@ static int unresolved_auto_fits(const gf_tier_query *q, char *why, size_t n)
     return 1;
 }
 
+/*
+ * Cost (gf_coupling_tier.cost): the fluid's CPU per grain and DEM step, measured on the immersed
+ * collapse of configs/demo.yaml (a = 1, Phi_i = 0.6, R0 = 10 D: 404 grains; R0 = 16 D: 960 grains;
+ * cells of 2 D) as the excess of the immersed run's CPU over the dry one's between end_time 12 and
+ * 2 sqrt(D/g): 1.17e-7 and 1.28e-7 s per grain-step in all, 3.2e-8 and 3.8e-8 of it the DEM's.
+ * Re-measure: docs/campaigns.md, "What a campaign costs".
+ */
+#define UNRESOLVED_COST_S_PER_GRAIN_STEP 8.8e-8
+
+static void unresolved_cost(const gf_run_spec *spec, const gf_tier_cost_query *q, gf_tier_cost *out)
+{
+    out->cells = NAN;
+    out->fluid_steps = NAN;
+    out->cpu_s = q->n_grains * ceil(q->fluid_time_s / gf_run_spec_dt_s(spec)) * UNRESOLVED_COST_S_PER_GRAIN_STEP;
+}
+
 const gf_coupling_tier gf_coupling_tier_unresolved = {
     .name = "unresolved",
     .summary = "locally averaged Navier-Stokes on cells of a few D, drag closure, pore pressure",
@@ -1014,6 +1030,7 @@ const gf_coupling_tier gf_coupling_tier_unresolved = {
     .load = gf_unresolved_load,
     .fluid_flow_rate = unresolved_fluid_flow_rate,
     .fluid_mass_kg = unresolved_fluid_mass_kg,
+    .cost = unresolved_cost,
 };
 
 /* --- diagnostics of this tier through the public handle (gf_coupling_diag.h) --------------------- */

@@ -100,18 +100,28 @@ static gf_status lattice_base(gf_ctx *ctx, gf_particles *out, const gf_psd *psd,
     return GF_OK;
 }
 
+/* The periodic cell L x H x W, the lid at H. */
+static void avalanche_fluid_box(const gf_run_spec *spec, double size_m[3])
+{
+    const double D = spec->grains.diameter_m;
+    size_m[0] = gf_run_spec_param(spec, "length_over_D", 5.0) * D;
+    size_m[1] = gf_run_spec_param(spec, "height_over_D", 20.0) * D;
+    size_m[2] = gf_run_spec_param(spec, "width_over_D", 5.0) * D;
+}
+
 static gf_status avalanche_build(gf_sim *sim, const gf_run_spec *spec)
 {
     gf_ctx *ctx = gf_sim_ctx(sim);
     gf_particles *p = gf_sim_particles(sim);
     double D = spec->grains.diameter_m, rho = spec->grains.density_kg_m3;
-    double L = gf_run_spec_param(spec, "length_over_D", 5.0) * D, W = gf_run_spec_param(spec, "width_over_D", 5.0) * D;
-    double H = gf_run_spec_param(spec, "height_over_D", 20.0) * D;
+    double hi[3];
+    avalanche_fluid_box(spec, hi);
+    const double L = hi[0], H = hi[1], W = hi[2];
     double h_bed = gf_run_spec_param(spec, "bed_height_over_D", 8.0) * D;
     double phi = isnan(spec->phi_initial) ? gf_run_spec_param(spec, "phi_target", 0.6) : spec->phi_initial;
     if (h_bed + 2.0 * D > H)
         return GF_FAIL(ctx, GF_ERR_CONFIG, "avalanche: bed_height_over_D + 2 must not exceed height_over_D");
-    const double lo[3] = {0, 0, 0}, hi[3] = {L, H, W};
+    const double lo[3] = {0, 0, 0};
     GF_TRY(gf_scene_box_under_gravity(sim, lo, hi, (const int[3]){1, 0, 1}, spec->gravity_m_s2));
     const double mu = spec->contact.wall_friction;
     const gf_scene_plane floor_and_lid[] = {{{0, 0, 0}, {0, 1, 0}, mu}, {{0, H, 0}, {0, -1, 0}, mu}};
@@ -216,4 +226,5 @@ const gf_scene_desc gf_scene_avalanche = {
     .done = NULL,
     .initial_packing = avalanche_initial_packing,
     .grain_count = avalanche_grain_count,
+    .fluid_box = avalanche_fluid_box,
 };

@@ -157,6 +157,19 @@ static gf_status bounce_diagnose(gf_sim *sim, double *v)
     return GF_OK;
 }
 
+/* The box of bounce_geometry. */
+static void bounce_fluid_box(const gf_run_spec *spec, double size_m[3])
+{
+    double release[3];
+    bounce_geometry(spec, release, size_m);
+}
+
+/* The sphere, and head-on its target. */
+static double bounce_grain_count(const gf_run_spec *spec)
+{
+    return gf_run_spec_param(spec, "target_gap_over_D", 0.0) > 0.0 ? 2.0 : 1.0;
+}
+
 const gf_scene_desc gf_scene_bounce = {
     .name = "bounce",
     .caption = "a sphere bouncing off a wall, normally or obliquely, or off a second sphere, in a viscous fluid "
@@ -167,4 +180,6 @@ const gf_scene_desc gf_scene_bounce = {
     .build = bounce_build,
     GF_SCENE_DIAG(bounce_diag),
     .diagnose = bounce_diagnose,
+    .grain_count = bounce_grain_count,
+    .fluid_box = bounce_fluid_box,
 };

@@ -132,6 +132,14 @@ static void column_geom_of(const gf_run_spec *s, column_geom *g)
     g->top = immersed ? 2.0 * g->H0 + 14.0 * g->D : g->H0 + 4.0 * g->D;
 }
 
+/* The run's box: L x the fluid's height x W. */
+static void column_fluid_box(const gf_run_spec *spec, double size_m[3])
+{
+    column_geom g;
+    column_geom_of(spec, &g);
+    size_m[0] = g.L, size_m[1] = g.top, size_m[2] = g.W;
+}
+
 static double sphere_volume(double r) { return 4.0 / 3.0 * M_PI * r * r * r; }
 
 static gf_status column_build(gf_sim *sim, const gf_run_spec *spec)
@@ -142,7 +150,8 @@ static gf_status column_build(gf_sim *sim, const gf_run_spec *spec)
     column_geom_of(spec, &g);
     if (g.R0 >= g.L)
         return GF_FAIL(ctx, GF_ERR_CONFIG, "column_collapse: domain_length_over_R0 must exceed 1");
-    const double lo[3] = {0, 0, 0}, hi[3] = {g.L, g.top, g.W};
+    double lo[3] = {0, 0, 0}, hi[3];
+    column_fluid_box(spec, hi);
     GF_TRY(gf_scene_box_under_gravity(sim, lo, hi, (const int[3]){0, 0, 1}, spec->gravity_m_s2));
     const double mu = spec->contact.wall_friction;
     const gf_scene_plane walls[] = {
@@ -355,6 +364,16 @@ static double column_grain_count(const gf_run_spec *spec)
     return column + (g.rough ? 0.45 * g.L * g.W / (g.D * g.D) : 0.0);
 }
 
+/* sediment_T_visq T_visq under the fluid before t = 0 (column_prelude), T_visq = eta_f/(drho g H0). */
+static double column_prelude_time_s(const gf_run_spec *spec)
+{
+    column_geom g;
+    column_geom_of(spec, &g);
+    const double drho = spec->grains.density_kg_m3 - spec->fluid.density_kg_m3;
+    const double t_visq = spec->fluid.viscosity_Pa_s / (drho * spec->gravity_m_s2 * g.H0);
+    return drho > 0.0 ? gf_run_spec_param(spec, "sediment_T_visq", 0.0) * t_visq : 0.0;
+}
+
 const gf_scene_desc gf_scene_column_collapse = {
     .name = "column_collapse",
     .caption = "granular column released by a gate, quasi-2D slab (Lajeunesse 2005; Rondon 2011; Izard 2014 ch. 5)",
@@ -371,4 +390,6 @@ const gf_scene_desc gf_scene_column_collapse = {
     .initial_packing = column_initial_packing,
     .column_geometry = column_geometry,
     .grain_count = column_grain_count,
+    .fluid_box = column_fluid_box,
+    .prelude_time_s = column_prelude_time_s,
 };

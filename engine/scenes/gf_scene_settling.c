@@ -155,6 +155,12 @@ static double settling_grain_count(const gf_run_spec *spec)
     return gf_run_spec_param(spec, "phi_suspension", 0.2) * L * L * L / (M_PI / 6.0);
 }
 
+/* The periodic cube of box_over_D (the lattice rounds its side to whole spacings, within half of one). */
+static void settling_fluid_box(const gf_run_spec *spec, double size_m[3])
+{
+    size_m[0] = size_m[1] = size_m[2] = gf_run_spec_param(spec, "box_over_D", 16.0) * spec->grains.diameter_m;
+}
+
 const gf_scene_desc gf_scene_settling = {
     .name = "settling",
     .caption = "single sphere or homogeneous suspension settling in a periodic box (Stokes; Richardson & Zaki 1954)",
@@ -165,4 +171,5 @@ const gf_scene_desc gf_scene_settling = {
     GF_SCENE_DIAG(settling_diag),
     .diagnose = settling_diagnose,
     .grain_count = settling_grain_count,
+    .fluid_box = settling_fluid_box,
 };

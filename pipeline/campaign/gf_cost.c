@@ -7,24 +7,22 @@
 
 #include "continuum/gf_continuum_avalanche.h"
 #include "continuum/gf_continuum_collapse.h"
+#include "coupling/gf_coupling_tier.h"
 #include "core/gf_status.h"
 #include "scenes/gf_scene.h"
 
 /*
  * Per grain-step CPU constants (one core, Release build, -O3 -march=x86-64-v2),
- * measured on the dry and immersed collapse of configs/demo.yaml (a = 1,
- * Phi_i = 0.6, R0 = 10 D: 404 grains; R0 = 16 D: 960 grains) as the
- * difference of CPU times between end_time 12 and 2 sqrt(D/g) (50 000 steps),
- * which cancels the preparation:
- *   dry:      3.2e-8 (404 grains), 3.8e-8 (960 grains) s per grain-step
- *   immersed: 1.17e-7, 1.28e-7 s per grain-step, of which the fluid tier
- *             (unresolved, cell 2 D) is the excess over the dry run
+ * measured on the dry collapse of configs/demo.yaml (a = 1, Phi_i = 0.6,
+ * R0 = 10 D: 404 grains; R0 = 16 D: 960 grains) as the difference of CPU times
+ * between end_time 12 and 2 sqrt(D/g) (50 000 steps), which cancels the
+ * preparation: 3.2e-8 (404 grains), 3.8e-8 (960 grains) s per grain-step;
  * and the preparation (packing by deposition, gf_packing.h) as what the
  * end_time 2 runs took beyond their steps and settling: 2.2-2.9 ms per grain.
+ * The fluid's cost is its tier's (gf_coupling_tier.cost).
  * Re-measure: docs/campaigns.md, "What a campaign costs".
  */
 #define COST_DEM_S_PER_GRAIN_STEP 3.5e-8
-#define COST_FLUID_S_PER_GRAIN_STEP 8.8e-8
 #define COST_PACK_S_PER_GRAIN 2.5e-3
 /* method: continuum, CPU per cell and time step. The implicit mu(I) viscous
  * solve (a sparse LU) dominates and its cost per cell grows with the grid:
@@ -41,6 +39,9 @@
 #define COST_PARTICLES_B_PER_GRAIN_RECORD 40.0
 #define COST_FIELDS_B_PER_GRAIN_RECORD 40.0
 #define COST_SMALL_FILES_B 1.1e5
+/* a grid tier's fields.nc (the resolved tier: solid fraction, velocity, pressure): 185 MB for 4 records
+ * of 2.30 M cells, the collapse at D/dx 8 to 0.3 sqrt(D/g), 20 bytes per cell and record */
+#define COST_FIELDS_B_PER_CELL_RECORD 20.0
 
 static int is_immersed(const gf_scene_desc *scene, const gf_run_spec *s)
 {
@@ -75,11 +76,31 @@ static void continuum_estimate(const gf_run_spec *s, gf_run_cost *out)
     out->output_bytes = COST_SMALL_FILES_B;
 }
 
+/* The fluid's CPU over fluid_time_s, from the run's tier (an unregistered name: the first, as `fluid: auto`). */
+static void fluid_estimate(const gf_scene_desc *scene, const gf_run_spec *s, double fluid_time_s, gf_run_cost *out)
+{
+    const gf_coupling_tier *tier = gf_coupling_tier_find(s->fluid.model);
+    if (!tier) {
+        int n;
+        tier = gf_coupling_tier_all(&n)[0];
+    }
+    gf_tier_cost_query q = {.n_grains = out->n_grains, .box_m = {NAN, NAN, NAN}, .fluid_time_s = fluid_time_s};
+    if (scene->fluid_box)
+        scene->fluid_box(s, q.box_m);
+    gf_tier_cost tc = {NAN, NAN, NAN, 0};
+    if (tier->cost)
+        tier->cost(s, &q, &tc);
+    out->fluid_cpu_s = tc.cpu_s;
+    out->fluid_cells = tc.cells;
+    out->fluid_steps = tc.fluid_steps;
+    out->cpu_at_least = tc.at_least;
+}
+
 void gf_cost_estimate(const gf_run_spec *s, gf_run_cost *out)
 {
     const gf_scene_desc *scene = gf_scene_find(s->scene);
     memset(out, 0, sizeof *out);
-    out->n_cells = NAN;
+    out->n_cells = out->fluid_cells = out->fluid_steps = NAN;
     if (strcmp(s->method, "continuum") == 0) {
         continuum_estimate(s, out);
         return;
@@ -90,16 +111,24 @@ void gf_cost_estimate(const gf_run_spec *s, gf_run_cost *out)
     const double t_grain = sqrt(s->grains.diameter_m / s->gravity_m_s2), dt = gf_run_spec_dt_s(s);
     const double end_nd = s->end_time_nd > 0 ? s->end_time_nd : (scene ? scene->default_end_time_nd : 0.0);
     out->steps = end_nd > 0 && dt > 0 ? ceil(end_nd * t_grain / dt) : NAN;
+    /* the preparation's settling runs dry, before the fluid is made; the prelude under the fluid */
     const double settle = dt > 0 ? ceil(gf_run_spec_param(s, "settle_time_nd", 0.0) * t_grain / dt) : 0.0;
+    const double prelude_s = out->immersed && scene->prelude_time_s ? scene->prelude_time_s(s) : 0.0;
+    out->prelude_steps = dt > 0 ? ceil(prelude_s / dt) : 0.0;
     const int packs = scene && (scene->needs & GF_NEED_PACKING);
-    const double per_step = COST_DEM_S_PER_GRAIN_STEP + (out->immersed ? COST_FLUID_S_PER_GRAIN_STEP : 0.0);
-    out->cpu_s = out->n_grains * ((packs ? COST_PACK_S_PER_GRAIN : 0.0) + (out->steps + settle) * per_step);
+    out->cpu_s = out->n_grains * ((packs ? COST_PACK_S_PER_GRAIN : 0.0) +
+                                  (out->steps + settle + out->prelude_steps) * COST_DEM_S_PER_GRAIN_STEP);
+    if (out->immersed) {
+        fluid_estimate(scene, s, out->steps * dt + prelude_s, out);
+        out->cpu_s += out->fluid_cpu_s;
+    }
     const double records = s->output.interval_nd > 0 ? floor(end_nd / s->output.interval_nd) + 1.0 : NAN;
     double bytes = COST_SMALL_FILES_B;
     if (s->output.particles)
         bytes += records * out->n_grains * COST_PARTICLES_B_PER_GRAIN_RECORD;
     if (s->output.fields && out->immersed)
-        bytes += records * out->n_grains * COST_FIELDS_B_PER_GRAIN_RECORD;
+        bytes += records * (isnan(out->fluid_cells) ? out->n_grains * COST_FIELDS_B_PER_GRAIN_RECORD
+                                                     : out->fluid_cells * COST_FIELDS_B_PER_CELL_RECORD);
     out->output_bytes = bytes;
 }
 

@@ -3,11 +3,14 @@
  * size, estimated from the resolved spec alone (`grainflow check`, and the
  * campaign ETA before any run has reported its speed).
  *
- *   CPU = N (c_pack + (steps + settle_steps) (c_dem + c_fluid))
+ *   CPU = N (c_pack + (steps + settle_steps + prelude_steps) c_dem) + fluid
  *
- * with N the scene's grain estimate (gf_scene_desc.grain_count), c_fluid
- * only when immersed, and the per grain-step constants measured on this
- * code (gf_cost.c). A run with method: continuum costs its cells times
+ * with N the scene's grain estimate (gf_scene_desc.grain_count), the
+ * constants measured on this code (gf_cost.c), the prelude the scene's time
+ * under the fluid before t = 0 (gf_scene_desc.prelude_time_s), and fluid, when
+ * immersed, what the run's coupling tier says its fluid costs over the prelude
+ * and the run (gf_coupling_tier.cost: per grain and step for the unresolved
+ * tier, per cell and fluid step for the resolved one, from the scene's box). A run with method: continuum costs its cells times
  * its time steps times a constant per cell-step instead. A scene that stops at its own end condition (a deposit
  * at rest) may finish earlier: its figures are upper bounds.
  */
@@ -22,10 +25,15 @@ typedef struct gf_run_cost {
     double n_grains;       /* estimated grains, NaN when the scene gives no estimate (and for method: continuum) */
     double n_cells;        /* method: continuum: the grid's cells; NaN for grains */
     double steps;          /* DEM steps from t = 0 to the end time; NaN when the end is the scene's condition only */
+    double prelude_steps;  /* DEM steps under the fluid before t = 0 (the scene's prelude); 0 when none */
+    double fluid_cells;    /* a grid tier's cells; NaN for the other tiers or when the scene gives no box */
+    double fluid_steps;    /* a grid tier's fluid steps over the prelude and the run; NaN as fluid_cells */
+    double fluid_cpu_s;    /* the fluid's share of cpu_s; 0 when dry, NaN when the tier cannot say */
     double cpu_s;          /* estimated CPU seconds on one core; NaN when n_grains or steps is */
     double output_bytes;   /* estimated bytes of the netCDF files; NaN when unknown */
     int immersed;          /* the fluid tier runs */
     int may_stop_early;    /* the scene has an end condition: figures are upper bounds */
+    int cpu_at_least;      /* the fluid tier sized its step at rest: cpu_s is a lower bound */
 } gf_run_cost;
 
 /* Warning thresholds: a run or campaign above these is worth a second look. */

@@ -110,10 +110,11 @@ static const char *count_text(double x, int digits, char *buf, size_t n)
     return buf;
 }
 
-/* "404 grains, 1e+05 steps, CPU 0:05, output 1.2 MB" (figures "?" when the scene gives no estimate). */
+/* "404 grains, 1e+05 steps, CPU 0:05, output 1.2 MB" (figures "?" when the scene gives no estimate); a
+ * prelude's steps before t = 0 and a grid tier's cells and fluid steps when there are. */
 static void cost_text(const gf_run_cost *k, char *buf, size_t n)
 {
-    char cpu[32], out[32], grains[32], steps[32];
+    char cpu[32], out[32], grains[32], steps[32], extra[96] = "", fluid[96] = "";
     gf_cost_format_time(k->cpu_s, cpu, sizeof cpu);
     gf_cost_format_bytes(k->output_bytes, out, sizeof out);
     if (!isnan(k->n_cells)) { /* method: continuum */
@@ -121,9 +122,13 @@ static void cost_text(const gf_run_cost *k, char *buf, size_t n)
                  count_text(k->steps, 3, steps, sizeof steps), cpu, out);
         return;
     }
-    snprintf(buf, n, "%s grains, %s steps, CPU %s%s, output %s%s", count_text(round(k->n_grains), 9, grains, sizeof grains),
-             count_text(k->steps, 3, steps, sizeof steps), cpu, k->immersed ? " (DEM + fluid)" : "", out,
-             k->may_stop_early ? " (at most: stops at rest)" : "");
+    if (k->prelude_steps > 0)
+        snprintf(extra, sizeof extra, " (and %.3g before t = 0)", k->prelude_steps);
+    if (!isnan(k->fluid_steps))
+        snprintf(fluid, sizeof fluid, ", %.3g fluid cells x %.3g fluid steps", k->fluid_cells, k->fluid_steps);
+    snprintf(buf, n, "%s grains, %s steps%s%s, CPU %s%s%s, output %s%s", count_text(round(k->n_grains), 9, grains, sizeof grains),
+             count_text(k->steps, 3, steps, sizeof steps), extra, fluid, k->cpu_at_least ? "at least " : "", cpu,
+             k->immersed ? " (DEM + fluid)" : "", out, k->may_stop_early ? " (at most: stops at rest)" : "");
 }
 
 /* The warnings a run's cost calls for, on stderr, naming the run. */
@@ -192,9 +197,9 @@ static void print_campaign_cost(const char *file, const gf_campaign *c, const gf
     char cpu[32], out[32], grains[32], steps[32];
     gf_cost_format_time(total->cpu_s, cpu, sizeof cpu);
     gf_cost_format_bytes(total->output_bytes, out, sizeof out);
-    printf("# cost of campaign %s: %d runs, %s grains, %s steps in all; CPU %s on one core%s, output %s\n", c->name,
+    printf("# cost of campaign %s: %d runs, %s grains, %s steps in all; CPU %s%s on one core%s, output %s\n", c->name,
            c->n_runs, count_text(round(total->n_grains), 9, grains, sizeof grains),
-           count_text(total->steps, 3, steps, sizeof steps), cpu,
+           count_text(total->steps, 3, steps, sizeof steps), total->cpu_at_least ? "at least " : "", cpu,
            may_stop_early ? " (at most: runs stop at rest)" : "", out);
     if (total->cpu_s > GF_COST_WARN_CPU_S)
         fprintf(stderr, "%s: warning: campaign %s needs about %s of CPU (%.3g h; --jobs N divides the wall time)\n",
@@ -219,7 +224,7 @@ static int check_file(const char *file, const char *out_dir, const char *const *
     for (int i = 0; i < c->n_runs; ++i) {
         const gf_campaign_run *r = &c->runs[i];
         gf_run_cost k;
-        char cost[200];
+        char cost[320];
         gf_cost_estimate(&r->spec, &k);
         cost_text(&k, cost, sizeof cost);
         if (brief) {
@@ -238,6 +243,7 @@ static int check_file(const char *file, const char *out_dir, const char *const *
         total.cpu_s += k.cpu_s;
         total.output_bytes += k.output_bytes;
         may_stop_early |= k.may_stop_early;
+        total.cpu_at_least |= k.cpu_at_least;
     }
     print_campaign_cost(file, c, &total, may_stop_early);
     gf_campaign_destroy(&c);

@@ -57,6 +57,19 @@ awk -v s="$steps" -v dt="$dt" -v tg="$tg" 'BEGIN { e = 0.2 * tg / dt; exit !(s >
 "$g" check "$src/tests/pipeline/data/phi_loose_column.yaml" >out.txt 2>err.txt
 [ ! -s err.txt ] && ok "no warning for a short run" || fail "warnings for a short run: $(cat err.txt)"
 
+# the resolved tier priced by its grid: L 50 D x the fluid's 30 D x W 2 D at D/dx 10 is 500 x 300 x 20
+# cells; the loose column's settling through the fluid before t = 0 (sediment_T_visq T_visq) is priced too
+"$g" check "$src/configs/column_collapse_immersed.yaml" --set fluid.model=resolved --set fluid.d_over_dx=10 \
+  --set scene.width_over_D=2 --set scene.domain_length_over_R0=3.125 --set end_time=10 \
+  --set scene.sediment_T_visq=8000 >out.txt 2>err.txt
+pre=$(sed -n 's/^# cost: .* steps (and \([0-9.e+]*\) before t = 0).*/\1/p' out.txt)
+tv=$(sed -n 's/.*T_visq = \([0-9.e+-]*\) s.*/\1/p' out.txt)
+dt=$(sed -n 's/.*dt = \([0-9.e+-]*\) s.*/\1/p' out.txt)
+grep -q '^# cost: .*, 3e+06 fluid cells x [0-9.e+]* fluid steps, CPU [0-9:]* (DEM + fluid)' out.txt &&
+  awk -v p="$pre" -v tv="$tv" -v dt="$dt" 'BEGIN { e = 8000 * tv / dt; exit !(p >= 0.99 * e && p <= 1.01 * e) }' &&
+  ok "resolved cost: 3e+06 cells, $pre steps before t = 0 (8000 T_visq / dt)" ||
+  fail "resolved cost: $(grep -E '^# (cost|time|contact)' out.txt)"
+
 # Phi_i: run warns exactly when the realised packing (the file's phi_initial_local)
 # is further from the asked one than phi_tolerance; check -o says the same afterwards
 "$g" run "$src/tests/pipeline/data/phi_loose_column.yaml" -o runs >out.txt 2>err.txt || fail "run failed: $(cat err.txt)"
