@@ -124,7 +124,7 @@ static void cost_text(const gf_run_cost *k, char *buf, size_t n)
     }
     if (k->prelude_steps > 0)
         snprintf(extra, sizeof extra, " (and %.3g before t = 0)", k->prelude_steps);
-    if (!isnan(k->fluid_steps))
+    if (isfinite(k->fluid_steps) && isfinite(k->fluid_cells))
         snprintf(fluid, sizeof fluid, ", %.3g fluid cells x %.3g fluid steps", k->fluid_cells, k->fluid_steps);
     snprintf(buf, n, "%s grains, %s steps%s%s, CPU %s%s%s, output %s%s", count_text(round(k->n_grains), 9, grains, sizeof grains),
              count_text(k->steps, 3, steps, sizeof steps), extra, fluid, k->cpu_at_least ? "at least " : "", cpu,
