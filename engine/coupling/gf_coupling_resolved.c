@@ -843,7 +843,7 @@ static gf_status resolved_load(gf_coupling *cc, gf_restart *r)
  *   one sphere settling, D/dx 12, 96^3 cells:                  0.136 s  -> c_cell 1.54e-7 s
  *   avalanche, viscous point, D/dx 8, 40x160x40, 240 grains:   0.0773 s -> c_grain 3.1e-7 s
  *   collapse, D/dx 10, 500x300x20, ~338 grains:                0.555 s  -> c_grain 2.8e-7 s
- *   collapse, D/dx 8, 400x240x24, ~500 grains:                 0.506 s  (the model: 0.446, -12 %)
+ *   collapse, D/dx 8, 400x240x24, ~500 grains:                 0.506 s  (the model: 0.433, -14 %)
  * and rk3 2.3 times ab2 on the avalanche (the maps are built once a step, the rest three times).
  */
 #define RESOLVED_COST_S_PER_CELL 1.54e-7
