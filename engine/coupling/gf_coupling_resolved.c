@@ -343,11 +343,18 @@ static double advective_rate(const gf_resolved *c, const gf_particles *p)
     return s;
 }
 
+/* The fluid step the spec's limits allow at an advective rate (sum_d |u_d|/h, 1/s): the CFL bound, and
+ * diffusion_number of the viscous one, whichever is shorter. */
+static double step_bound_s(const gf_run_spec *spec, double h, double nu, double rate)
+{
+    return fmin(spec->fluid.cfl / fmax(rate, 1e-300), spec->fluid.diffusion_number * h * h / nu);
+}
+
 static double resolved_dt_max_s(const gf_coupling *cc, const gf_particles *p)
 {
     const gf_resolved *c = CR(cc);
     const gf_grid *g = &c->fluid->grid;
-    double h = g->h_m[0], nu = c->fluid->mu_Pa_s / c->fluid->rho_kg_m3, cfl = c->spec.fluid.cfl;
+    double h = g->h_m[0], nu = c->fluid->mu_Pa_s / c->fluid->rho_kg_m3;
     double rate = advective_rate(c, p);
     /* before anything moves: the grains' free-fall speed over D, so the step sized at t = 0 holds */
     double gm = sqrt(c->setup.gravity_m_s2[0] * c->setup.gravity_m_s2[0] +
@@ -355,8 +362,7 @@ static double resolved_dt_max_s(const gf_coupling *cc, const gf_particles *p)
                      c->setup.gravity_m_s2[2] * c->setup.gravity_m_s2[2]);
     double D = c->spec.grains.diameter_m;
     double rate0 = gm > 0.0 ? sqrt(gm * D) / h : 0.0;
-    double dt = cfl / fmax(fmax(rate, rate0), 1e-300);
-    return fmin(dt, c->spec.fluid.diffusion_number * h * h / nu);
+    return step_bound_s(&c->spec, h, nu, fmax(rate, rate0));
 }
 
 static gf_status check_step(const gf_resolved *c, const gf_particles *p, double dt_s)
@@ -858,10 +864,9 @@ static double resolved_step_at_rest_s(const gf_run_spec *spec, int *advective)
 {
     const double D = spec->grains.diameter_m, h = D / d_over_dx(spec);
     const double nu = spec->fluid.viscosity_Pa_s / spec->fluid.density_kg_m3, dt_dem = gf_run_spec_dt_s(spec);
-    const double dt_visc = spec->fluid.diffusion_number * h * h / nu;
-    const double dt_adv = spec->gravity_m_s2 > 0.0 ? spec->fluid.cfl * h / sqrt(spec->gravity_m_s2 * D) : INFINITY;
-    *advective = dt_adv < dt_visc;
-    return fmax(floor(fmin(dt_visc, dt_adv) / dt_dem), 1.0) * dt_dem;
+    const double dt = step_bound_s(spec, h, nu, spec->gravity_m_s2 > 0.0 ? sqrt(spec->gravity_m_s2 * D) / h : 0.0);
+    *advective = dt < spec->fluid.diffusion_number * h * h / nu;
+    return fmax(floor(dt / dt_dem), 1.0) * dt_dem;
 }
 
 static void resolved_cost(const gf_run_spec *spec, const gf_tier_cost_query *q, gf_tier_cost *out)

@@ -76,10 +76,11 @@ typedef struct gf_scene_desc {
     double (*grain_count)(const gf_run_spec *spec);
     /* The box the fluid fills (the run's box), from the resolved spec without
      * building anything, and the simulated time the prelude runs under the
-     * fluid before t = 0: what a grid tier's cost grows with. May be NULL
-     * (the fluid's cost is then unknown to a grid tier; no prelude). */
+     * fluid before t = 0 (given the run's time scales): what a grid tier's cost
+     * grows with. May be NULL (the fluid's cost is then unknown to a grid tier;
+     * no prelude). */
     void (*fluid_box)(const gf_run_spec *spec, double size_m[3]);
-    double (*prelude_time_s)(const gf_run_spec *spec);
+    double (*prelude_time_s)(const gf_run_spec *spec, const gf_scales *scales);
 } gf_scene_desc;
 
 /* NULL when unknown. */

@@ -239,10 +239,16 @@ static gf_status column_start(gf_sim *sim)
  */
 #define SEDIMENT_STRETCH 1.6
 
+/* The settling's length: sediment_T_visq T_visq (0: no prelude). */
+static double column_prelude_time_s(const gf_run_spec *spec, const gf_scales *scales)
+{
+    return gf_run_spec_param(spec, "sediment_T_visq", 0.0) * scales->t_visq_s;
+}
+
 static gf_status column_prelude(gf_sim *sim)
 {
     const gf_run_spec *spec = gf_sim_spec(sim);
-    const double t_settle_s = gf_run_spec_param(spec, "sediment_T_visq", 0.0) * gf_sim_scales(sim)->t_visq_s;
+    const double t_settle_s = column_prelude_time_s(spec, gf_sim_scales(sim));
     if (!(t_settle_s > 0.0))
         return GF_OK;
     const double r_floor = 0.5 * spec->grains.diameter_m;
@@ -362,16 +368,6 @@ static double column_grain_count(const gf_run_spec *spec)
     column_geom_of(spec, &g);
     double column = g.phi * g.R0 * g.H0 * g.W / sphere_volume(0.5 * g.D);
     return column + (g.rough ? 0.45 * g.L * g.W / (g.D * g.D) : 0.0);
-}
-
-/* sediment_T_visq T_visq under the fluid before t = 0 (column_prelude), T_visq = eta_f/(drho g H0). */
-static double column_prelude_time_s(const gf_run_spec *spec)
-{
-    column_geom g;
-    column_geom_of(spec, &g);
-    const double drho = spec->grains.density_kg_m3 - spec->fluid.density_kg_m3;
-    const double t_visq = spec->fluid.viscosity_Pa_s / (drho * spec->gravity_m_s2 * g.H0);
-    return drho > 0.0 ? gf_run_spec_param(spec, "sediment_T_visq", 0.0) * t_visq : 0.0;
 }
 
 const gf_scene_desc gf_scene_column_collapse = {

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "continuum/gf_continuum_avalanche.h"
+#include "campaign/gf_groups_map.h"
 #include "continuum/gf_continuum_collapse.h"
 #include "coupling/gf_coupling_tier.h"
 #include "core/gf_status.h"
@@ -76,8 +77,18 @@ static void continuum_estimate(const gf_run_spec *s, gf_run_cost *out)
     out->output_bytes = COST_SMALL_FILES_B;
 }
 
+/* The scene's time under the fluid before t = 0 (NaN when the run's scales cannot be computed). */
+static double prelude_time_s(const gf_scene_desc *scene, const gf_run_spec *s)
+{
+    if (!scene->prelude_time_s)
+        return 0.0;
+    gf_ctx ctx = {.log_level = GF_LOG_QUIET};
+    gf_scales scales;
+    return gf_groups_map_realised(&ctx, s, &scales) == GF_OK ? scene->prelude_time_s(s, &scales) : NAN;
+}
+
 /* The fluid's CPU over fluid_time_s, from the run's tier (an unregistered name: the first, as `fluid: auto`). */
-static void fluid_estimate(const gf_scene_desc *scene, const gf_run_spec *s, double fluid_time_s, gf_run_cost *out)
+static double fluid_estimate(const gf_scene_desc *scene, const gf_run_spec *s, double fluid_time_s, gf_run_cost *out)
 {
     const gf_coupling_tier *tier = gf_coupling_tier_find(s->fluid.model);
     if (!tier) {
@@ -90,10 +101,10 @@ static void fluid_estimate(const gf_scene_desc *scene, const gf_run_spec *s, dou
     gf_tier_cost tc = {NAN, NAN, NAN, 0};
     if (tier->cost)
         tier->cost(s, &q, &tc);
-    out->fluid_cpu_s = tc.cpu_s;
     out->fluid_cells = tc.cells;
     out->fluid_steps = tc.fluid_steps;
     out->cpu_at_least = tc.at_least;
+    return tc.cpu_s;
 }
 
 void gf_cost_estimate(const gf_run_spec *s, gf_run_cost *out)
@@ -113,15 +124,13 @@ void gf_cost_estimate(const gf_run_spec *s, gf_run_cost *out)
     out->steps = end_nd > 0 && dt > 0 ? ceil(end_nd * t_grain / dt) : NAN;
     /* the preparation's settling runs dry, before the fluid is made; the prelude under the fluid */
     const double settle = dt > 0 ? ceil(gf_run_spec_param(s, "settle_time_nd", 0.0) * t_grain / dt) : 0.0;
-    const double prelude_s = out->immersed && scene->prelude_time_s ? scene->prelude_time_s(s) : 0.0;
+    const double prelude_s = out->immersed ? prelude_time_s(scene, s) : 0.0;
     out->prelude_steps = dt > 0 ? ceil(prelude_s / dt) : 0.0;
     const int packs = scene && (scene->needs & GF_NEED_PACKING);
     out->cpu_s = out->n_grains * ((packs ? COST_PACK_S_PER_GRAIN : 0.0) +
                                   (out->steps + settle + out->prelude_steps) * COST_DEM_S_PER_GRAIN_STEP);
-    if (out->immersed) {
-        fluid_estimate(scene, s, out->steps * dt + prelude_s, out);
-        out->cpu_s += out->fluid_cpu_s;
-    }
+    if (out->immersed)
+        out->cpu_s += fluid_estimate(scene, s, out->steps * dt + prelude_s, out);
     const double records = s->output.interval_nd > 0 ? floor(end_nd / s->output.interval_nd) + 1.0 : NAN;
     double bytes = COST_SMALL_FILES_B;
     if (s->output.particles)

@@ -28,7 +28,6 @@ typedef struct gf_run_cost {
     double prelude_steps;  /* DEM steps under the fluid before t = 0 (the scene's prelude); 0 when none */
     double fluid_cells;    /* a grid tier's cells; NaN for the other tiers or when the scene gives no box */
     double fluid_steps;    /* a grid tier's fluid steps over the prelude and the run; NaN as fluid_cells */
-    double fluid_cpu_s;    /* the fluid's share of cpu_s; 0 when dry, NaN when the tier cannot say */
     double cpu_s;          /* estimated CPU seconds on one core; NaN when n_grains or steps is */
     double output_bytes;   /* estimated bytes of the netCDF files; NaN when unknown */
     int immersed;          /* the fluid tier runs */
