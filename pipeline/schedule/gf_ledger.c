@@ -104,9 +104,40 @@ void gf_ledger_clear(const char *run_dir)
     remove(path);
 }
 
-int gf_ledger_can_continue(const char *run_dir, const char *yaml, size_t len)
+/* The first line at which run.yaml (file f) and yaml (len bytes) differ, both quoted, into why. */
+static void first_difference(FILE *f, const char *yaml, size_t len, char *why, size_t n)
+{
+    char old[400], now[400];
+    size_t k = 0;
+    for (int no = 1;; ++no) {
+        if (!fgets(old, sizeof old, f))
+            old[0] = '\0';
+        old[strcspn(old, "\n")] = '\0';
+        size_t m = 0;
+        while (k < len && yaml[k] != '\n' && m + 1 < sizeof now)
+            now[m++] = yaml[k++];
+        now[m] = '\0';
+        while (k < len && yaml[k] != '\n')
+            ++k;
+        const int more = k < len;
+        k += more;
+        if (strcmp(old, now) != 0) {
+            snprintf(why, n, "run.yaml line %d reads \"%.120s\" where this spec has \"%.120s\"", no, old, now);
+            return;
+        }
+        if (!more && feof(f))
+            break;
+        if (!more && !old[0] && !now[0])
+            break;
+    }
+    snprintf(why, n, "run.yaml differs from this spec");
+}
+
+int gf_ledger_can_continue(const char *run_dir, const char *yaml, size_t len, char *why, size_t n)
 {
     char reason[600], path[4200];
+    if (why && n)
+        why[0] = '\0';
     if (gf_ledger_state(run_dir, reason, sizeof reason) != GF_RUN_FAILED ||
         strncmp(reason, "interrupted", 11) != 0 || !strstr(reason, "checkpoint written"))
         return 0;
@@ -116,12 +147,19 @@ int gf_ledger_can_continue(const char *run_dir, const char *yaml, size_t len)
         return 0;
     fclose(f);
     snprintf(path, sizeof path, "%s/run.yaml", run_dir);
-    if (!(f = fopen(path, "rb")))
+    if (!(f = fopen(path, "rb"))) {
+        if (why && n)
+            snprintf(why, n, "its run.yaml is missing");
         return 0;
+    }
     int same = 1;
     for (size_t k = 0; same && k < len; ++k)
         same = fgetc(f) == (unsigned char)yaml[k];
     same = same && fgetc(f) == EOF;
+    if (!same && why && n) {
+        rewind(f);
+        first_difference(f, yaml, len, why, n);
+    }
     fclose(f);
     return same;
 }

@@ -52,8 +52,11 @@ void gf_ledger_clear(const char *run_dir);
 /* 1 when the run in run_dir can continue from its checkpoint instead of
  * starting again: its status says it was interrupted after writing
  * checkpoint.h5 (engine/sim/gf_run.c), that file is there, and its run.yaml
- * is yaml (len bytes) exactly, i.e. the spec did not change since. */
-int gf_ledger_can_continue(const char *run_dir, const char *yaml, size_t len);
+ * is yaml (len bytes) exactly, i.e. neither the spec nor the build that
+ * wrote it (run.yaml's first line) changed since: a continued run's files
+ * then come from one code. When a checkpoint is there but cannot be
+ * continued, why (n bytes, may be NULL) names the first line that differs. */
+int gf_ledger_can_continue(const char *run_dir, const char *yaml, size_t len, char *why, size_t n);
 /* status file: "done" or "failed: <reason>". set_done first checks every file
  * of the run and writes the manifest; a file that does not reopen fails it
  * (and nothing says done). */

@@ -79,7 +79,11 @@ gf_status gf_run_execute(gf_ctx *ctx, const gf_run_spec *spec, const gf_run_exec
             gf_lock_release(&lock);
             return GF_FAIL(ctx, GF_ERR_NOMEM, "out of memory");
         }
-        cont = opt->resume && gf_ledger_can_continue(opt->run_dir, yaml, yaml_len);
+        char why[600] = "";
+        cont = opt->resume && gf_ledger_can_continue(opt->run_dir, yaml, yaml_len, why, sizeof why);
+        if (opt->resume && !cont && why[0]) /* a checkpoint is there: say why it is not used */
+            gf_log(ctx, GF_LOG_WARN, "warning: run %s: not continued from its checkpoint (%s): starting again from t = 0",
+                   spec->run_id, why);
         gf_ledger_clear(opt->run_dir);
         snprintf(checkpoint, sizeof checkpoint, "%s/checkpoint.h5", opt->run_dir);
         preparation_dir(opt->run_dir, preparations, sizeof preparations);

@@ -16,7 +16,9 @@
  *   continues from the checkpoint's time (> 0), ends done, leaves no
  *   .partial, and every variable of diagnostics.nc and particles.nc (time
  *   included) is bitwise that of the reference;
- * - a changed spec (run.yaml differs) is not continued: it starts at t = 0;
+ * - a changed spec (run.yaml differs) is not continued: it starts at t = 0,
+ *   and gf_ledger_can_continue names the line that differs (the spec's, or
+ *   the first line when another build wrote the checkpoint);
  * - the same interrupt and resume for an immersed run (a column collapsing
  *   in a viscous fluid, unresolved tier: the checkpoint holds the fluid too),
  *   whose diagnostics.nc, probes.nc (basal pore pressure) and fields.nc
@@ -216,6 +218,35 @@ static void interrupt_and_resume(gf_ctx *ctx, gf_run_spec *spec, const char *out
     }
 }
 
+/* A checkpoint that --resume will not use says why: another build wrote its
+ * run.yaml (the first line), or the spec changed (end_time here). */
+static void check_not_continued(gf_run_spec *spec, const char *dir)
+{
+    size_t len = 0;
+    char *yaml = gf_ledger_run_yaml(spec, "continue", &len), why[600];
+    GF_CHECK(yaml && gf_ledger_can_continue(dir, yaml, len, why, sizeof why) == 1 && why[0] == '\0');
+    char path[4400];
+    snprintf(path, sizeof path, "%s/run.yaml", dir);
+    FILE *f = fopen(path, "wb");   /* the same spec, written by another build */
+    GF_CHECK(f != NULL);
+    fprintf(f, "# grainflow 0.0.1 (an older build)%s", strchr(yaml, '\n'));
+    fclose(f);
+    GF_CHECK(gf_ledger_can_continue(dir, yaml, len, why, sizeof why) == 0);
+    gf_test_check(strstr(why, "line 1 reads \"# grainflow 0.0.1") != NULL, __FILE__, __LINE__, "why: %s", why);
+    f = fopen(path, "wb");
+    GF_CHECK(f != NULL);
+    fwrite(yaml, 1, len, f);
+    fclose(f);
+    free(yaml);
+    const double end = spec->end_time_nd;
+    spec->end_time_nd = 2.0;
+    yaml = gf_ledger_run_yaml(spec, "continue", &len);
+    GF_CHECK(yaml && gf_ledger_can_continue(dir, yaml, len, why, sizeof why) == 0);
+    gf_test_check(strstr(why, "end_time") != NULL, __FILE__, __LINE__, "why: %s", why);
+    free(yaml);
+    spec->end_time_nd = end;
+}
+
 int main(void)
 {
     char out[] = "/tmp/gf_continue_XXXXXX";
@@ -237,6 +268,7 @@ int main(void)
     spec.end_time_nd = 3.0;
     interrupt_at(&ctx, &spec, &co, 0.02, &res);
     GF_CHECK(res.status == GF_ERR_INTERRUPTED && res.sim_time_s > 0.0);
+    check_not_continued(&spec, changed);
     interrupt_flag = 0;
     co.resume = 1;
     spec.end_time_nd = 2.0;
