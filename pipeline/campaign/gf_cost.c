@@ -5,8 +5,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "continuum/gf_continuum_avalanche.h"
 #include "campaign/gf_groups_map.h"
+#include "continuum/gf_continuum_avalanche.h"
 #include "continuum/gf_continuum_collapse.h"
 #include "coupling/gf_coupling_tier.h"
 #include "core/gf_status.h"

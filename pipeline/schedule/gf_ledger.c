@@ -110,24 +110,17 @@ static void first_difference(FILE *f, const char *yaml, size_t len, char *why, s
     char old[400], now[400];
     size_t k = 0;
     for (int no = 1;; ++no) {
-        if (!fgets(old, sizeof old, f))
-            old[0] = '\0';
-        old[strcspn(old, "\n")] = '\0';
-        size_t m = 0;
-        while (k < len && yaml[k] != '\n' && m + 1 < sizeof now)
-            now[m++] = yaml[k++];
-        now[m] = '\0';
-        while (k < len && yaml[k] != '\n')
-            ++k;
-        const int more = k < len;
-        k += more;
+        const int has_old = fgets(old, sizeof old, f) != NULL, has_now = k < len;
+        old[has_old ? strcspn(old, "\n") : 0] = '\0';
+        const char *nl = memchr(yaml + k, '\n', len - k);
+        const size_t m = (nl ? (size_t)(nl - yaml) : len) - k;
+        snprintf(now, sizeof now, "%.*s", (int)m, yaml + k);
+        k += m + (nl != NULL);
         if (strcmp(old, now) != 0) {
             snprintf(why, n, "run.yaml line %d reads \"%.120s\" where this spec has \"%.120s\"", no, old, now);
             return;
         }
-        if (!more && feof(f))
-            break;
-        if (!more && !old[0] && !now[0])
+        if (!has_old && !has_now)
             break;
     }
     snprintf(why, n, "run.yaml differs from this spec");
