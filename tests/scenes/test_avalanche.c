@@ -50,8 +50,9 @@
  *             the surface speed; slip length lambda/h reported. (20 deg
  *             arrests a 12 D bed: below h_stop.)
  *   length    (slow) theta = 25 deg, L = 5 D and 10 D after 400 sqrt(D/g),
- *             averaged over 100: time-averaged Q_g agree within 5 % (Izard
- *             §4.1.2.2 domain tests, Table 4.1).
+ *             averaged over 100, packing seeds 1-5 (GF_TEST_SEEDS): the
+ *             seed means of Q_g agree within 5 % (Izard §4.1.2.2 domain
+ *             tests, Table 4.1).
  * GF_TEST_TC overrides t_c sqrt(g/D), GF_TEST_SEED the packing seed, GF_TEST_EPS the restitution;
  * GF_TEST_BED the steady bed depth / D, GF_TEST_ANGLE runs one steady angle;
  * GF_TEST_VERBOSE prints the transient, GF_TEST_DEBUG the stress components.
@@ -209,14 +210,14 @@ static void test_unsteady_40deg(void)
  * and the averaging window), the seed's I from the Bagnold amplitude, the
  * time-averaged Q_g, and prints the Bagnold fit. */
 static void steady(double theta_deg, double length_over_D, double tc_nd, double t_spin_nd, double t_avg_nd,
-                   double *I_bulk, double *mu_bulk, double *I_profile, double *q_mean, double *bagnold_rms,
+                   unsigned seed, double *I_bulk, double *mu_bulk, double *I_profile, double *q_mean, double *bagnold_rms,
                    double *slip_over_h)
 {
     flow f;
     double t0 = runner_now_s();
     *I_bulk = *mu_bulk = *I_profile = *q_mean = *bagnold_rms = *slip_over_h = NAN;
     double bed = getenv("GF_TEST_BED") ? atof(getenv("GF_TEST_BED")) : 12.0;
-    if (!flow_open(&f, theta_deg, length_over_D, bed, 31, tc_nd))
+    if (!flow_open(&f, theta_deg, length_over_D, bed, seed, tc_nd))
         return;
     if (getenv("GF_TEST_SPIN"))
         t_spin_nd = atof(getenv("GF_TEST_SPIN"));
@@ -284,7 +285,7 @@ static void test_steady_mu_of_I(void)
         /* the thesis' t_c = 1e-4 s; Q_g (GF_TEST_VERBOSE) is flat within ~7 % from 100-125 sqrt(D/g)
          * on at 22.5 and 25 deg, and from 225 on at 27.5 deg (within 3 % up to 600; I averaged over
          * [600, 650] is 0.383 against 0.379 over [200, 250], so the spin-up is long enough) */
-        steady(th[k], 6.0, 3.1e-3, 200.0, 50.0, &I[k], &mu[k], &Ip[k], &q, &rms, &slip);
+        steady(th[k], 6.0, 3.1e-3, 200.0, 50.0, 31, &I[k], &mu[k], &Ip[k], &q, &rms, &slip);
         if (I[k] > 1e-3) { /* flowing */
             Ik[n] = I[k], muk[n] = mu[k], Ipk[n] = Ip[k], tk[n] = tan(th[k] * M_PI / 180.0), ++n;
             GF_CHECK(rms < 0.10);
@@ -301,17 +302,38 @@ static void test_steady_mu_of_I(void)
     GF_CHECK_ABS(mu2, 0.64, 0.02);
 }
 
+/* Mean and standard error of x[0..n). */
+static void mean_sem(const double *x, int n, double *mean, double *sem)
+{
+    double m = 0.0, v = 0.0;
+    for (int i = 0; i < n; ++i)
+        m += x[i] / n;
+    for (int i = 0; i < n; ++i)
+        v += (x[i] - m) * (x[i] - m) / (n > 1 ? n - 1 : 1);
+    *mean = m, *sem = sqrt(v / n);
+}
+
+/* Q_g does not depend on the periodic length (Izard 2014 §4.1.2.2, Table 4.1), on seed means: one seed
+ * decides nothing, the random base and packing scatter Q_g by ~4 % (sd) at L = 5 D, and the single-seed
+ * comparison this test made (seed 31) read 0.899 where seeds 1-4 read 0.995, 0.929, 1.061, 0.996. */
 static void test_flow_rate_independent_of_length(void)
 {
-    double I5, I10, m5, m10, p5, p10, q5, q10, r, s;
+    enum { MAX_SEEDS = 16 };
+    int n = getenv("GF_TEST_SEEDS") ? atoi(getenv("GF_TEST_SEEDS")) : 5;
+    n = n < 1 ? 1 : n > MAX_SEEDS ? MAX_SEEDS : n;
+    double q5[MAX_SEEDS], q10[MAX_SEEDS], I, m, p, r, s, m5, e5, m10, e10;
     /* 400 sqrt(D/g) of spin-up: at L = 5 D, Q_g(t) overshoots by ~12 % between
-     * t = 150 and 250 before settling (GF_TEST_VERBOSE prints it), so the
-     * former window [150, 200] compared a transient with a steady state;
-     * averaged over [400, 500] */
-    steady(25.0, 5.0, 0.01, 400.0, 100.0, &I5, &m5, &p5, &q5, &r, &s);
-    steady(25.0, 10.0, 0.01, 400.0, 100.0, &I10, &m10, &p10, &q10, &r, &s);
-    printf("Q_g(L = 10 D) / Q_g(L = 5 D) = %.4f\n", q10 / q5);
-    GF_CHECK_REL(q10, q5, 0.05);
+     * t = 150 and 250 before settling (GF_TEST_VERBOSE prints it); averaged over [400, 500] */
+    for (int k = 0; k < n; ++k) {
+        steady(25.0, 5.0, 0.01, 400.0, 100.0, (unsigned)(k + 1), &I, &m, &p, &q5[k], &r, &s);
+        steady(25.0, 10.0, 0.01, 400.0, 100.0, (unsigned)(k + 1), &I, &m, &p, &q10[k], &r, &s);
+        printf("seed %d: Q_g(L = 10 D) / Q_g(L = 5 D) = %.4f\n", k + 1, q10[k] / q5[k]);
+    }
+    mean_sem(q5, n, &m5, &e5);
+    mean_sem(q10, n, &m10, &e10);
+    printf("%d seeds: Q_g(5 D) = %.4e +- %.1e, Q_g(10 D) = %.4e +- %.1e m3/s (sem); ratio %.4f +- %.4f\n", n, m5, e5,
+           m10, e10, m10 / m5, m10 / m5 * sqrt(e5 * e5 / (m5 * m5) + e10 * e10 / (m10 * m10)));
+    GF_CHECK_REL(m10, m5, 0.05);
 }
 
 int main(int argc, char **argv)
