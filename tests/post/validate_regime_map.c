@@ -62,7 +62,7 @@ int main(void)
 {
     gf_ctx ctx = {0};
     const char *src = getenv("GF_SOURCE_DIR");
-    char path[1100], buf[1024], tmp[] = "/tmp/gf_regime_map_XXXXXX", campaign_dir[1200], summary[1300];
+    char path[1100], buf[1024], tmp[] = "/tmp/gf_regime_map_XXXXXX";
     const char *sets[MAX_SETS];
     const int n_sets = extra_sets(buf, sizeof buf, sets);
     snprintf(path, sizeof path, "%s/configs/avalanche_regime_map.yaml", src ? src : ".");
@@ -72,13 +72,9 @@ int main(void)
         return gf_test_finish();
     const char *out = gf_test_runs_dir(tmp);
     gf_test_run_campaign(&ctx, c, out);
-    snprintf(campaign_dir, sizeof campaign_dir, "%s/%s", out, c->name);
-    gf_post_options po = {.stage = NULL, .n_jobs = 1, .figures = 1, .quiet = 1};
-    GF_CHECK_OK(gf_post_campaign(&ctx, campaign_dir, &po), &ctx);
-    snprintf(summary, sizeof summary, "%s/summary.nc", campaign_dir);
-    gf_post_row *rows = NULL;
-    int n_rows = 0, labels = 0, times = 0;
-    GF_CHECK_OK(gf_summary_read(&ctx, summary, &rows, &n_rows), &ctx);
+    gf_post_row *rows;
+    int n_rows, labels = 0, times = 0;
+    gf_test_post_summary(&ctx, out, c->name, 1, &rows, &n_rows);
     printf("rho_p/rho   St      thesis      label (run)     T/T_thesis\n");
     for (int k = 0; k < TABLE42_N; ++k) {
         const table_pt *pt = &table42[k];

@@ -77,7 +77,7 @@ int main(void)
 {
     gf_ctx ctx = {0};
     const char *src = getenv("GF_SOURCE_DIR");
-    char path[1100], tmp[] = "/tmp/gf_resolved_points_XXXXXX", campaign_dir[1200], summary[1300];
+    char path[1100], tmp[] = "/tmp/gf_resolved_points_XXXXXX";
     snprintf(path, sizeof path, "%s/configs/avalanche_resolved_points.yaml", src ? src : ".");
     gf_campaign *c = NULL;
     GF_CHECK_OK(gf_campaign_load_file(&ctx, path, NULL, 0, &c), &ctx);
@@ -85,13 +85,9 @@ int main(void)
         return gf_test_finish();
     const char *out = gf_test_runs_dir(tmp);
     gf_test_run_campaign(&ctx, c, out);
-    snprintf(campaign_dir, sizeof campaign_dir, "%s/%s", out, c->name);
-    gf_post_options po = {.stage = NULL, .n_jobs = 1, .figures = 0, .quiet = 1};
-    GF_CHECK_OK(gf_post_campaign(&ctx, campaign_dir, &po), &ctx);
-    snprintf(summary, sizeof summary, "%s/summary.nc", campaign_dir);
-    gf_post_row *rows = NULL;
-    int n_rows = 0;
-    GF_CHECK_OK(gf_summary_read(&ctx, summary, &rows, &n_rows), &ctx);
+    gf_post_row *rows;
+    int n_rows;
+    gf_test_post_summary(&ctx, out, c->name, 0, &rows, &n_rows);
     for (int i = 0; i < c->n_runs; ++i)
         check_point(&c->runs[i], rows, n_rows);
     free(rows);

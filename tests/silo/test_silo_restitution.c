@@ -88,17 +88,13 @@ int main(void)
     for (int k = 0; k < N_SEEDS; ++k)
         if (!(c[k] = study(&ctx, src ? src : ".", k + 1)))
             return gf_test_finish();
-    char tmp[] = "/tmp/gf_silo_restitution_XXXXXX", campaign_dir[1200], summary[1300];
+    char tmp[] = "/tmp/gf_silo_restitution_XXXXXX";
     const char *out = gf_test_runs_dir(tmp);
     for (int k = 0; k < N_SEEDS; ++k)
         gf_test_run_campaign(&ctx, c[k], out);
-    snprintf(campaign_dir, sizeof campaign_dir, "%s/%s", out, c[0]->name);
-    gf_post_options po = {.stage = NULL, .n_jobs = 1, .figures = 0, .quiet = 1};
-    GF_CHECK_OK(gf_post_campaign(&ctx, campaign_dir, &po), &ctx);
-    snprintf(summary, sizeof summary, "%s/summary.nc", campaign_dir);
-    gf_post_row *rows = NULL;
-    int n_rows = 0;
-    GF_CHECK_OK(gf_summary_read(&ctx, summary, &rows, &n_rows), &ctx);
+    gf_post_row *rows;
+    int n_rows;
+    gf_test_post_summary(&ctx, out, c[0]->name, 0, &rows, &n_rows);
     double Q[N_EN] = {0}, phi[N_EN] = {0};
     int count[N_EN] = {0};
     for (int k = 0; rows && k < N_SEEDS; ++k)

@@ -12,9 +12,12 @@
 #ifndef GF_TEST_RUNS_H
 #define GF_TEST_RUNS_H
 
+#include <stdio.h>
 #include <stdlib.h>
 
 #include "campaign/gf_campaign.h"
+#include "gf_post.h"
+#include "gf_summary.h"
 #include "gf_test.h"
 #include "schedule/gf_sched.h"
 
@@ -39,6 +42,19 @@ static inline void gf_test_run_campaign(gf_ctx *ctx, const gf_campaign *c, const
     gf_sched_counts counts;
     GF_CHECK_OK(gf_sched_run(ctx, c, &so, &counts), ctx);
     GF_CHECK(counts.n_failed == 0);
+}
+
+/* `grainflow post` on out/<campaign>, then its summary.nc read into *rows (free() them); figures: write figures/. */
+static inline void gf_test_post_summary(gf_ctx *ctx, const char *out, const char *campaign, int figures,
+                                        gf_post_row **rows, int *n_rows)
+{
+    char campaign_dir[1200], summary[1300];
+    snprintf(campaign_dir, sizeof campaign_dir, "%s/%s", out, campaign);
+    gf_post_options po = {.stage = NULL, .n_jobs = 1, .figures = figures, .quiet = 1};
+    GF_CHECK_OK(gf_post_campaign(ctx, campaign_dir, &po), ctx);
+    snprintf(summary, sizeof summary, "%s/summary.nc", campaign_dir);
+    *rows = NULL, *n_rows = 0;
+    GF_CHECK_OK(gf_summary_read(ctx, summary, rows, n_rows), ctx);
 }
 
 #endif
