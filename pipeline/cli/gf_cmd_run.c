@@ -14,7 +14,7 @@
 
 
 static const char help[] =
-    "usage: grainflow run SCENE.yaml [-o DIR] [--set key.path=value ...] [--index K | --only RUN_ID]\n"
+    "usage: grainflow run SCENE.yaml [-o DIR] [--set key.path=value ...] [--index K | --only RUN_ID] [--resume]\n"
     "\n"
     "Runs the one run SCENE.yaml describes into DIR/<name>/<run-id>/ (run.yaml,\n"
     "particles.nc, diagnostics.nc, probes.nc, fields.nc, status). A run.yaml\n"
@@ -34,6 +34,9 @@ static const char help[] =
     "      --set KEY=VALUE  override a value, e.g. --set scene.aspect_ratio=2 --set fluid.model=none\n"
     "      --index K        run K (0-based, campaign order) of a campaign file\n"
     "      --only RUN_ID    the run of a campaign file with this id\n"
+    "      --resume         continue an interrupted run from its checkpoint (Ctrl-C or SIGTERM\n"
+    "                       wrote it), with the build that started it; a run already done is\n"
+    "                       left as it is (exit 0)\n"
     "  -q, --quiet          no progress line\n"
     "\n"
     "exit status: 0 done, 1 the run failed or its directory is held by another process,\n"
@@ -88,7 +91,7 @@ static int pick_run(const char *file, const gf_campaign *c, int index, const cha
 int gf_cmd_run(int argc, char **argv)
 {
     const char *file = NULL, *out_dir = "runs", *v, *sets[GF_CLI_MAX_SETS], *only = NULL;
-    int n_sets = 0, quiet = 0, index = -1;
+    int n_sets = 0, quiet = 0, index = -1, resume = 0;
     const gf_cli_shared shared = {"run", help, &out_dir, sets, &n_sets};
     for (int i = 1; i < argc; ++i) {
         int m, r = gf_cli_shared_option(&shared, argc, argv, &i);
@@ -106,6 +109,8 @@ int gf_cmd_run(int argc, char **argv)
             index = (int)k;
         } else if (!strcmp(argv[i], "-q") || !strcmp(argv[i], "--quiet")) {
             quiet = 1;
+        } else if (!strcmp(argv[i], "--resume")) {
+            resume = 1;
         } else if ((r = gf_cli_operand("run", argv[i], &file)) != GF_CLI_NEXT) {
             return r;
         }
@@ -123,6 +128,13 @@ int gf_cmd_run(int argc, char **argv)
     const gf_run_spec *spec = &c->runs[k].spec;
     char dir[4200];
     gf_ledger_run_dir(out_dir, c->name, spec->run_id, dir, sizeof dir);
+    char reason[600];
+    if (resume && gf_ledger_verified_state(dir, reason, sizeof reason) == GF_RUN_DONE) {
+        if (!quiet)
+            printf("run %s already done: %s\n", spec->run_id, dir);
+        gf_campaign_destroy(&c);
+        return GF_EXIT_OK;
+    }
     progress_state ps = {.tty = gf_cli_is_tty() && !quiet, .run_id = spec->run_id,
                          .progress = {.started_s = gf_wtime(), .dt_s = gf_run_spec_dt_s(spec)}};
     gf_run_exec_opts eo = {.run_dir = dir,
@@ -130,6 +142,7 @@ int gf_cmd_run(int argc, char **argv)
                            .progress = on_progress,
                            .progress_user = &ps,
                            .interrupt = gf_cli_catch_signals(),
+                           .resume = resume,
                            .lock_what = "run"};
     gf_run_result res;
     gf_status st = gf_run_execute(&ctx, spec, &eo, &res);
@@ -146,8 +159,11 @@ int gf_cmd_run(int argc, char **argv)
         fprintf(stderr, "run %s failed: %s\n", spec->run_id, res.message);
         code = GF_EXIT_RUN_FAILED;
     } else if (!quiet) {
-        printf("run %s done: %ld grains, %ld steps, t = %.4g s in %.1f s wall -> %s\n", spec->run_id,
-               res.n_particles, res.steps, res.sim_time_s, res.wall_s, dir);
+        char from[80] = "";
+        if (res.continued_from_s > 0.0)
+            snprintf(from, sizeof from, " (continued from t = %.4g s)", res.continued_from_s);
+        printf("run %s done: %ld grains, %ld steps, t = %.4g s%s in %.1f s wall -> %s\n", spec->run_id,
+               res.n_particles, res.steps, res.sim_time_s, from, res.wall_s, dir);
     }
     gf_campaign_destroy(&c);
     return code;

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # grainflow check on several files, its cost estimate and warnings, and the
-# warning of run and check when the realised Phi_i misses the one asked.
+# warning of run and check when the realised Phi_i misses the one asked, and
+# `run --resume` after a SIGTERM.
 # usage: cli_check.sh GRAINFLOW SOURCE_DIR
 set -uo pipefail
 g="$1" src="$2"
@@ -92,4 +93,25 @@ else
   ! grep -q "starts at Phi_i" err.txt && ok "run: realised $realised within 0.005, no warning" ||
     fail "run warned although realised $realised is within tolerance"
 fi
+
+# run --resume: a run stopped by SIGTERM continues from its checkpoint; a done run is left as it is.
+# A frictional gas of 2200 grains, ~4 s of CPU to the end: stopped after 1.5 s.
+cat >gas.yaml <<'YAML'
+name: cli_resume
+scene: {name: elastic_gas, n_grains: 2200, box_over_D: 16}
+grains: {diameter_m: 5e-3, density_kg_m3: 2500, polydispersity: 0.05}
+contact: {restitution: 0.8, friction: 0.5}
+end_time: 120
+output: {interval_nd: 0.25, particles: false}
+YAML
+OMP_NUM_THREADS=1 timeout -s TERM 1.5 "$g" run gas.yaml -o runs -q >out.txt 2>err.txt
+rdir=$(ls -d runs/cli_resume/*/)
+grep -q '^failed: interrupted: run interrupted at t = .*; checkpoint written' "$rdir/status" && [ -f "$rdir/checkpoint.h5" ] &&
+  ok "run stopped by SIGTERM: checkpoint written" || fail "run under SIGTERM: $(cat "$rdir/status" 2>/dev/null)"
+OMP_NUM_THREADS=1 "$g" run gas.yaml -o runs --resume >out.txt 2>err.txt; rc=$?
+[ $rc = 0 ] && grep -q 'done: 2200 grains, .* (continued from t = [0-9.]* s)' out.txt && [ "$(cat "$rdir/status")" = done ] &&
+  ok "run --resume continues from the checkpoint" || fail "run --resume: exit $rc; $(cat out.txt err.txt)"
+"$g" run gas.yaml -o runs --resume >out.txt 2>err.txt; rc=$?
+[ $rc = 0 ] && grep -q 'already done' out.txt && ok "run --resume on a done run: left as it is" ||
+  fail "run --resume on a done run: exit $rc; $(cat out.txt err.txt)"
 exit $((fails > 0))
