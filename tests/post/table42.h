@@ -10,6 +10,8 @@
 #ifndef GF_TEST_TABLE42_H
 #define GF_TEST_TABLE42_H
 
+#include <math.h>
+
 #include "stages/gf_regime.h"
 
 typedef struct table_pt {
@@ -25,6 +27,12 @@ static const table_pt table42[] = {
     {40, 177, 33, 0},    {75, 843, 31, 0},   {100, 0.04, 1200, 0}, {100, 111, 38, 0}};
 
 enum { TABLE42_N = (int)(sizeof table42 / sizeof table42[0]) };
+
+/* 1 when a run's (St, r) is table point pt (r = sqrt(5 ratio / 3), St to 0.1 %, r to 0.02). */
+static inline int table42_is(const table_pt *pt, double St, double r)
+{
+    return fabs(St / pt->St - 1.0) < 1e-3 && fabs(sqrt(5.0 * pt->ratio / 3.0) - r) < 0.02;
+}
 
 static inline gf_regime_label table42_expected(double St, double r)
 {

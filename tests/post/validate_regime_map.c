@@ -33,15 +33,12 @@
 
 enum { MAX_SETS = 16, TARGET = 20 };
 
-/* The run of the campaign at Table 4.2's (St, ratio), -1 if none (r = sqrt(5 ratio / 3)). */
-static int run_at(const gf_campaign *c, double St, double ratio)
+/* The run of the campaign at Table 4.2's point pt, -1 if none. */
+static int run_at(const gf_campaign *c, const table_pt *pt)
 {
-    const double r = sqrt(5.0 * ratio / 3.0);
-    for (int i = 0; i < c->n_runs; ++i) {
-        const gf_run_spec *s = &c->runs[i].spec;
-        if (fabs(s->stokes_St / St - 1.0) < 1e-3 && fabs(s->density_ratio_r - r) < 0.02)
+    for (int i = 0; i < c->n_runs; ++i)
+        if (table42_is(pt, c->runs[i].spec.stokes_St, c->runs[i].spec.density_ratio_r))
             return i;
-    }
     return -1;
 }
 
@@ -78,7 +75,7 @@ int main(void)
     printf("rho_p/rho   St      thesis      label (run)     T/T_thesis\n");
     for (int k = 0; k < TABLE42_N; ++k) {
         const table_pt *pt = &table42[k];
-        const int i = run_at(c, pt->St, pt->ratio);
+        const int i = run_at(c, pt);
         const gf_post_row *row = i >= 0 ? gf_summary_find(rows, n_rows, c->runs[i].spec.run_id) : NULL;
         GF_CHECK(row != NULL);
         if (!row)

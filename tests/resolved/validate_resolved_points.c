@@ -43,11 +43,11 @@ static const char *scale_column(gf_regime_label label)
     }
 }
 
-/* Table 4.2's T (ms) at the run's (St, r = sqrt(5 ratio / 3)), NAN if the table has no such point. */
+/* Table 4.2's T (ms) at the run's (St, r), NAN if the table has no such point. */
 static double thesis_T_ms(double St, double r)
 {
     for (int k = 0; k < TABLE42_N; ++k)
-        if (fabs(table42[k].St / St - 1.0) < 1e-3 && fabs(sqrt(5.0 * table42[k].ratio / 3.0) - r) < 0.02)
+        if (table42_is(&table42[k], St, r))
             return table42[k].T_ms;
     return NAN;
 }

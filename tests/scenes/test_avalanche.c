@@ -61,6 +61,7 @@
 
 #include "scene_runner.h"
 #include "scenes/gf_measure.h"
+#include "stages/gf_post_stats.h"
 
 enum { NS = 64 }; /* slabs of 1 D: up to a 50 D deep bed with its 10 D headroom */
 
@@ -302,15 +303,12 @@ static void test_steady_mu_of_I(void)
     GF_CHECK_ABS(mu2, 0.64, 0.02);
 }
 
-/* Mean and standard error of x[0..n). */
+/* Mean and standard error of x[0..n) (gf_post_stats.h's mean and sd). */
 static void mean_sem(const double *x, int n, double *mean, double *sem)
 {
-    double m = 0.0, v = 0.0;
-    for (int i = 0; i < n; ++i)
-        m += x[i] / n;
-    for (int i = 0; i < n; ++i)
-        v += (x[i] - m) * (x[i] - m) / (n > 1 ? n - 1 : 1);
-    *mean = m, *sem = sqrt(v / n);
+    double sd;
+    gf_stats_mean_std(x, (size_t)n, mean, &sd);
+    *sem = n > 1 ? sd / sqrt(n) : 0.0;
 }
 
 /* Q_g does not depend on the periodic length (Izard 2014 §4.1.2.2, Table 4.1), on seed means: one seed
